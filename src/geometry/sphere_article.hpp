@@ -1,0 +1,39 @@
+// Intersecting the sphere with the article's literal quadratic (formula (2)
+// with the program's letters). Solving for t is this step; describing the hit
+// (P, N) is the next one (geometry/hit.hpp), as in pbrt-v4's shapes.
+#pragma once
+
+#include <cmath>
+#include <optional>
+
+#include "math/vec3.hpp"
+#include "trace/keys.hpp"
+
+namespace promyk {
+
+// Returns the nearer root t of t^2|E|^2 - 2t E.S + |S|^2 - r^2 = 0, or no
+// value when the ray misses. Like the article, a tangent ray (delta = 0)
+// misses and t is not checked to be positive.
+template <class Real, class Recorder>
+std::optional<Real> intersect_sphere_article(const Vec3<Real>& E, const Vec3<Real>& S, Real r, Recorder& record) {
+    // Compute the quadratic's coefficients, named as in the program.
+    const Real EE = length_squared(E);  // the program's E = |E|^2
+    record(Key::EE, EE);
+    const Real SS = length_squared(S);  // the program's S = |S|^2
+    record(Key::SS, SS);
+    const Real C = dot(E, S);
+    record(Key::C, C);
+
+    // Compute the program's delta: a quarter of formula (2)'s discriminant.
+    const Real delta = C * C - EE * (SS - r * r);
+    record(Key::delta, delta);
+    if (delta <= 0) return std::nullopt;
+
+    // Compute the nearer root: the minus sign, since |E|^2 > 0.
+    using std::sqrt;
+    const Real t = (C - sqrt(delta)) / EE;
+    record(Key::t, t);
+    return t;
+}
+
+}  // namespace promyk

@@ -1,0 +1,34 @@
+// Lambert shading with the article's program: I_P = I max(0, N.K / (|K| r)),
+// computed as I D / (r sqrt(K)) with D = N.K and K = |L - P|^2.
+#pragma once
+
+#include <cmath>
+
+#include "math/vec3.hpp"
+#include "trace/keys.hpp"
+
+namespace promyk {
+
+template <class Real>
+struct Shade {
+    Real I_P;       // intensity reaching the eye
+    Branch branch;  // dark or lit
+};
+
+template <class Real, class Recorder>
+Shade<Real> shade_lambert(const Vec3<Real>& P, const Vec3<Real>& N, Real r, const Vec3<Real>& L, Real I,
+                          Recorder& record) {
+    // Compute the direction to the light, K = L - P, and its squared length.
+    const Vec3<Real> K = L - P;
+    record(Key::K, K);
+    const Real KK = length_squared(K);  // the program's K = |K|^2
+    record(Key::KK, KK);
+    // Compute D = N.K: |N||K| cos(alpha), negative on the dark side.
+    const Real D = dot(N, K);
+    record(Key::D, D);
+    if (D <= 0) return {Real(0), Branch::dark};
+    using std::sqrt;
+    return {I * D / (r * sqrt(KK)), Branch::lit};
+}
+
+}  // namespace promyk

@@ -1,0 +1,53 @@
+// The tracer: one pixel's computation, the article's `intensity` function,
+// assembled from its named steps. It is the only code that computes a pixel:
+// rendering calls it with a NullRecorder, tracing with a RecordingRecorder.
+#pragma once
+
+#include "geometry/hit.hpp"
+#include "geometry/sphere_article.hpp"
+#include "math/vec3.hpp"
+#include "render/lambert.hpp"
+#include "render/pane.hpp"
+#include "scene/scene.hpp"
+#include "trace/keys.hpp"
+
+namespace promyk {
+
+// The article's world, read once from a Scene: one sphere, one light.
+template <class Real>
+struct ArticleWorld {
+    Real z_E;
+    Vec3<Real> S;
+    Real r;
+    Vec3<Real> L;
+    Real I;
+    Real background;
+};
+
+// Throws InputError unless the scene is one the article's program handles
+// (exactly one sphere and one light, eye outside the sphere).
+ArticleWorld<double> article_world(const Scene& scene);
+
+template <class Real>
+struct PixelResult {
+    Real I_P;       // the pixel's intensity
+    Branch branch;  // miss, dark or lit
+};
+
+// The article's intensity(x_E, y_E, z_E).
+template <class Real, class Recorder>
+PixelResult<Real> trace_ray(const ArticleWorld<Real>& world, const Vec3<Real>& E, Recorder& record) {
+    record(Key::E, E);
+    const auto t = intersect_sphere_article(E, world.S, world.r, record);
+    if (!t) return {world.background, Branch::miss};
+    const Hit<Real> hit = describe_sphere_hit(*t, E, world.S, record);
+    const Shade<Real> shade = shade_lambert(hit.P, hit.N, world.r, world.L, world.I, record);
+    return {shade.I_P, shade.branch};
+}
+
+template <class Real, class Recorder>
+PixelResult<Real> trace_pixel_ray(const ArticleWorld<Real>& world, int w, int i, int j, Recorder& record) {
+    return trace_ray(world, pane_point(i, j, w, world.z_E), record);
+}
+
+}  // namespace promyk

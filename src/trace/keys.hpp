@@ -1,0 +1,46 @@
+// The step keys the tracer records. Each is defined, with its symbol, formula
+// and descriptions, in lessons/vocabulary.json; a test checks the two agree.
+#pragma once
+
+#include <array>
+#include <string_view>
+
+namespace promyk {
+
+enum class Key {
+    E,      // the pixel's point on the pane, (x_E, y_E, z_E); also the ray's direction
+    EE,     // |E|^2 (the program's E)
+    SS,     // |S|^2 (the program's S)
+    C,      // E.S
+    delta,  // the program's Delta = C^2 - |E|^2 (|S|^2 - r^2), a quarter of formula (2)'s
+    t,      // the nearer root, (C - sqrt(delta)) / |E|^2
+    P,      // the hit point tE
+    N,      // P - S (the unnormalised normal)
+    K,      // L - P (the unnormalised direction to the light)
+    KK,     // |K|^2 (the program's K)
+    D,      // N.K
+};
+
+inline constexpr std::array<std::string_view, 11> key_names = {
+    "E", "EE", "SS", "C", "delta", "t", "P", "N", "K", "KK", "D",
+};
+
+constexpr std::string_view key_name(Key key) { return key_names[static_cast<std::size_t>(key)]; }
+
+// What the pixel's story ended in (PRODUCT.md, section 9).
+enum class Branch {
+    miss,  // delta <= 0: the ray misses (a tangent ray misses too, as in the article)
+    dark,  // D <= 0: the hit point is on the sphere's dark side
+    lit,   // D > 0: lit, I_P = I D / (r sqrt(K))
+};
+
+constexpr std::string_view branch_name(Branch branch) {
+    switch (branch) {
+        case Branch::miss: return "miss";
+        case Branch::dark: return "dark";
+        case Branch::lit: return "lit";
+    }
+    return "?";
+}
+
+}  // namespace promyk

@@ -1,0 +1,36 @@
+// The error kinds promyk reports, each mapped to its exit code in src/app.
+// The core library throws them; only the application prints and exits.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace promyk {
+
+// Bad command-line value (exit 2): a pixel outside the pane, w out of range.
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// Bad input file (exit 3). `where` is the file and, when known, the JSON
+// pointer or line:column of the fault; the message says what is wrong.
+struct InputError : std::runtime_error {
+    InputError(std::string file, std::string where, const std::string& what)
+        : std::runtime_error(what), file(std::move(file)), where(std::move(where)) {}
+    std::string file;
+    std::string where;
+};
+
+// An output file could not be written (exit 4).
+struct OutputError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// The user interrupted the work (SIGINT, SIGTERM): exit 128 + signal.
+struct Interrupted : std::runtime_error {
+    explicit Interrupted(int signal_number)
+        : std::runtime_error("interrupted"), signal_number(signal_number) {}
+    int signal_number;
+};
+
+}  // namespace promyk
