@@ -1,5 +1,4 @@
-#include "render/tracer.hpp"
-#include "trace/trace.hpp"
+#include "render/trace_pixel.hpp"
 
 namespace promyk {
 
@@ -12,17 +11,21 @@ TraceHeader trace_header(const Scene& scene, int w) {
     return header;
 }
 
-PixelTrace trace_pixel(const Scene& scene, int w, int i, int j) {
+PixelTrace trace_pixel(const ArticleWorld<double>& world, const TraceHeader& header, int i, int j) {
     PixelTrace trace;
-    trace.header = trace_header(scene, w);
+    trace.header = header;
     trace.header.i = i;
     trace.header.j = j;
     RecordingRecorder recorder;
-    const PixelResult<double> result = trace_pixel_ray(article_world(scene), w, i, j, recorder);
+    const PixelResult<double> result = trace_pixel_ray(world, header.w, i, j, recorder);
     trace.steps = recorder.take_steps();
     trace.branch = result.branch;
     trace.result = result.I_P;
     return trace;
+}
+
+PixelTrace trace_pixel(const Scene& scene, int w, int i, int j) {
+    return trace_pixel(article_world(scene), trace_header(scene, w), i, j);
 }
 
 }  // namespace promyk

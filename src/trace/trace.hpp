@@ -33,12 +33,6 @@ struct PixelTrace {
     double result = 0;
 };
 
-// Header fields shared by every pixel of one scene at one size.
-TraceHeader trace_header(const Scene& scene, int w);
-
-// Traces pixel (i, j) of a w x w pane: runs the tracer with a recording recorder.
-PixelTrace trace_pixel(const Scene& scene, int w, int i, int j);
-
 // Appends the trace as one line of JSON (no newline): numbers as the shortest
 // text that reads back to the same double, vectors as [x, y, z].
 void append_trace_json(std::string& out, const PixelTrace& trace);

@@ -15,8 +15,8 @@ struct UsageError : std::runtime_error {
 // Bad input file (exit 3). `where` is the file and, when known, the JSON
 // pointer or line:column of the fault; the message says what is wrong.
 struct InputError : std::runtime_error {
-    InputError(std::string file, std::string where, const std::string& what)
-        : std::runtime_error(what), file(std::move(file)), where(std::move(where)) {}
+    InputError(std::string file_name, std::string location, const std::string& what)
+        : std::runtime_error(what), file(std::move(file_name)), where(std::move(location)) {}
     std::string file;
     std::string where;
 };
@@ -28,8 +28,8 @@ struct OutputError : std::runtime_error {
 
 // The user interrupted the work (SIGINT, SIGTERM): exit 128 + signal.
 struct Interrupted : std::runtime_error {
-    explicit Interrupted(int signal_number)
-        : std::runtime_error("interrupted"), signal_number(signal_number) {}
+    explicit Interrupted(int signal)
+        : std::runtime_error("interrupted"), signal_number(signal) {}
     int signal_number;
 };
 

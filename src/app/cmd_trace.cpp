@@ -1,0 +1,57 @@
+// promyk trace: one pixel's whole derivation, as a table or as JSON.
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "app/cli_values.hpp"
+#include "app/commands.hpp"
+#include "render/trace_pixel.hpp"
+#include "trace/trace_text.hpp"
+
+namespace promyk::app {
+
+namespace {
+
+struct TraceOptions {
+    std::string pixel = "3,4";
+    int w = 8;
+    std::string scene_file;
+    std::string format = "text";
+};
+
+int run_trace(const TraceOptions& options) {
+    cli::check_w(options.w);
+    const cli::Pixel pixel = cli::parse_pixel(options.pixel, "--pixel", options.w);
+    const Scene scene = cli::load_scene_option(options.scene_file);
+    const PixelTrace trace = trace_pixel(scene, options.w, pixel.i, pixel.j);
+    std::string out;
+    if (options.format == "json") {
+        append_trace_json(out, trace);
+        out += '\n';
+    } else {
+        out = format_trace_text(trace, builtin_vocabulary());
+    }
+    std::fputs(out.c_str(), stdout);
+    return 0;
+}
+
+}  // namespace
+
+std::function<int()> setup_trace(CLI::App& app) {
+    auto options = std::make_shared<TraceOptions>();
+    CLI::App* cmd = app.add_subcommand("trace", "Trace one pixel and print every quantity of the article's derivation");
+    cmd->add_option("--pixel", options->pixel, "Pixel I,J: row i from the top, column j from the left")
+        ->capture_default_str();
+    cmd->add_option("--w", options->w, "Pane size: w x w pixels")->capture_default_str();
+    cmd->add_option("--scene", options->scene_file, "Scene file (JSON); default: the article's built-in scene");
+    cmd->add_option("--format", options->format, "text: an aligned table; json: the trace as one JSON line")
+        ->check(CLI::IsMember({"text", "json"}))
+        ->capture_default_str();
+    cmd->footer(
+        "Example: promyk trace --pixel 3,4 --w 8   (at w = 8, (0,0) misses, (5,1) is on the dark side, (3,4) is lit)");
+    return [options] { return run_trace(*options); };
+}
+
+}  // namespace promyk::app

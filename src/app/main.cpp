@@ -1,0 +1,75 @@
+// promyk: an educational ray tracer that shows its work.
+// main only wires the subcommands and maps errors to exit codes:
+// 0 success, 2 bad command line, 3 bad input file, 4 output not written,
+// 128 + signal after SIGINT or SIGTERM; 70 an internal error (a bug).
+#include <cstdio>
+#include <exception>
+#include <functional>
+#include <new>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "app/commands.hpp"
+#include "util/errors.hpp"
+#include "util/interrupt.hpp"
+
+namespace {
+
+void report(const char* what) { fmt::print(stderr, "promyk: {}\n", what); }
+
+std::string where_of(const promyk::InputError& error) {
+    if (error.where.empty()) return error.file;
+    return fmt::format("{}: {}", error.file, error.where);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    promyk::install_interrupt_handlers();
+    CLI::App app{"promyk: an educational ray tracer that shows its work.\n"
+                 "It follows the Delta article \"Śledzenie promieni\": an eye at the origin, a pane of w x w pixels\n"
+                 "at z = z_E, a sphere, a point light, Lambert shading. Every number behind a pixel can be shown.",
+                 "promyk"};
+    app.set_version_flag("--version", fmt::format("promyk {}", PROMYK_VERSION));
+    app.require_subcommand(1);
+    app.footer("Run 'promyk COMMAND --help' for a command's options.\n"
+               "Exit codes: 0 success, 2 bad command line, 3 bad input file, 4 output not written, 130/143 interrupted.");
+
+    std::function<int()> run;
+    const auto render = promyk::app::setup_render(app);
+    const auto trace = promyk::app::setup_trace(app);
+    const auto bench = promyk::app::setup_bench(app);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        const int code = app.exit(error);  // prints help, version or the error
+        return code == 0 ? 0 : 2;
+    }
+
+    const std::string name = app.get_subcommands().front()->get_name();
+    run = name == "render" ? render : name == "trace" ? trace : bench;
+    try {
+        return run();
+    } catch (const promyk::UsageError& error) {
+        report(error.what());
+        fmt::print(stderr, "Run 'promyk {} --help' for the options.\n", name);
+        return 2;
+    } catch (const promyk::InputError& error) {
+        fmt::print(stderr, "promyk: {}: {}\n", where_of(error), error.what());
+        return 3;
+    } catch (const promyk::OutputError& error) {
+        report(error.what());
+        return 4;
+    } catch (const promyk::Interrupted& error) {
+        report("interrupted; no output was written");
+        return 128 + error.signal_number;
+    } catch (const std::bad_alloc&) {
+        report("out of memory");
+        return 70;
+    } catch (const std::exception& error) {
+        report(fmt::format("internal error (a bug in promyk, please report it): {}", error.what()).c_str());
+        return 70;
+    }
+}

@@ -1,0 +1,134 @@
+#include "bench/speed.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "bench/article_literal.hpp"
+#include "render/renderer.hpp"
+#include "util/errors.hpp"
+#include "util/interrupt.hpp"
+
+namespace promyk::bench {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
+}
+
+template <class F>
+double seconds_of(F&& work) {
+    const auto start = Clock::now();
+    work();
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Keeps the image in memory, row after row, for comparison.
+class MemorySink final : public RenderSink {
+public:
+    explicit MemorySink(std::uint8_t* pixels, int w) : out_(pixels), w_(w) {}
+    void image_rows(const std::uint8_t* rows, int count) override {
+        const std::size_t bytes = static_cast<std::size_t>(count) * w_;
+        std::memcpy(out_, rows, bytes);
+        out_ += bytes;
+    }
+
+private:
+    std::uint8_t* out_;
+    int w_;
+};
+
+// Writes trace lines to an anonymous temporary file and counts the bytes.
+class TraceFileSink final : public RenderSink {
+public:
+    TraceFileSink() : file_(std::tmpfile(), &std::fclose) {
+        if (!file_) throw OutputError("bench: cannot create a temporary file for the traces");
+    }
+    void image_rows(const std::uint8_t*, int) override {}
+    void trace_lines(std::string_view lines) override {
+        if (std::fwrite(lines.data(), 1, lines.size(), file_.get()) != lines.size())
+            throw OutputError("bench: cannot write the temporary traces file");
+        bytes_ += lines.size();
+    }
+    void finish() {
+        if (std::fflush(file_.get()) != 0) throw OutputError("bench: cannot write the temporary traces file");
+    }
+    double bytes() const { return static_cast<double>(bytes_); }
+
+private:
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file_;
+    std::size_t bytes_ = 0;
+};
+
+LiteralScene literal_scene(const ArticleWorld<double>& world) {
+    return {world.S.x, world.S.y, world.S.z, world.r, world.L.x, world.L.y, world.L.z, world.I, world.z_E};
+}
+
+}  // namespace
+
+int run_speed_bench(const SpeedOptions& options) {
+    const Scene scene = article_scene();
+    const ArticleWorld<double> world = article_world(scene);
+    const LiteralScene literal = literal_scene(world);
+    const int w = options.w;
+    const int threads = resolve_threads(options.threads);
+    const double pixels = static_cast<double>(w) * w;
+    std::vector<std::uint8_t> literal_image(static_cast<std::size_t>(w) * w);
+    std::vector<std::uint8_t> engine_image(literal_image.size());
+    std::vector<std::uint8_t> threaded_image(literal_image.size());
+
+    fmt::print("promyk bench speed: the article's scene, w = {} ({} pixels), {} alternating rounds, medians\n\n", w,
+               w * static_cast<long>(w), options.repetitions);
+    std::fflush(stdout);
+
+    std::vector<double> literal_times, engine_times, threaded_times;
+    for (int round = 0; round < options.repetitions; ++round) {
+        throw_if_interrupted();
+        literal_times.push_back(seconds_of([&] { literal_render(literal, w, literal_image.data()); }));
+        engine_times.push_back(seconds_of([&] {
+            MemorySink sink(engine_image.data(), w);
+            render(scene, {w, 1}, PixelSelection{}, sink);
+        }));
+        threaded_times.push_back(seconds_of([&] {
+            MemorySink sink(threaded_image.data(), w);
+            render(scene, {w, threads}, PixelSelection{}, sink);
+        }));
+    }
+    const double t_literal = median(literal_times), t_engine = median(engine_times);
+    const double t_threaded = median(threaded_times);
+    const bool identical = engine_image == literal_image && threaded_image == literal_image;
+
+    const int tw = options.trace_w;
+    TraceFileSink trace_sink;
+    const double t_traces = seconds_of([&] {
+        render(scene, {tw, threads}, PixelSelection::all(), trace_sink);
+        trace_sink.finish();
+    });
+    const double trace_pixels = static_cast<double>(tw) * tw;
+
+    const auto ns_per_pixel = [&](double seconds) { return seconds / pixels * 1e9; };
+    fmt::print("  {:<38} {:>10}\n", "", "ns/pixel");
+    fmt::print("  {:<38} {:>10.2f}\n", "article's literal program, 1 thread", ns_per_pixel(t_literal));
+    fmt::print("  {:<38} {:>10.2f}\n", "engine, 1 thread", ns_per_pixel(t_engine));
+    fmt::print("  {:<38} {:>10.2f}\n\n", fmt::format("engine, {} threads", threads), ns_per_pixel(t_threaded));
+    fmt::print("  engine / literal, 1 thread:    {:.3f}   (target <= 1.05)\n", t_engine / t_literal);
+    fmt::print("  {} threads / 1 thread speed-up: {:.2f}    (target >= 1.8 on 2 cores)\n", threads,
+               t_engine / t_threaded);
+    fmt::print("  images identical (engine, threaded, literal): {}\n\n", identical ? "yes" : "NO");
+    fmt::print("  traces, JSON Lines of every pixel at w = {}, {} threads, to a temporary file:\n", tw, threads);
+    fmt::print("    {:.0f} pixels/s, {:.1f} MB/s, {:.0f} bytes a pixel\n", trace_pixels / t_traces,
+               trace_sink.bytes() / t_traces / 1e6, trace_sink.bytes() / trace_pixels);
+    return identical ? 0 : 1;
+}
+
+}  // namespace promyk::bench

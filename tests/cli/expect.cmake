@@ -1,0 +1,42 @@
+# Runs promyk once in a fresh folder and checks what a user would see.
+#   -DPROMYK=path        the executable
+#   -DARGS=a|b|c         its arguments, separated by |
+#   -DWORKDIR=dir        emptied and used as the working directory
+#   -DEXIT=n             the expected exit code
+#   -DSTDOUT=regex       stdout must match (optional)
+#   -DSTDERR=regex       stderr must match (optional)
+#   -DFILES=a|b          files that must exist afterwards (optional)
+#   -DEMPTY=ON           nothing at all may be left in WORKDIR (no partial output)
+file(REMOVE_RECURSE "${WORKDIR}")
+file(MAKE_DIRECTORY "${WORKDIR}")
+string(REPLACE "|" ";" args "${ARGS}")
+execute_process(COMMAND "${PROMYK}" ${args}
+                WORKING_DIRECTORY "${WORKDIR}"
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+set(problems "")
+if(NOT "${code}" STREQUAL "${EXIT}")
+  string(APPEND problems "exit code ${code}, expected ${EXIT}\n")
+endif()
+if(DEFINED STDOUT AND NOT "${STDOUT}" STREQUAL "" AND NOT out MATCHES "${STDOUT}")
+  string(APPEND problems "stdout does not match: ${STDOUT}\n")
+endif()
+if(DEFINED STDERR AND NOT "${STDERR}" STREQUAL "" AND NOT err MATCHES "${STDERR}")
+  string(APPEND problems "stderr does not match: ${STDERR}\n")
+endif()
+if(DEFINED FILES AND NOT "${FILES}" STREQUAL "")
+  string(REPLACE "|" ";" files "${FILES}")
+  foreach(f IN LISTS files)
+    if(NOT EXISTS "${WORKDIR}/${f}")
+      string(APPEND problems "file ${f} was not written\n")
+    endif()
+  endforeach()
+endif()
+if(EMPTY)
+  file(GLOB left RELATIVE "${WORKDIR}" "${WORKDIR}/*" "${WORKDIR}/.*")
+  if(left)
+    string(APPEND problems "files left behind: ${left}\n")
+  endif()
+endif()
+if(problems)
+  message(FATAL_ERROR "promyk ${args}\n${problems}--- stdout ---\n${out}--- stderr ---\n${err}")
+endif()
