@@ -1,0 +1,62 @@
+// Choosing the image format and the row bookkeeping every format shares.
+#include "render/image_writer.hpp"
+
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "util/errors.hpp"
+
+namespace promyk {
+namespace {
+
+// ASCII only: a locale must not change which files are PNG.
+std::string lowercase(std::string text) {
+    for (char& c : text) {
+        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    }
+    return text;
+}
+
+}  // namespace
+
+ImageFormat image_format_for_path(const std::string& path) {
+    // The extension of the last path component, so "out.d/image" has none.
+    const auto slash = path.find_last_of('/');
+    const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+    const auto dot = name.find_last_of('.');
+    const std::string extension = dot == std::string::npos ? "" : lowercase(name.substr(dot + 1));
+    if (extension == "png") return ImageFormat::png;
+    if (extension == "pgm") return ImageFormat::pgm;
+    throw UsageError(fmt::format("unsupported image extension '{}': use .png or .pgm", path));
+}
+
+std::unique_ptr<ImageWriter> open_image_writer(const std::string& path, int width, int height) {
+    switch (image_format_for_path(path)) {
+        case ImageFormat::png: return open_png_writer(path, width, height);
+        case ImageFormat::pgm: return open_pgm_writer(path, width, height);
+    }
+    throw std::logic_error("unknown ImageFormat");
+}
+
+ImageWriter::ImageWriter(int width, int height) : width_(width), height_(height) {
+    // Checked here, before a derived writer creates its temporary file.
+    if (width <= 0 || height <= 0) {
+        throw std::invalid_argument(fmt::format("image size {}x{} is not positive", width, height));
+    }
+}
+
+void ImageWriter::take_rows(int count) {
+    if (count < 0 || count > height_ - rows_written_) {
+        throw std::logic_error(fmt::format("image writer: {} more rows after {} of {}", count, rows_written_, height_));
+    }
+    rows_written_ += count;
+}
+
+void ImageWriter::require_complete() const {
+    if (rows_written_ != height_) {
+        throw std::logic_error(fmt::format("image writer: commit after {} of {} rows", rows_written_, height_));
+    }
+}
+
+}  // namespace promyk

@@ -1,0 +1,142 @@
+// 8-bit greyscale PNG through libpng, streamed with png_write_row.
+//
+// libpng reports an error by calling an error function that must not return.
+// Ours longjmps back to the setjmp in the small function that made the libpng
+// call; that function returns false, and only then, in ordinary C++ code, is
+// OutputError thrown. So no exception crosses libpng's C frames, and the
+// frames a longjmp skips hold no C++ object with a destructor.
+#include <png.h>
+
+#include <cerrno>
+#include <csetjmp>
+#include <cstdio>
+#include <stdexcept>
+#include <system_error>
+
+#include <fmt/format.h>
+
+#include "render/image_writer.hpp"
+#include "util/atomic_file.hpp"
+#include "util/errors.hpp"
+
+namespace promyk {
+namespace {
+
+// What libpng's callbacks share with us. Plain data: longjmp may skip it.
+struct PngContext {
+    std::FILE* file = nullptr;
+    int write_errno = 0;   // errno of a failed fwrite, else 0
+    char message[256] = {};  // libpng's message for any other error
+};
+
+void on_png_error(png_structp png, png_const_charp message) {
+    auto* context = static_cast<PngContext*>(png_get_error_ptr(png));
+    std::snprintf(context->message, sizeof context->message, "%s", message);
+    png_longjmp(png, 1);
+}
+
+// Warnings do not fail the write, and a library must not print them.
+void on_png_warning(png_structp, png_const_charp) {}
+
+// Our own output function, so that a failed write keeps its errno ("No space
+// left on device") instead of libpng's generic "Write Error".
+void on_png_write(png_structp png, png_bytep data, std::size_t length) {
+    auto* context = static_cast<PngContext*>(png_get_io_ptr(png));
+    errno = 0;
+    if (std::fwrite(data, 1, length, context->file) != length) {
+        context->write_errno = errno != 0 ? errno : EIO;
+        png_error(png, "write failed");
+    }
+}
+
+void on_png_flush(png_structp) {}  // AtomicFile::commit flushes and syncs
+
+// The libpng calls, each behind its own setjmp: false if libpng failed.
+bool png_begin(png_structp png, png_infop info, png_uint_32 width, png_uint_32 height) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    // The default limit (1,000,000 pixels a side) protects readers, not us.
+    png_set_user_limits(png, PNG_UINT_31_MAX, PNG_UINT_31_MAX);
+    png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_write_info(png, info);
+    return true;
+}
+
+bool png_rows(png_structp png, const png_byte* rows, std::size_t stride, int count) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    for (int i = 0; i < count; ++i) png_write_row(png, rows + static_cast<std::size_t>(i) * stride);
+    return true;
+}
+
+bool png_end(png_structp png, png_infop info) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_write_end(png, info);
+    return true;
+}
+
+// Owns libpng's two structures, so a constructor that throws frees them.
+struct PngHandles {
+    png_structp png = nullptr;
+    png_infop info = nullptr;
+    PngHandles() = default;
+    PngHandles(const PngHandles&) = delete;
+    PngHandles& operator=(const PngHandles&) = delete;
+    ~PngHandles() { png_destroy_write_struct(&png, &info); }
+};
+
+class PngWriter final : public ImageWriter {
+public:
+    PngWriter(const std::string& path, int width, int height) : ImageWriter(width, height), file_(path) {
+        context_.file = file_.stream();
+        handles_.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &context_, on_png_error, on_png_warning);
+        if (handles_.png != nullptr) handles_.info = png_create_info_struct(handles_.png);
+        if (handles_.info == nullptr) {
+            throw OutputError(fmt::format("cannot write {}: libpng could not start", file_.path()));
+        }
+        png_set_write_fn(handles_.png, &context_, on_png_write, on_png_flush);
+        check(png_begin(handles_.png, handles_.info, static_cast<png_uint_32>(width),
+                        static_cast<png_uint_32>(height)));
+    }
+
+    void write_rows(const std::uint8_t* rows, int count) override {
+        require_usable();
+        take_rows(count);
+        check(png_rows(handles_.png, rows, static_cast<std::size_t>(width()), count));
+    }
+
+    void commit() override {
+        require_usable();
+        require_complete();
+        check(png_end(handles_.png, handles_.info));
+        file_.commit();
+    }
+
+private:
+    // After a libpng error its state is undefined: no further calls.
+    void require_usable() const {
+        if (failed_) throw std::logic_error("PNG writer used after a failure");
+    }
+
+    void check(bool ok) {
+        if (ok) return;
+        failed_ = true;
+        const std::string reason = context_.write_errno != 0
+                                       ? std::generic_category().message(context_.write_errno)
+                                       : fmt::format("libpng: {}", context_.message);
+        throw OutputError(fmt::format("cannot write {}: {}", file_.path(), reason));
+    }
+
+    // Declared in this order so libpng is destroyed before the file.
+    AtomicFile file_;
+    PngContext context_;
+    PngHandles handles_;
+    bool failed_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<ImageWriter> open_png_writer(const std::string& path, int width, int height) {
+    return std::make_unique<PngWriter>(path, width, height);
+}
+
+}  // namespace promyk

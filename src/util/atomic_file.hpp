@@ -1,0 +1,54 @@
+// A file that is written completely or not at all (PRODUCT.md §3): the bytes
+// go to a temporary file beside the final one, and only commit() renames the
+// finished file onto the final path. Until then an existing file keeps its
+// old content, and a failure, an exception or an interruption (which unwinds)
+// leaves neither a truncated file nor the temporary behind.
+#pragma once
+
+#include <cstdio>
+#include <string>
+#include <string_view>
+
+namespace promyk {
+
+class AtomicFile {
+public:
+    // Creates the temporary `.<basename>.promyk-XXXXXX` in the final path's
+    // directory (same file system, so the rename is atomic). OutputError if
+    // it cannot be created, e.g. the directory does not exist.
+    explicit AtomicFile(std::string final_path);
+    // Removes the temporary unless commit() succeeded.
+    ~AtomicFile();
+
+    AtomicFile(AtomicFile&& other) noexcept;
+    AtomicFile& operator=(AtomicFile&& other) noexcept;
+    AtomicFile(const AtomicFile&) = delete;
+    AtomicFile& operator=(const AtomicFile&) = delete;
+
+    // The open temporary, for code that writes through stdio (libpng);
+    // nullptr once committed. Errors on it are caught by commit().
+    std::FILE* stream() const noexcept { return stream_; }
+
+    // Appends bytes; OutputError on failure.
+    void write(std::string_view bytes);
+
+    // Flushes, syncs and closes the temporary, gives it the mode a new file
+    // would get (0666 & ~umask; mkstemp makes 0600) and renames it onto the
+    // final path. OutputError on any failure; the temporary is then removed
+    // by the destructor.
+    void commit();
+
+    const std::string& path() const noexcept { return final_path_; }
+    // The temporary's path while it exists (empty after commit or a move).
+    const std::string& temporary_path() const noexcept { return temp_path_; }
+
+private:
+    void require_open() const;
+    void discard() noexcept;
+
+    std::string final_path_;
+    std::string temp_path_;  // non-empty while a temporary exists
+    std::FILE* stream_ = nullptr;
+};
+
+}  // namespace promyk

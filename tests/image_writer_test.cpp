@@ -1,0 +1,357 @@
+// Image output: PNG and PGM files read back byte for byte, and the promise
+// that a file is written completely or not at all.
+#include <png.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "render/image_writer.hpp"
+#include "util/atomic_file.hpp"
+#include "util/errors.hpp"
+
+namespace fs = std::filesystem;
+using namespace promyk;
+
+namespace {
+
+// A fresh directory per test, removed with everything in it.
+struct TempDir {
+    fs::path path;
+    TempDir() {
+        std::string name = (fs::temp_directory_path() / "promyk-image-XXXXXX").string();
+        REQUIRE(::mkdtemp(name.data()) != nullptr);
+        path = name;
+    }
+    ~TempDir() {
+        std::error_code ignored;
+        fs::remove_all(path, ignored);
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+    std::string file(const std::string& name) const { return (path / name).string(); }
+    // The names in the directory, hidden ones (our temporaries) included.
+    std::set<std::string> entries() const {
+        std::set<std::string> names;
+        for (const auto& entry : fs::directory_iterator(path)) names.insert(entry.path().filename().string());
+        return names;
+    }
+};
+
+// A gradient that differs in both directions and wraps through all 256 levels.
+std::vector<std::uint8_t> gradient(int width, int height) {
+    std::vector<std::uint8_t> pixels(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            pixels[static_cast<std::size_t>(y * width + x)] = static_cast<std::uint8_t>(x * 7 + y * 31 + x * y);
+        }
+    }
+    return pixels;
+}
+
+// Writes the image in bands of 1, 2, 3, ... rows, as a render would.
+void write_image(ImageWriter& writer, const std::vector<std::uint8_t>& pixels) {
+    const int width = writer.width();
+    int band = 1;
+    for (int y = 0; y < writer.height(); y += band, ++band) {
+        const int count = std::min(band, writer.height() - y);
+        writer.write_rows(pixels.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(width), count);
+    }
+}
+
+std::string read_bytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void write_bytes(const std::string& path, const std::string& bytes) {
+    std::ofstream(path, std::ios::binary) << bytes;
+}
+
+struct Grey {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> pixels;
+};
+
+// Reads a PNG back with libpng's simplified API, which a different code path
+// from the writer's.
+Grey read_png(const std::string& path) {
+    png_image image{};
+    image.version = PNG_IMAGE_VERSION;
+    REQUIRE(png_image_begin_read_from_file(&image, path.c_str()) != 0);
+    CHECK((image.format & (PNG_FORMAT_FLAG_COLOR | PNG_FORMAT_FLAG_ALPHA | PNG_FORMAT_FLAG_LINEAR)) == 0);
+    image.format = PNG_FORMAT_GRAY;
+    Grey grey{static_cast<int>(image.width), static_cast<int>(image.height), {}};
+    grey.pixels.resize(PNG_IMAGE_SIZE(image));
+    REQUIRE(png_image_finish_read(&image, nullptr, grey.pixels.data(), 0, nullptr) != 0);
+    return grey;
+}
+
+// Parses a binary PGM: "P5", width, height, maxval, one whitespace, pixels.
+Grey read_pgm(const std::string& path) {
+    std::istringstream in(read_bytes(path));
+    std::string magic;
+    int maxval = 0;
+    Grey grey;
+    in >> magic >> grey.width >> grey.height >> maxval;
+    REQUIRE(magic == "P5");
+    REQUIRE(maxval == 255);
+    REQUIRE(in.get() == '\n');
+    const std::string rest(std::istreambuf_iterator<char>(in), {});
+    grey.pixels.assign(rest.begin(), rest.end());
+    return grey;
+}
+
+Grey read_image(const std::string& path) {
+    return image_format_for_path(path) == ImageFormat::png ? read_png(path) : read_pgm(path);
+}
+
+mode_t current_umask() {
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    return mask;
+}
+
+}  // namespace
+
+TEST_CASE("image format follows the extension, in any case", "[image]") {
+    CHECK(image_format_for_path("a.png") == ImageFormat::png);
+    CHECK(image_format_for_path("out/A.PNG") == ImageFormat::png);
+    CHECK(image_format_for_path("x.Pgm") == ImageFormat::pgm);
+    CHECK(image_format_for_path("dir.png/x.pgm") == ImageFormat::pgm);
+    CHECK_THROWS_AS(image_format_for_path("dir.png/x"), UsageError);
+    CHECK_THROWS_AS(image_format_for_path("x.png.bak"), UsageError);
+    CHECK_THROWS_AS(image_format_for_path("png"), UsageError);
+    CHECK_THROWS_AS(image_format_for_path(""), UsageError);
+    CHECK_THROWS_WITH(image_format_for_path("x.jpg"), "unsupported image extension 'x.jpg': use .png or .pgm");
+}
+
+TEST_CASE("an unsupported extension creates no file", "[image]") {
+    TempDir dir;
+    CHECK_THROWS_AS(open_image_writer(dir.file("x.jpg"), 4, 4), UsageError);
+    CHECK(dir.entries().empty());
+}
+
+TEST_CASE("PNG and PGM read back byte for byte", "[image]") {
+    const auto extension = GENERATE(std::string(".png"), std::string(".pgm"), std::string(".PNG"));
+    const auto size = GENERATE(std::make_pair(1, 1), std::make_pair(1, 7), std::make_pair(9, 1), std::make_pair(3, 5),
+                               std::make_pair(17, 13), std::make_pair(256, 3));
+    const int width = size.first;
+    const int height = size.second;
+    CAPTURE(extension, width, height);
+    TempDir dir;
+    const std::string path = dir.file("image" + extension);
+    const auto pixels = gradient(width, height);
+
+    auto writer = open_image_writer(path, width, height);
+    write_image(*writer, pixels);
+    CHECK(writer->rows_written() == height);
+    writer->commit();
+    writer.reset();
+
+    CHECK(dir.entries() == std::set<std::string>{"image" + extension});
+    const Grey grey = read_image(path);
+    CHECK(grey.width == width);
+    CHECK(grey.height == height);
+    CHECK(grey.pixels == pixels);
+}
+
+TEST_CASE("the PNG is 8-bit greyscale and the PGM header is plain", "[image]") {
+    TempDir dir;
+    const auto pixels = gradient(5, 2);
+    for (const std::string name : {"g.png", "g.pgm"}) {
+        auto writer = open_image_writer(dir.file(name), 5, 2);
+        writer->write_rows(pixels.data(), 2);
+        writer->commit();
+    }
+    const std::string png = read_bytes(dir.file("g.png"));
+    REQUIRE(png.size() > 26);
+    CHECK(png.compare(12, 4, "IHDR") == 0);
+    CHECK(int(png[24]) == 8);  // bit depth
+    CHECK(int(png[25]) == 0);  // colour type: greyscale
+    CHECK(int(png[28]) == 0);  // not interlaced
+    CHECK(read_bytes(dir.file("g.pgm")) ==
+          "P5\n5 2\n255\n" + std::string(pixels.begin(), pixels.end()));
+}
+
+TEST_CASE("the finished file gets the usual mode, not mkstemp's 0600", "[image]") {
+    TempDir dir;
+    const std::string path = dir.file("m.pgm");
+    auto writer = open_image_writer(path, 1, 1);
+    const std::uint8_t pixel = 0;
+    writer->write_rows(&pixel, 1);
+    writer->commit();
+    CHECK((fs::status(path).permissions() & fs::perms::all) ==
+          static_cast<fs::perms>(0666 & ~current_umask()));
+}
+
+TEST_CASE("a writer destroyed without commit leaves nothing", "[image]") {
+    const std::string name = GENERATE(std::string("a.png"), std::string("a.pgm"));
+    TempDir dir;
+    const auto pixels = gradient(8, 8);
+    {
+        auto writer = open_image_writer(dir.file(name), 8, 8);
+        writer->write_rows(pixels.data(), 4);
+        // The temporary sits beside the final file, hidden, while writing.
+        const auto entries = dir.entries();
+        REQUIRE(entries.size() == 1);
+        CHECK(entries.begin()->rfind("." + name + ".promyk-", 0) == 0);
+    }
+    CHECK(dir.entries().empty());
+}
+
+TEST_CASE("commit before the last row throws and leaves nothing", "[image]") {
+    const std::string name = GENERATE(std::string("a.png"), std::string("a.pgm"));
+    TempDir dir;
+    const auto pixels = gradient(4, 3);
+    {
+        auto writer = open_image_writer(dir.file(name), 4, 3);
+        writer->write_rows(pixels.data(), 2);
+        CHECK_THROWS_AS(writer->commit(), std::logic_error);
+        CHECK_THROWS_AS(writer->write_rows(pixels.data(), 2), std::logic_error);  // 4 rows > 3
+    }
+    CHECK(dir.entries().empty());
+}
+
+TEST_CASE("an existing file is replaced only on commit", "[image]") {
+    const std::string name = GENERATE(std::string("old.png"), std::string("old.pgm"));
+    TempDir dir;
+    const std::string path = dir.file(name);
+    write_bytes(path, "old content");
+    const auto pixels = gradient(6, 4);
+
+    {  // abandoned: the old file stays
+        auto writer = open_image_writer(path, 6, 4);
+        writer->write_rows(pixels.data(), 4);
+    }
+    CHECK(read_bytes(path) == "old content");
+
+    auto writer = open_image_writer(path, 6, 4);
+    writer->write_rows(pixels.data(), 4);
+    CHECK(read_bytes(path) == "old content");
+    writer->commit();
+    CHECK(read_image(path).pixels == pixels);
+    CHECK(dir.entries() == std::set<std::string>{name});
+}
+
+TEST_CASE("a file that cannot be created throws OutputError and leaves nothing", "[image]") {
+    const std::string name = GENERATE(std::string("x.png"), std::string("x.pgm"));
+    TempDir dir;
+    write_bytes(dir.file("regular"), "");
+
+    SECTION("the directory does not exist") {
+        const std::string path = dir.file("missing/" + name);
+        CHECK_THROWS_MATCHES(open_image_writer(path, 2, 2), OutputError,
+                             Catch::Message("cannot write " + path + ": No such file or directory"));
+    }
+    SECTION("the directory is a regular file") {
+        const std::string path = dir.file("regular/" + name);
+        CHECK_THROWS_MATCHES(open_image_writer(path, 2, 2), OutputError,
+                             Catch::Message("cannot write " + path + ": Not a directory"));
+    }
+    SECTION("a directory where files cannot be created, even by root") {
+        CHECK_THROWS_AS(open_image_writer("/proc/promyk-test-" + name, 2, 2), OutputError);
+        CHECK_FALSE(fs::exists("/proc/promyk-test-" + name));
+    }
+    CHECK(dir.entries() == std::set<std::string>{"regular"});
+}
+
+TEST_CASE("a rename that fails throws OutputError and removes the temporary", "[image]") {
+    const std::string name = GENERATE(std::string("d.png"), std::string("d.pgm"));
+    TempDir dir;
+    const std::string path = dir.file(name);
+    fs::create_directory(path);  // the final path is a directory
+    const auto pixels = gradient(3, 3);
+    {
+        auto writer = open_image_writer(path, 3, 3);
+        writer->write_rows(pixels.data(), 3);
+        CHECK_THROWS_MATCHES(writer->commit(), OutputError,
+                             Catch::Message("cannot write " + path + ": Is a directory"));
+    }
+    CHECK(dir.entries() == std::set<std::string>{name});
+    CHECK(fs::is_empty(path));
+}
+
+TEST_CASE("a write that fails midway throws OutputError and leaves nothing", "[image]") {
+    // A file-size limit makes every write past it fail with EFBIG, as a full
+    // disk would; SIGXFSZ is ignored so the failure is an error, not a kill.
+    const std::string name = GENERATE(std::string("big.png"), std::string("big.pgm"));
+    TempDir dir;
+    const std::string path = dir.file(name);
+    const int side = 1024;
+    std::vector<std::uint8_t> noise(static_cast<std::size_t>(side) * side);
+    std::uint32_t state = 12345;  // incompressible, so the PNG is large too
+    for (auto& byte : noise) {
+        state = state * 1664525u + 1013904223u;
+        byte = static_cast<std::uint8_t>(state >> 24);
+    }
+
+    rlimit old_limit{};
+    REQUIRE(::getrlimit(RLIMIT_FSIZE, &old_limit) == 0);
+    const auto old_handler = ::signal(SIGXFSZ, SIG_IGN);
+    rlimit limit = old_limit;
+    limit.rlim_cur = 64 * 1024;
+    REQUIRE(::setrlimit(RLIMIT_FSIZE, &limit) == 0);
+    // Nothing is reported while the limit holds: Catch's own output could hit it.
+    std::string message;
+    bool output_error = false;
+    try {
+        auto writer = open_image_writer(path, side, side);
+        for (int y = 0; y < side; y += 64) writer->write_rows(noise.data() + static_cast<std::size_t>(y) * side, 64);
+        writer->commit();
+    } catch (const OutputError& error) {
+        output_error = true;
+        message = error.what();
+    } catch (const std::exception& error) {
+        message = error.what();
+    }
+    ::setrlimit(RLIMIT_FSIZE, &old_limit);
+    ::signal(SIGXFSZ, old_handler);
+
+    CHECK(output_error);
+    CHECK(message == "cannot write " + path + ": File too large");
+    CHECK(dir.entries().empty());
+}
+
+TEST_CASE("AtomicFile writes, moves and commits", "[image]") {
+    TempDir dir;
+    const std::string path = dir.file("text.txt");
+    AtomicFile first(path);
+    first.write("hello, ");
+    std::fputs("world", first.stream());
+    const std::string temporary = first.temporary_path();
+    CHECK(fs::path(temporary).parent_path() == dir.path);
+
+    AtomicFile second(std::move(first));
+    CHECK(first.temporary_path().empty());  // NOLINT(bugprone-use-after-move)
+    CHECK(second.temporary_path() == temporary);
+    second.commit();
+    CHECK(read_bytes(path) == "hello, world");
+    CHECK_FALSE(fs::exists(temporary));
+    CHECK_THROWS_AS(second.commit(), std::logic_error);
+    CHECK_THROWS_AS(second.write("x"), std::logic_error);
+}
+
+TEST_CASE("AtomicFile move assignment discards the file it replaces", "[image]") {
+    TempDir dir;
+    AtomicFile a(dir.file("a"));
+    AtomicFile b(dir.file("b"));
+    CHECK(dir.entries().size() == 2);
+    a = std::move(b);
+    CHECK(dir.entries().size() == 1);
+    a.commit();
+    CHECK(dir.entries() == std::set<std::string>{"b"});
+}
