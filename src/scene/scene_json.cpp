@@ -1,0 +1,514 @@
+// Scene files: reading (with validation that names the faulty field) and
+// writing. The format is documented in lessons/scenes/README.md; keep the two
+// in step.
+
+#include "scene/scene_json.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <functional>
+#include <memory>
+#include <system_error>
+#include <unordered_set>
+#include <vector>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "math/vec3.hpp"
+#include "util/errors.hpp"
+
+namespace promyk {
+
+namespace {
+
+// ordered_json keeps the file's key order, so the first unknown key reported
+// is the first one in the file.
+using Json = nlohmann::ordered_json;
+
+constexpr std::size_t max_name_chars = 200;
+// The format nests 4 levels deep ({"spheres": [{"S": [...]}]}); anything much
+// deeper is not a scene, and the limit keeps the parser's memory bounded.
+constexpr std::size_t max_nesting = 64;
+
+// ---------------------------------------------------------------------------
+// JSON pointers and message helpers
+
+// One reference token of a JSON pointer (RFC 6901): '~' -> "~0", '/' -> "~1".
+std::string pointer_token(std::string_view token) {
+    std::string out;
+    out.reserve(token.size());
+    for (char c : token) {
+        if (c == '~')
+            out += "~0";
+        else if (c == '/')
+            out += "~1";
+        else
+            out += c;
+    }
+    return out;
+}
+
+std::string child(const std::string& pointer, std::string_view key) { return pointer + "/" + pointer_token(key); }
+std::string child(const std::string& pointer, std::size_t index) { return pointer + "/" + std::to_string(index); }
+
+// A key as shown inside a message: JSON string escapes, without the quotes.
+std::string shown(const std::string& key) {
+    const std::string quoted = Json(key).dump(-1, ' ', false, Json::error_handler_t::replace);
+    return quoted.substr(1, quoted.size() - 2);
+}
+
+std::string lowercase(std::string_view text) {
+    std::string out(text);
+    for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return out;
+}
+
+// Levenshtein distance (insert, delete, substitute one byte).
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0u : 1u)});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+// ---------------------------------------------------------------------------
+// The objects of the format and their keys
+
+struct Alias {
+    std::string_view alias;  // lower case
+    std::string_view key;
+};
+
+struct Level {
+    std::string_view name;                 // "the scene", "a sphere", "a light"
+    std::vector<std::string_view> keys;    // in the documented order
+    std::vector<Alias> aliases;            // common other names for the keys
+    std::string_view home;                 // where keys of this level belong
+};
+
+const Level& scene_level() {
+    static const Level level{"the scene",
+                             {"name", "z_E", "background", "spheres", "lights"},
+                             {{"title", "name"}, {"pane", "z_E"}, {"bg", "background"}, {"objects", "spheres"}},
+                             "at the top level of the scene"};
+    return level;
+}
+
+const Level& sphere_level() {
+    static const Level level{"a sphere",
+                             {"S", "r"},
+                             {{"radius", "r"}, {"center", "S"}, {"centre", "S"}, {"position", "S"}, {"pos", "S"}},
+                             "in a sphere, inside \"spheres\""};
+    return level;
+}
+
+const Level& light_level() {
+    static const Level level{"a light",
+                             {"L", "I"},
+                             {{"position", "L"}, {"pos", "L"}, {"intensity", "I"}, {"power", "I"}, {"brightness", "I"}},
+                             "in a light, inside \"lights\""};
+    return level;
+}
+
+bool has_key(const Level& level, std::string_view key) {
+    return std::find(level.keys.begin(), level.keys.end(), key) != level.keys.end();
+}
+
+// The hint after "unknown key 'k'": the level a known key belongs to, a
+// common other name, a key differing only in case, or a key within edit
+// distance 2 (that is not a complete rewrite of it); else the allowed keys.
+std::string unknown_key_hint(const std::string& key, const Level& level) {
+    for (const Level* other : {&scene_level(), &sphere_level(), &light_level()}) {
+        if (other != &level && has_key(*other, key))
+            return fmt::format("'{}' belongs {}", key, other->home);
+    }
+    const std::string lower = lowercase(key);
+    for (const Alias& alias : level.aliases) {
+        if (alias.alias == lower) return fmt::format("did you mean '{}'?", alias.key);
+    }
+    for (std::string_view known : level.keys) {
+        if (lowercase(known) == lower) return fmt::format("did you mean '{}'?", known);
+    }
+    std::string_view best;
+    std::size_t best_distance = 3;
+    for (std::string_view known : level.keys) {
+        const std::size_t distance = edit_distance(key, known);
+        if (distance < best_distance && distance < std::max(key.size(), known.size())) {
+            best = known;
+            best_distance = distance;
+        }
+    }
+    if (!best.empty()) return fmt::format("did you mean '{}'?", best);
+    std::string list;
+    for (std::string_view known : level.keys) list += fmt::format("{}'{}'", list.empty() ? "" : ", ", known);
+    return fmt::format("the keys of {} are {}", level.name, list);
+}
+
+// ---------------------------------------------------------------------------
+// Parsing: JSON text to a JSON value, with the path of the parser tracked so
+// duplicate keys and out-of-range numbers can be reported by JSON pointer.
+
+class PathTracker {
+public:
+    explicit PathTracker(const std::string& source) : source_(source) {}
+
+    bool operator()(int /*depth*/, Json::parse_event_t event, Json& parsed) {
+        switch (event) {
+            case Json::parse_event_t::object_start:
+            case Json::parse_event_t::array_start:
+                if (frames_.size() >= max_nesting)
+                    throw InputError(source_, pending_pointer(),
+                                     fmt::format("nested deeper than {} levels; a scene nests 4", max_nesting));
+                count_element();
+                frames_.push_back(Frame{event == Json::parse_event_t::array_start, {}, 0, {}});
+                break;
+            case Json::parse_event_t::key: {
+                Frame& frame = frames_.back();
+                frame.key = parsed.get_ref<const std::string&>();
+                if (!frame.keys.insert(frame.key).second)
+                    throw InputError(source_, pending_pointer(),
+                                     fmt::format("duplicate key '{}'; a key may appear only once in an object",
+                                                 shown(frame.key)));
+                break;
+            }
+            case Json::parse_event_t::value:
+                count_element();
+                break;
+            case Json::parse_event_t::object_end:
+            case Json::parse_event_t::array_end:
+                frames_.pop_back();
+                break;
+        }
+        return true;
+    }
+
+    // The pointer of the value the parser is reading now: the last key of an
+    // object, the next index of an array.
+    std::string pending_pointer() const {
+        std::string pointer;
+        for (std::size_t k = 0; k < frames_.size(); ++k) {
+            const Frame& frame = frames_[k];
+            const bool innermost = k + 1 == frames_.size();
+            if (frame.is_array)
+                pointer = child(pointer, innermost ? frame.count : frame.count - 1);
+            else
+                pointer = child(pointer, frame.key);
+        }
+        return pointer;
+    }
+
+private:
+    struct Frame {
+        bool is_array;
+        std::string key;                       // objects: the last key read
+        std::size_t count;                     // arrays: elements begun so far
+        std::unordered_set<std::string> keys;  // objects: the keys read so far
+    };
+
+    void count_element() {
+        if (!frames_.empty() && frames_.back().is_array) ++frames_.back().count;
+    }
+
+    const std::string& source_;
+    std::vector<Frame> frames_;
+};
+
+// "line L, column C" of the character at nlohmann's `byte` (1-based count of
+// the bytes read when the error was found); columns count characters.
+std::string line_column(std::string_view text, std::size_t byte) {
+    const std::size_t index = std::min(byte == 0 ? 0 : byte - 1, text.size());
+    std::size_t line = 1;
+    std::size_t column = 1;
+    for (std::size_t k = 0; k < index; ++k) {
+        const auto c = static_cast<unsigned char>(text[k]);
+        if (c == '\n') {
+            ++line;
+            column = 1;
+        } else if ((c & 0xC0u) != 0x80u) {  // not a UTF-8 continuation byte
+            ++column;
+        }
+    }
+    return fmt::format("line {}, column {}", line, column);
+}
+
+// nlohmann's message without its prefix (which repeats the position) and
+// without the echo of the text read ("; last read: '...'").
+std::string syntax_reason(const std::string& what) {
+    const std::size_t start = what.find("syntax error");
+    std::string reason = start == std::string::npos ? what : what.substr(start);
+    const std::size_t echo = reason.find("; last read: '");
+    if (echo != std::string::npos) {
+        const std::size_t expected = reason.find("'; expected ", echo);
+        reason = reason.substr(0, echo) + (expected == std::string::npos ? "" : reason.substr(expected + 1));
+    }
+    return reason;
+}
+
+Json parse_json(std::string_view text, const std::string& source) {
+    if (text.size() > max_scene_file_bytes)
+        throw InputError(source, "",
+                         fmt::format("the scene is {} bytes, more than the limit of {} bytes (1 MiB)", text.size(),
+                                     max_scene_file_bytes));
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // a UTF-8 byte order mark
+    if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
+        throw InputError(source, "",
+                         "the scene is empty; a scene is a JSON object such as "
+                         "{\"spheres\": [{\"S\": [0, 0, 3.2], \"r\": 1.1}], \"lights\": [{\"L\": [1.5, 1, 1]}]}");
+    PathTracker tracker(source);
+    try {
+        return Json::parse(text.begin(), text.end(), std::ref(tracker));
+    } catch (const Json::parse_error& error) {
+        throw InputError(source, line_column(text, error.byte), syntax_reason(error.what()));
+    } catch (const Json::out_of_range& error) {
+        // 406: a number literal too large for a double (1e999).
+        const std::string what = error.what();
+        const std::size_t open = what.find('\'');
+        const std::size_t close = what.rfind('\'');
+        const std::string literal =
+            open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : "";
+        throw InputError(source, tracker.pending_pointer(),
+                         fmt::format("the number {} is out of the range of a double (it is not finite)", literal));
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Validation: JSON value to Scene
+
+class SceneReader {
+public:
+    explicit SceneReader(const std::string& source) : source_(source) {}
+
+    Scene read(const Json& root) const {
+        if (!root.is_object())
+            fail("", fmt::format("a scene must be a JSON object {{...}}, got {}", type_of(root)));
+        check_keys(root, "", scene_level());
+
+        Scene scene;
+        scene.source = source_;
+        if (const auto it = root.find("name"); it != root.end()) scene.name = read_name(*it, "/name");
+        if (const auto it = root.find("z_E"); it != root.end()) {
+            scene.z_E = read_number(*it, "/z_E", "z_E");
+            if (!(scene.z_E > 0))
+                fail("/z_E", fmt::format("z_E (the pane's distance from the eye) must be > 0, got {}", scene.z_E));
+        }
+        if (const auto it = root.find("background"); it != root.end()) {
+            scene.background = read_number(*it, "/background", "background");
+            if (!(scene.background >= 0 && scene.background <= 1))
+                fail("/background",
+                     fmt::format("background (the intensity of a ray that misses) must be between 0 and 1, got {}",
+                                 scene.background));
+        }
+        const Json& spheres = read_array(root, "spheres", "sphere");
+        for (std::size_t k = 0; k < spheres.size(); ++k)
+            scene.spheres.push_back(read_sphere(spheres[k], child("/spheres", k)));
+        const Json& lights = read_array(root, "lights", "light");
+        for (std::size_t k = 0; k < lights.size(); ++k)
+            scene.lights.push_back(read_light(lights[k], child("/lights", k)));
+
+        // The article's program assumes the eye is outside the sphere. Computed
+        // as the program computes it: S := x_S² + y_S² + z_S², then S − r².
+        const Sphere& sphere = scene.spheres.front();
+        const double outside = length_squared(sphere.S) - sphere.r * sphere.r;
+        if (!std::isfinite(outside))
+            fail("/spheres/0",
+                 "the sphere is too far or too large to compute with doubles (|S|² − r² is not finite)");
+        if (outside <= 0)
+            fail("/spheres/0",
+                 "the eye (at the origin) is inside or on the sphere (|S|² − r² <= 0); the article's program does "
+                 "not handle that");
+        return scene;
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+        throw InputError(source_, where, what);
+    }
+
+    static std::string type_of(const Json& value) {
+        return value.is_number() ? "a number" : value.is_object() ? "an object" : value.is_array() ? "an array"
+             : value.is_string() ? "a string" : value.is_boolean() ? "a boolean" : value.is_null() ? "null"
+             : value.type_name();
+    }
+
+    void check_keys(const Json& object, const std::string& pointer, const Level& level) const {
+        for (const auto& item : object.items()) {
+            if (!has_key(level, item.key()))
+                fail(child(pointer, item.key()),
+                     fmt::format("unknown key '{}'; {}", shown(item.key()), unknown_key_hint(item.key(), level)));
+        }
+    }
+
+    double read_number(const Json& value, const std::string& pointer, std::string_view what) const {
+        if (!value.is_number()) fail(pointer, fmt::format("{} must be a number, got {}", what, type_of(value)));
+        const double number = value.get<double>();
+        if (!std::isfinite(number)) fail(pointer, fmt::format("{} must be a finite number, got {}", what, number));
+        return number;
+    }
+
+    Vec3d read_vec3(const Json& value, const std::string& pointer, std::string_view what) const {
+        if (!value.is_array())
+            fail(pointer, fmt::format("{} must be an array of 3 numbers [x, y, z], got {}", what, type_of(value)));
+        if (value.size() != 3)
+            fail(pointer, fmt::format("{} must be an array of 3 numbers [x, y, z], got {} element{}", what,
+                                      value.size(), value.size() == 1 ? "" : "s"));
+        const char* axes[] = {"x", "y", "z"};
+        double xyz[3];
+        for (std::size_t k = 0; k < 3; ++k)
+            xyz[k] = read_number(value[k], child(pointer, k), fmt::format("{}[{}] ({})", what, k, axes[k]));
+        return {xyz[0], xyz[1], xyz[2]};
+    }
+
+    std::string read_name(const Json& value, const std::string& pointer) const {
+        if (!value.is_string()) fail(pointer, fmt::format("name must be a string, got {}", type_of(value)));
+        const std::string& name = value.get_ref<const std::string&>();
+        if (name.empty()) fail(pointer, "name must not be empty");
+        std::size_t chars = 0;
+        for (std::size_t k = 0; k < name.size();) {  // valid UTF-8: nlohmann checked it
+            const auto lead = static_cast<unsigned char>(name[k]);
+            std::size_t length = lead < 0x80u ? 1 : lead < 0xE0u ? 2 : lead < 0xF0u ? 3 : 4;
+            std::uint32_t code = length == 1 ? lead : length == 2 ? (lead & 0x1Fu) : length == 3 ? (lead & 0x0Fu)
+                                                                                                 : (lead & 0x07u);
+            for (std::size_t m = 1; m < length && k + m < name.size(); ++m)
+                code = (code << 6) | (static_cast<unsigned char>(name[k + m]) & 0x3Fu);
+            if (code < 0x20u || (code >= 0x7Fu && code <= 0x9Fu))
+                fail(pointer, fmt::format("name must not contain control characters, found U+{:04X} at character {}",
+                                          code, chars + 1));
+            k += length;
+            ++chars;
+        }
+        if (chars > max_name_chars)
+            fail(pointer, fmt::format("name is too long: {} characters, at most {}", chars, max_name_chars));
+        return name;
+    }
+
+    // "spheres" or "lights": required, an array, and in this version exactly
+    // one element (the article's program traces one sphere lit by one light).
+    const Json& read_array(const Json& root, const char* key, std::string_view noun) const {
+        const std::string pointer = child("", key);
+        const auto it = root.find(key);
+        if (it == root.end())
+            fail(pointer, fmt::format("missing required key '{}' (an array holding exactly one {})", key, noun));
+        if (!it->is_array())
+            fail(pointer, fmt::format("{} must be an array of {}s, got {}", key, noun, type_of(*it)));
+        if (it->size() != 1)
+            fail(pointer, fmt::format("this version traces exactly one {} (the article's), got {}", noun, it->size()));
+        return *it;
+    }
+
+    const Json& require(const Json& object, const char* key, const std::string& pointer,
+                        std::string_view meaning) const {
+        const auto it = object.find(key);
+        if (it == object.end())
+            fail(child(pointer, key), fmt::format("missing required key '{}' ({})", key, meaning));
+        return *it;
+    }
+
+    Sphere read_sphere(const Json& value, const std::string& pointer) const {
+        if (!value.is_object())
+            fail(pointer, fmt::format("a sphere must be an object {{\"S\": [x, y, z], \"r\": r}}, got {}",
+                                      type_of(value)));
+        check_keys(value, pointer, sphere_level());
+        Sphere sphere;
+        sphere.S = read_vec3(require(value, "S", pointer, "the sphere's centre [x, y, z]"), child(pointer, "S"), "S");
+        sphere.r = read_number(require(value, "r", pointer, "the sphere's radius"), child(pointer, "r"), "r");
+        if (!(sphere.r > 0))
+            fail(child(pointer, "r"), fmt::format("r (the sphere's radius) must be > 0, got {}", sphere.r));
+        return sphere;
+    }
+
+    Light read_light(const Json& value, const std::string& pointer) const {
+        if (!value.is_object())
+            fail(pointer, fmt::format("a light must be an object {{\"L\": [x, y, z], \"I\": I}}, got {}",
+                                      type_of(value)));
+        check_keys(value, pointer, light_level());
+        Light light;
+        light.L = read_vec3(require(value, "L", pointer, "the light's position [x, y, z]"), child(pointer, "L"), "L");
+        if (const auto it = value.find("I"); it != value.end()) {
+            light.I = read_number(*it, child(pointer, "I"), "I");
+            if (!(light.I >= 0))
+                fail(child(pointer, "I"), fmt::format("I (the light's intensity) must be >= 0, got {}", light.I));
+        }
+        return light;
+    }
+
+    const std::string& source_;
+};
+
+// ---------------------------------------------------------------------------
+// Writing
+
+// The shortest text that reads back to the same double. "-0.0" keeps the sign
+// of a negative zero (JSON readers take "-0" for the integer 0). Non-finite
+// numbers have no JSON form: null (such a scene does not load back).
+std::string number_text(double value) {
+    if (!std::isfinite(value)) return "null";
+    if (value == 0 && std::signbit(value)) return "-0.0";
+    return fmt::format("{}", value);
+}
+
+std::string vec3_text(const Vec3d& v) {
+    return fmt::format("[{}, {}, {}]", number_text(v.x), number_text(v.y), number_text(v.z));
+}
+
+struct FileCloser {
+    void operator()(std::FILE* file) const { std::fclose(file); }
+};
+
+std::string errno_text(int error) { return std::error_code(error, std::generic_category()).message(); }
+
+}  // namespace
+
+Scene load_scene_file(const std::string& path) {
+    errno = 0;
+    const std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
+    if (!file) throw InputError(path, "", "cannot open the scene file: " + errno_text(errno));
+    std::string text;
+    char buffer[1 << 16];
+    for (;;) {
+        const std::size_t got = std::fread(buffer, 1, sizeof buffer, file.get());
+        text.append(buffer, got);
+        if (text.size() > max_scene_file_bytes)
+            throw InputError(path, "",
+                             fmt::format("the scene file is larger than the limit of {} bytes (1 MiB)",
+                                         max_scene_file_bytes));
+        if (got < sizeof buffer) {
+            if (std::ferror(file.get())) throw InputError(path, "", "cannot read the scene file: " + errno_text(errno));
+            break;
+        }
+    }
+    return parse_scene(text, path);
+}
+
+Scene parse_scene(std::string_view text, const std::string& source) {
+    return SceneReader(source).read(parse_json(text, source));
+}
+
+std::string scene_to_json(const Scene& scene) {
+    const std::string name = Json(scene.name).dump(-1, ' ', false, Json::error_handler_t::replace);
+    std::string text = fmt::format("{{\n  \"name\": {},\n  \"z_E\": {},\n  \"background\": {},\n  \"spheres\": [", name,
+                                   number_text(scene.z_E), number_text(scene.background));
+    for (std::size_t k = 0; k < scene.spheres.size(); ++k)
+        text += fmt::format("{}\n    {{\"S\": {}, \"r\": {}}}", k == 0 ? "" : ",", vec3_text(scene.spheres[k].S),
+                            number_text(scene.spheres[k].r));
+    text += scene.spheres.empty() ? "],\n  \"lights\": [" : "\n  ],\n  \"lights\": [";
+    for (std::size_t k = 0; k < scene.lights.size(); ++k)
+        text += fmt::format("{}\n    {{\"L\": {}, \"I\": {}}}", k == 0 ? "" : ",", vec3_text(scene.lights[k].L),
+                            number_text(scene.lights[k].I));
+    text += scene.lights.empty() ? "]\n}\n" : "\n  ]\n}\n";
+    return text;
+}
+
+}  // namespace promyk

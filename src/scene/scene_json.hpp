@@ -1,0 +1,35 @@
+// Scene files: the JSON form of a Scene (lessons/scenes/README.md describes
+// the format, every field, its default and its constraints).
+//
+// Reading validates everything the engine of this version relies on and
+// throws InputError naming the file and the fault: a JSON pointer for a bad
+// field ("/spheres/0/r"), "line L, column C" for a syntax error, or an empty
+// `where` for a fault of the file as a whole (missing, empty, too large).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+#include "scene/scene.hpp"
+
+namespace promyk {
+
+// Scene files larger than this are refused before parsing.
+inline constexpr std::size_t max_scene_file_bytes = std::size_t{1} << 20;  // 1 MiB
+
+// Reads and parses the scene file at `path`; the scene's `source` is `path`.
+// A missing or unreadable file is an InputError carrying strerror's text.
+Scene load_scene_file(const std::string& path);
+
+// Parses scene text; `source` names it in errors and becomes the scene's
+// `source`.
+Scene parse_scene(std::string_view text, const std::string& source);
+
+// The scene as a scene file: pretty, fields in the documented order, every
+// number as the shortest text that reads back to the same double. `source`
+// is not written. parse_scene(scene_to_json(s), ...) gives back s for every
+// scene that parse_scene accepts.
+std::string scene_to_json(const Scene& scene);
+
+}  // namespace promyk

@@ -1,0 +1,364 @@
+// Scene files: the article's scene file, defaults, every rejection (with the
+// JSON pointer or line/column it names), round trips, file errors.
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <limits>
+#include <random>
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include "scene/scene.hpp"
+#include "scene/scene_json.hpp"
+#include "util/errors.hpp"
+
+namespace {
+
+using promyk::InputError;
+using promyk::parse_scene;
+using promyk::Scene;
+
+const std::string article_path = std::string(PROMYK_SOURCE_DIR) + "/lessons/scenes/article.json";
+
+std::uint64_t bits(double value) {
+    std::uint64_t out;
+    std::memcpy(&out, &value, sizeof out);
+    return out;
+}
+
+// Exact equality, down to the sign of zero.
+void check_same_number(double a, double b) {
+    INFO(a << " vs " << b);
+    CHECK(bits(a) == bits(b));
+}
+
+void check_same_scene(const Scene& a, const Scene& b) {
+    CHECK(a.name == b.name);
+    check_same_number(a.z_E, b.z_E);
+    check_same_number(a.background, b.background);
+    REQUIRE(a.spheres.size() == b.spheres.size());
+    for (std::size_t k = 0; k < a.spheres.size(); ++k) {
+        check_same_number(a.spheres[k].S.x, b.spheres[k].S.x);
+        check_same_number(a.spheres[k].S.y, b.spheres[k].S.y);
+        check_same_number(a.spheres[k].S.z, b.spheres[k].S.z);
+        check_same_number(a.spheres[k].r, b.spheres[k].r);
+    }
+    REQUIRE(a.lights.size() == b.lights.size());
+    for (std::size_t k = 0; k < a.lights.size(); ++k) {
+        check_same_number(a.lights[k].L.x, b.lights[k].L.x);
+        check_same_number(a.lights[k].L.y, b.lights[k].L.y);
+        check_same_number(a.lights[k].L.z, b.lights[k].L.z);
+        check_same_number(a.lights[k].I, b.lights[k].I);
+    }
+}
+
+const std::string article_sphere = R"({"S": [0, 0, 3.2], "r": 1.1})";
+const std::string article_light = R"({"L": [1.5, 1, 1], "I": 1})";
+
+// A scene text: `top` is spliced in front of the spheres and lights (end it
+// with a comma), `sphere` and `light` replace the article's.
+std::string scene_text(const std::string& top = "", const std::string& sphere = article_sphere,
+                       const std::string& light = article_light) {
+    return "{" + top + R"("spheres": [)" + sphere + R"(], "lights": [)" + light + "]}";
+}
+
+void check_rejected(const std::string& text, const std::string& where, std::initializer_list<const char*> words) {
+    INFO("input: " << text);
+    try {
+        parse_scene(text, "test.json");
+        FAIL("the scene was accepted");
+    } catch (const InputError& error) {
+        INFO("message: " << error.what());
+        CHECK(error.file == "test.json");
+        CHECK(error.where == where);
+        for (const char* word : words) CHECK_THAT(error.what(), Catch::Matchers::Contains(word));
+    }
+}
+
+void check_accepted(const std::string& text) {
+    INFO("input: " << text);
+    CHECK_NOTHROW(parse_scene(text, "test.json"));
+}
+
+}  // namespace
+
+TEST_CASE("the article's scene file loads equal to the built-in article scene", "[scene]") {
+    const Scene loaded = promyk::load_scene_file(article_path);
+    const Scene article = promyk::article_scene();
+    CHECK(loaded.name == "article");
+    CHECK(loaded.source == article_path);
+    check_same_scene(loaded, article);
+    CHECK(loaded.z_E == 2);
+    CHECK(loaded.background == 0.5);
+    REQUIRE(loaded.spheres.size() == 1);
+    CHECK(loaded.spheres[0].S.x == 0);
+    CHECK(loaded.spheres[0].S.y == 0);
+    CHECK(loaded.spheres[0].S.z == 3.2);
+    CHECK(loaded.spheres[0].r == 1.1);
+    REQUIRE(loaded.lights.size() == 1);
+    CHECK(loaded.lights[0].L.x == 1.5);
+    CHECK(loaded.lights[0].L.y == 1);
+    CHECK(loaded.lights[0].L.z == 1);
+    CHECK(loaded.lights[0].I == 1);
+    CHECK(promyk::scene_hash(loaded) == promyk::scene_hash(article));
+}
+
+TEST_CASE("the article's scene file is exactly what scene_to_json writes", "[scene]") {
+    std::ifstream file(article_path, std::ios::binary);
+    REQUIRE(file);
+    const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    CHECK(text == promyk::scene_to_json(promyk::article_scene()));
+}
+
+TEST_CASE("fields left out take their documented defaults", "[scene]") {
+    const Scene scene = parse_scene(R"({"spheres": [{"S": [0, 0, 3], "r": 1}], "lights": [{"L": [1, 2, 3]}]})",
+                                    "test.json");
+    CHECK(scene.name == "untitled");
+    CHECK(scene.z_E == 2);
+    CHECK(scene.background == 0.5);
+    CHECK(scene.source == "test.json");
+    REQUIRE(scene.lights.size() == 1);
+    CHECK(scene.lights[0].I == 1);
+}
+
+TEST_CASE("limits that are allowed load", "[scene]") {
+    check_accepted(scene_text(R"("background": 0,)"));
+    check_accepted(scene_text(R"("background": 1,)"));
+    check_accepted(scene_text("", article_sphere, R"({"L": [1.5, 1, 1], "I": 0})"));
+    check_accepted(scene_text(R"("z_E": 1e-300,)"));
+    check_accepted(scene_text(R"("name": ")" + std::string(200, 'a') + R"(",)"));
+    std::string polish;  // 200 characters, 400 bytes
+    for (int k = 0; k < 200; ++k) polish += "\xC5\x9B";  // ś
+    check_accepted(scene_text(R"("name": ")" + polish + R"(",)"));
+    check_accepted("\xEF\xBB\xBF" + scene_text());  // a byte order mark
+    check_accepted(scene_text("", R"({"S": [0, 0, -3], "r": 1})"));  // behind the eye: the article does not check
+}
+
+TEST_CASE("a scene that is not a JSON object is rejected", "[scene]") {
+    check_rejected("", "", {"empty"});
+    check_rejected(" \n\t\r\n", "", {"empty"});
+    check_rejected("[1, 2]", "", {"JSON object", "array"});
+    check_rejected("3", "", {"JSON object", "number"});
+    check_rejected("\"article\"", "", {"JSON object", "string"});
+    check_rejected("null", "", {"JSON object", "null"});
+}
+
+TEST_CASE("unknown keys are rejected, with a suggestion when one is close", "[scene]") {
+    check_rejected(scene_text(R"("$schema": "x",)"), "/$schema", {"unknown key '$schema'"});
+    check_rejected(scene_text(R"("comment": "x",)"), "/comment", {"unknown key 'comment'", "'name'", "'lights'"});
+    check_rejected(scene_text("", R"({"S": [0, 0, 3.2], "radius": 1.1})"), "/spheres/0/radius",
+                   {"unknown key 'radius'; did you mean 'r'?"});
+    check_rejected(scene_text(R"("z_e": 2,)"), "/z_e", {"unknown key 'z_e'; did you mean 'z_E'?"});
+    check_rejected(scene_text(R"("nmae": "x",)"), "/nmae", {"did you mean 'name'?"});
+    check_rejected(scene_text(R"("backgrund": 0.5,)"), "/backgrund", {"did you mean 'background'?"});
+    check_rejected(R"({"sphere": [], "lights": []})", "/sphere", {"did you mean 'spheres'?"});
+    check_rejected(scene_text("", article_sphere, R"({"L": [1, 1, 1], "intensity": 1})"), "/lights/0/intensity",
+                   {"did you mean 'I'?"});
+    check_rejected(scene_text("", article_sphere, R"({"l": [1, 1, 1]})"), "/lights/0/l", {"did you mean 'L'?"});
+    // A key of another object says where it belongs.
+    check_rejected(scene_text(R"("r": 1,)"), "/r", {"unknown key 'r'", "belongs in a sphere"});
+    check_rejected(scene_text("", article_sphere, R"({"L": [1, 1, 1], "S": [0, 0, 1]})"), "/lights/0/S",
+                   {"belongs in a sphere"});
+    check_rejected(scene_text("", R"({"S": [0, 0, 3.2], "r": 1.1, "name": "x"})"), "/spheres/0/name",
+                   {"belongs at the top level"});
+    // Far from every key: no suggestion, the allowed keys instead.
+    check_rejected(scene_text("", R"({"S": [0, 0, 3.2], "r": 1.1, "x": 1})"), "/spheres/0/x",
+                   {"unknown key 'x'", "the keys of a sphere are 'S', 'r'"});
+    // Pointer tokens are escaped (RFC 6901).
+    check_rejected(scene_text(R"("a/b~c": 1,)"), "/a~1b~0c", {"unknown key 'a/b~c'"});
+}
+
+TEST_CASE("wrong types are rejected with the field's pointer", "[scene]") {
+    check_rejected(scene_text(R"("name": 3,)"), "/name", {"name", "string", "number"});
+    check_rejected(scene_text(R"("z_E": "2",)"), "/z_E", {"z_E", "number", "string"});
+    check_rejected(scene_text(R"("background": true,)"), "/background", {"background", "number", "boolean"});
+    check_rejected(R"({"spheres": {}, "lights": []})", "/spheres", {"array", "object"});
+    check_rejected(R"({"spheres": [{"S": [0, 0, 3], "r": 1}], "lights": null})", "/lights", {"array", "null"});
+    check_rejected(scene_text("", "3"), "/spheres/0", {"sphere", "object", "number"});
+    check_rejected(scene_text("", article_sphere, "[1.5, 1, 1]"), "/lights/0", {"light", "object", "array"});
+    check_rejected(scene_text("", R"({"S": "0 0 3", "r": 1})"), "/spheres/0/S", {"3 numbers", "string"});
+    check_rejected(scene_text("", R"({"S": {"x": 0}, "r": 1})"), "/spheres/0/S", {"3 numbers", "object"});
+    check_rejected(scene_text("", R"({"S": [0, 0, "3"], "r": 1})"), "/spheres/0/S/2", {"S[2]", "number"});
+    check_rejected(scene_text("", R"({"S": [0, 0, 3], "r": null})"), "/spheres/0/r", {"r", "number", "null"});
+    check_rejected(scene_text("", article_sphere, R"({"L": [1, true, 1]})"), "/lights/0/L/1", {"L[1]", "number"});
+    check_rejected(scene_text("", article_sphere, R"({"L": [1, 1, 1], "I": "1"})"), "/lights/0/I",
+                   {"I", "number", "string"});
+}
+
+TEST_CASE("vectors must be exactly 3 numbers", "[scene]") {
+    check_rejected(scene_text("", R"({"S": [0, 3], "r": 1})"), "/spheres/0/S", {"3 numbers", "got 2"});
+    check_rejected(scene_text("", R"({"S": [0, 0, 3, 1], "r": 1})"), "/spheres/0/S", {"3 numbers", "got 4"});
+    check_rejected(scene_text("", R"({"S": [], "r": 1})"), "/spheres/0/S", {"3 numbers", "got 0"});
+    check_rejected(scene_text("", article_sphere, R"({"L": [[1], 1, 1]})"), "/lights/0/L/0", {"L[0]", "number"});
+}
+
+TEST_CASE("numbers too large for a double are rejected at their pointer", "[scene]") {
+    check_rejected(scene_text(R"("z_E": 1e999,)"), "/z_E", {"1e999", "not finite"});
+    check_rejected(scene_text("", R"({"S": [0, 0, -1e400], "r": 1})"), "/spheres/0/S/2", {"-1e400", "not finite"});
+    check_rejected(scene_text("", R"({"S": [0, 0, 3], "r": 1e309})"), "/spheres/0/r", {"not finite"});
+    check_rejected(scene_text("", article_sphere, "{\"L\": [" + std::string(400, '9') + ", 1, 1]}"),
+                   "/lights/0/L/0", {"not finite"});
+    check_rejected(scene_text("", article_sphere, R"({"L": [1, 1, 1], "I": 2e308})"), "/lights/0/I",
+                   {"not finite"});
+}
+
+TEST_CASE("values out of their range are rejected", "[scene]") {
+    check_rejected(scene_text("", R"({"S": [0, 0, 3], "r": 0})"), "/spheres/0/r", {"radius", "> 0", "got 0"});
+    check_rejected(scene_text("", R"({"S": [0, 0, 3], "r": -1})"), "/spheres/0/r", {"> 0", "got -1"});
+    check_rejected(scene_text("", R"({"S": [0, 0, 3], "r": -0.0})"), "/spheres/0/r", {"> 0"});
+    check_rejected(scene_text("", article_sphere, R"({"L": [1, 1, 1], "I": -0.5})"), "/lights/0/I",
+                   {"intensity", ">= 0", "got -0.5"});
+    check_rejected(scene_text(R"("z_E": 0,)"), "/z_E", {"z_E", "> 0", "got 0"});
+    check_rejected(scene_text(R"("z_E": -2,)"), "/z_E", {"> 0", "got -2"});
+    check_rejected(scene_text(R"("background": -0.1,)"), "/background", {"between 0 and 1", "got -0.1"});
+    check_rejected(scene_text(R"("background": 1.5,)"), "/background", {"between 0 and 1", "got 1.5"});
+}
+
+TEST_CASE("bad names are rejected", "[scene]") {
+    check_rejected(scene_text(R"("name": "",)"), "/name", {"name", "empty"});
+    check_rejected(scene_text(R"("name": ")" + std::string(201, 'a') + R"(",)"), "/name",
+                   {"too long", "201 characters", "200"});
+    check_rejected(scene_text(R"("name": "a\u0007b",)"), "/name", {"control character", "U+0007"});
+    check_rejected(scene_text(R"("name": "two\nlines",)"), "/name", {"control character", "U+000A"});
+    check_rejected(scene_text(R"("name": "del\u007f",)"), "/name", {"control character", "U+007F"});
+    check_rejected(scene_text(R"("name": "c1\u0085",)"), "/name", {"control character", "U+0085"});
+}
+
+TEST_CASE("duplicate keys are rejected at the second occurrence", "[scene]") {
+    check_rejected(scene_text(R"("z_E": 2, "z_E": 3,)"), "/z_E", {"duplicate key 'z_E'"});
+    check_rejected(scene_text("", R"({"S": [0, 0, 3], "r": 1, "r": 2})"), "/spheres/0/r", {"duplicate key 'r'"});
+    check_rejected(scene_text("", article_sphere, R"({"L": [1, 1, 1], "I": 1, "L": [1, 1, 1]})"), "/lights/0/L",
+                   {"duplicate key 'L'"});
+    check_rejected(R"({"spheres": [], "spheres": []})", "/spheres", {"duplicate"});
+}
+
+TEST_CASE("this version needs exactly one sphere and one light", "[scene]") {
+    check_rejected(scene_text("", article_sphere + ", " + article_sphere), "/spheres",
+                   {"exactly one sphere", "got 2"});
+    check_rejected(R"({"spheres": [], "lights": [{"L": [1, 1, 1]}]})", "/spheres", {"exactly one sphere", "got 0"});
+    check_rejected(scene_text("", article_sphere, article_light + ", " + article_light), "/lights",
+                   {"exactly one light", "got 2"});
+    check_rejected(R"({"spheres": [{"S": [0, 0, 3], "r": 1}], "lights": []})", "/lights", {"exactly one light"});
+    check_rejected(R"({"lights": [{"L": [1, 1, 1]}]})", "/spheres", {"missing", "spheres"});
+    check_rejected(R"({"spheres": [{"S": [0, 0, 3], "r": 1}]})", "/lights", {"missing", "lights"});
+    check_rejected(scene_text("", R"({"r": 1})"), "/spheres/0/S", {"missing", "'S'"});
+    check_rejected(scene_text("", R"({"S": [0, 0, 3]})"), "/spheres/0/r", {"missing", "'r'"});
+    check_rejected(scene_text("", article_sphere, R"({"I": 1})"), "/lights/0/L", {"missing", "'L'"});
+}
+
+TEST_CASE("the eye inside or on the sphere is rejected", "[scene]") {
+    check_rejected(scene_text("", R"({"S": [0, 0, 1], "r": 2})"), "/spheres/0", {"inside or on", "article"});
+    check_rejected(scene_text("", R"({"S": [0, 0, 3.2], "r": 3.2})"), "/spheres/0", {"inside or on"});
+    check_rejected(scene_text("", R"({"S": [0, 0, 1e-200], "r": 1e-201})"), "/spheres/0",
+                   {"inside or on"});  // |S|² − r² underflows to 0 in double
+    check_accepted(scene_text("", R"({"S": [0, 0, 3.2], "r": 3.1999999999999997})"));
+    check_rejected(scene_text("", R"({"S": [0, 0, 1e200], "r": 1})"), "/spheres/0", {"not finite"});
+}
+
+TEST_CASE("syntax errors give the line and column", "[scene]") {
+    check_rejected("{\n  \"name\": \"x\",\n  \"z_E\": 2,,\n  \"spheres\": []\n}", "line 3, column 12",
+                   {"syntax error", "unexpected ','"});
+    // Columns count characters, not bytes: "Ś" is two bytes.
+    check_rejected("{\"name\": \"\xC5\x9Bledzenie\" x}", "line 1, column 22", {"syntax error"});
+    check_rejected("{\n  \"spheres\": [\n", "line 3, column 1", {"syntax error", "end of input"});
+    check_rejected("{\n  \"z_E\": tru\n}", "line 2, column 13", {"syntax error", "invalid literal"});
+    check_rejected("{\"name\": \"a\x01\"}", "line 1, column 12", {"syntax error", "control character"});
+    check_rejected(scene_text() + " {}", "line 1, column " + std::to_string(scene_text().size() + 2),
+                   {"syntax error", "end of input"});
+}
+
+TEST_CASE("nesting and size are limited", "[scene]") {
+    check_rejected(std::string(100, '['), "/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0"
+                                          "/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0",
+                   {"nested deeper than 64"});
+    check_rejected(scene_text() + std::string(promyk::max_scene_file_bytes, ' '), "", {"1 MiB"});
+    check_accepted(scene_text() + std::string(promyk::max_scene_file_bytes - scene_text().size(), ' '));
+}
+
+TEST_CASE("scene_to_json reads back to the same scene", "[scene]") {
+    check_same_scene(parse_scene(promyk::scene_to_json(promyk::article_scene()), "x"), promyk::article_scene());
+
+    Scene odd = promyk::article_scene();
+    odd.name = "Śledzenie \"promieni\" \\ ☀";
+    odd.z_E = 0.1 + 0.2;
+    odd.background = 5e-324;
+    odd.spheres[0].S = {-0.0, 1e-300, 123456789012345678.0};
+    odd.spheres[0].r = 1.0 / 3;
+    odd.lights[0].L = {std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(), -0.0};
+    odd.lights[0].I = 1e300;
+    const std::string text = promyk::scene_to_json(odd);
+    INFO(text);
+    check_same_scene(parse_scene(text, "x"), odd);
+
+    // Random doubles of every magnitude the validation lets through.
+    std::mt19937_64 random(20240611);
+    std::uniform_int_distribution<int> exponent(-150, 150);
+    std::uniform_real_distribution<double> mantissa(-1, 1);
+    const auto any = [&] { return std::ldexp(mantissa(random), exponent(random)); };
+    for (int n = 0; n < 500; ++n) {
+        Scene scene;
+        scene.name = "random " + std::to_string(n);
+        scene.z_E = std::abs(any()) + 1e-300;
+        scene.background = std::uniform_real_distribution<double>(0, 1)(random);
+        const promyk::Vec3d S{any(), any(), any()};
+        const double length = std::sqrt(promyk::length_squared(S));
+        scene.spheres = {promyk::Sphere{S, length * std::uniform_real_distribution<double>(0.01, 0.9)(random)}};
+        scene.lights = {promyk::Light{{any(), any(), any()}, std::abs(any())}};
+        const std::string json = promyk::scene_to_json(scene);
+        INFO(json);
+        check_same_scene(parse_scene(json, "x"), scene);
+    }
+}
+
+TEST_CASE("a missing or unreadable scene file is an input error", "[scene]") {
+    const std::string missing = std::string(PROMYK_SOURCE_DIR) + "/lessons/scenes/no-such-scene.json";
+    try {
+        promyk::load_scene_file(missing);
+        FAIL("a missing file loaded");
+    } catch (const InputError& error) {
+        CHECK(error.file == missing);
+        CHECK(error.where.empty());
+        CHECK_THAT(error.what(), Catch::Matchers::Contains("No such file"));
+    }
+    try {
+        promyk::load_scene_file(std::string(PROMYK_SOURCE_DIR) + "/lessons/scenes");
+        FAIL("a directory loaded");
+    } catch (const InputError& error) {
+        CHECK(error.where.empty());
+        CHECK_THAT(error.what(), Catch::Matchers::Contains("cannot read"));
+    }
+
+    const auto big = std::filesystem::temp_directory_path() / "promyk_scene_json_test_big.json";
+    {
+        std::ofstream out(big, std::ios::binary);
+        out << scene_text() << std::string(promyk::max_scene_file_bytes, ' ');
+    }
+    try {
+        promyk::load_scene_file(big.string());
+        FAIL("a file over the limit loaded");
+    } catch (const InputError& error) {
+        CHECK(error.where.empty());
+        CHECK_THAT(error.what(), Catch::Matchers::Contains("1 MiB"));
+    }
+    std::filesystem::remove(big);
+
+    // Errors inside a file name the file.
+    const auto bad = std::filesystem::temp_directory_path() / "promyk_scene_json_test_bad.json";
+    {
+        std::ofstream out(bad, std::ios::binary);
+        out << scene_text("", R"({"S": [0, 0, 3], "r": -1})");
+    }
+    try {
+        promyk::load_scene_file(bad.string());
+        FAIL("a bad file loaded");
+    } catch (const InputError& error) {
+        CHECK(error.file == bad.string());
+        CHECK(error.where == "/spheres/0/r");
+    }
+    std::filesystem::remove(bad);
+}
