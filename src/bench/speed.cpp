@@ -120,7 +120,8 @@ int run_speed_bench(const SpeedOptions& options) {
     fmt::print("  {:<38} {:>10}\n", "", "ns/pixel");
     fmt::print("  {:<38} {:>10.2f}\n", "article's literal program, 1 thread", ns_per_pixel(t_literal));
     fmt::print("  {:<38} {:>10.2f}\n", "engine, 1 thread", ns_per_pixel(t_engine));
-    fmt::print("  {:<38} {:>10.2f}\n\n", fmt::format("engine, {} threads", threads), ns_per_pixel(t_threaded));
+    fmt::print("  {:<38} {:>10.2f}\n\n", fmt::format("engine, {} thread{}", threads, threads == 1 ? "" : "s"),
+               ns_per_pixel(t_threaded));
     fmt::print("  engine / literal, 1 thread:    {:.3f}   (target <= 1.05)\n", t_engine / t_literal);
     fmt::print("  {} threads / 1 thread speed-up: {:.2f}    (target >= 1.8 on 2 cores)\n", threads,
                t_engine / t_threaded);

@@ -19,8 +19,12 @@ int resolve_threads(int threads) {
 }
 
 void render_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out) {
+    // A local copy: stores through a uint8_t* may alias anything, so reading the
+    // scene through a reference would reload it, and keep |S|^2 from being
+    // hoisted, on every pixel.
+    const ArticleWorld<double> local = world;
     NullRecorder none;
-    for (int j = 0; j < w; ++j) out[j] = to_byte(trace_pixel_ray(world, w, i, j, none).I_P);
+    for (int j = 0; j < w; ++j) out[j] = to_byte(trace_pixel_ray(local, w, i, j, none).I_P);
 }
 
 namespace {

@@ -1,0 +1,18 @@
+# README's example of `promyk trace` must be what promyk prints today.
+#   -DPROMYK=path -DREADME=path
+execute_process(COMMAND "${PROMYK}" trace RESULT_VARIABLE code OUTPUT_VARIABLE actual)
+if(NOT code EQUAL 0)
+  message(FATAL_ERROR "promyk trace exited with ${code}")
+endif()
+file(READ "${README}" readme)
+string(FIND "${readme}" "\npixel (i, j) = (3, 4)" start)
+if(start EQUAL -1)
+  message(FATAL_ERROR "README.md has no example of `promyk trace` (a block starting 'pixel (i, j) = (3, 4)')")
+endif()
+math(EXPR start "${start} + 1")
+string(SUBSTRING "${readme}" ${start} -1 rest)
+string(FIND "${rest}" "```" stop)
+string(SUBSTRING "${rest}" 0 ${stop} example)
+if(NOT example STREQUAL actual)
+  message(FATAL_ERROR "README.md's example differs from `promyk trace`; paste the new output:\n${actual}")
+endif()
