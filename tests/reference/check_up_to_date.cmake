@@ -1,0 +1,29 @@
+# Regenerates the reference into OUTPUT and compares it with the committed
+# file byte for byte. Run by CTest (test reference_data_up_to_date):
+#   cmake -DPYTHON=... -DSCRIPT=.../make_reference.py -DCOMMITTED=.../article_reference.json
+#         -DOUTPUT=<file in the build dir> -P check_up_to_date.cmake
+foreach(var PYTHON SCRIPT COMMITTED OUTPUT)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "check_up_to_date.cmake: ${var} is not set")
+  endif()
+endforeach()
+
+get_filename_component(output_dir "${OUTPUT}" DIRECTORY)
+file(MAKE_DIRECTORY "${output_dir}")
+file(REMOVE "${OUTPUT}")
+execute_process(
+  COMMAND "${PYTHON}" "${SCRIPT}" "${OUTPUT}"
+  RESULT_VARIABLE result
+  ERROR_VARIABLE errors)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "make_reference.py failed (${result}):\n${errors}")
+endif()
+
+execute_process(
+  COMMAND "${CMAKE_COMMAND}" -E compare_files "${OUTPUT}" "${COMMITTED}"
+  RESULT_VARIABLE different)
+if(NOT different EQUAL 0)
+  message(FATAL_ERROR "${COMMITTED} is not what ${SCRIPT} makes now (see ${OUTPUT}); "
+                      "regenerate it with: ${PYTHON} ${SCRIPT} ${COMMITTED}")
+endif()
+message(STATUS "reference data up to date: ${COMMITTED}")
