@@ -5,11 +5,13 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "bench/article_literal.hpp"
+#include "bench/cpu_pinning.hpp"
 #include "render/renderer.hpp"
 #include "util/errors.hpp"
 #include "util/interrupt.hpp"
@@ -87,26 +89,64 @@ int run_speed_bench(const SpeedOptions& options) {
     std::vector<std::uint8_t> engine_image(literal_image.size());
     std::vector<std::uint8_t> threaded_image(literal_image.size());
 
+    // Single-thread runs visit every core in turn, the literal program and the
+    // engine on the same core, so their ratio compares like with like.
+    std::vector<int> cpus = allowed_cpus();
+    const bool pinned = !cpus.empty();
+    if (!pinned) cpus = {-1};
+    struct CoreTimes {
+        std::vector<double> literal, engine;
+    };
+    std::vector<CoreTimes> per_core(cpus.size());
+    std::vector<double> ratios, threaded_times;
+
     fmt::print("promyk bench speed: the article's scene, w = {} ({} pixels), {} alternating rounds, medians\n\n", w,
                w * static_cast<long>(w), options.repetitions);
     std::fflush(stdout);
-
-    std::vector<double> literal_times, engine_times, threaded_times;
     for (int round = 0; round < options.repetitions; ++round) {
-        throw_if_interrupted();
-        literal_times.push_back(seconds_of([&] { literal_render(literal, w, literal_image.data()); }));
-        engine_times.push_back(seconds_of([&] {
-            MemorySink sink(engine_image.data(), w);
-            render(scene, {w, 1}, PixelSelection{}, sink);
-        }));
+        for (std::size_t c = 0; c < cpus.size(); ++c) {
+            throw_if_interrupted();
+            std::optional<PinnedToCpu> pin;
+            if (pinned) pin.emplace(cpus[c]);
+            const double t_literal = seconds_of([&] { literal_render(literal, w, literal_image.data()); });
+            const double t_engine = seconds_of([&] {
+                MemorySink sink(engine_image.data(), w);
+                render(scene, {w, 1}, PixelSelection{}, sink);
+            });
+            per_core[c].literal.push_back(t_literal);
+            per_core[c].engine.push_back(t_engine);
+            ratios.push_back(t_engine / t_literal);
+        }
         threaded_times.push_back(seconds_of([&] {
             MemorySink sink(threaded_image.data(), w);
             render(scene, {w, threads}, PixelSelection{}, sink);
         }));
     }
-    const double t_literal = median(literal_times), t_engine = median(engine_times);
-    const double t_threaded = median(threaded_times);
     const bool identical = engine_image == literal_image && threaded_image == literal_image;
+    const double t_threaded = median(threaded_times);
+
+    const auto ns_per_pixel = [&](double seconds) { return seconds / pixels * 1e9; };
+    fmt::print("  single thread          literal ns/pixel  engine ns/pixel  engine/literal\n");
+    double throughput_sum = 0;  // pixels per second, summed over cores
+    for (std::size_t c = 0; c < cpus.size(); ++c) {
+        const double t_literal = median(per_core[c].literal), t_engine = median(per_core[c].engine);
+        throughput_sum += 1 / t_engine;
+        fmt::print("  {:<22} {:>16.2f} {:>16.2f} {:>15.3f}\n", pinned ? fmt::format("on core {}", cpus[c]) : "any core",
+                   ns_per_pixel(t_literal), ns_per_pixel(t_engine), t_engine / t_literal);
+    }
+    const double t_one = 1 / (throughput_sum / static_cast<double>(cpus.size()));  // the average core
+    fmt::print("  engine, {} thread{}: {:.2f} ns/pixel\n\n", threads, threads == 1 ? "" : "s",
+               ns_per_pixel(t_threaded));
+
+    fmt::print("  engine / literal, 1 thread (median over rounds and cores): {:.3f}   (target <= 1.05)\n",
+               median(ratios));
+    fmt::print("  {} threads / 1 thread speed-up (1 thread: the average core): {:.2f}   (target >= 1.8 on 2 cores)\n",
+               threads, t_one / t_threaded);
+    if (pinned && threads == static_cast<int>(cpus.size()))
+        fmt::print("  parallel efficiency (threaded throughput / sum of the cores' own): {:.2f}\n",
+                   (1 / t_threaded) / throughput_sum);
+    fmt::print("  images identical (engine, threaded, literal): {}\n\n", identical ? "yes" : "NO");
+    std::fflush(stdout);
 
     const int tw = options.trace_w;
     TraceFileSink trace_sink;
@@ -115,18 +155,8 @@ int run_speed_bench(const SpeedOptions& options) {
         trace_sink.finish();
     });
     const double trace_pixels = static_cast<double>(tw) * tw;
-
-    const auto ns_per_pixel = [&](double seconds) { return seconds / pixels * 1e9; };
-    fmt::print("  {:<38} {:>10}\n", "", "ns/pixel");
-    fmt::print("  {:<38} {:>10.2f}\n", "article's literal program, 1 thread", ns_per_pixel(t_literal));
-    fmt::print("  {:<38} {:>10.2f}\n", "engine, 1 thread", ns_per_pixel(t_engine));
-    fmt::print("  {:<38} {:>10.2f}\n\n", fmt::format("engine, {} thread{}", threads, threads == 1 ? "" : "s"),
-               ns_per_pixel(t_threaded));
-    fmt::print("  engine / literal, 1 thread:    {:.3f}   (target <= 1.05)\n", t_engine / t_literal);
-    fmt::print("  {} threads / 1 thread speed-up: {:.2f}    (target >= 1.8 on 2 cores)\n", threads,
-               t_engine / t_threaded);
-    fmt::print("  images identical (engine, threaded, literal): {}\n\n", identical ? "yes" : "NO");
-    fmt::print("  traces, JSON Lines of every pixel at w = {}, {} threads, to a temporary file:\n", tw, threads);
+    fmt::print("  traces, JSON Lines of every pixel at w = {}, {} thread{}, to a temporary file:\n", tw, threads,
+               threads == 1 ? "" : "s");
     fmt::print("    {:.0f} pixels/s, {:.1f} MB/s, {:.0f} bytes a pixel\n", trace_pixels / t_traces,
                trace_sink.bytes() / t_traces / 1e6, trace_sink.bytes() / trace_pixels);
     return identical ? 0 : 1;

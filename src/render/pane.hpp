@@ -7,12 +7,21 @@
 
 namespace promyk {
 
+// y_E := -(2i + 1)/w + 1, as in the article: the same for a whole row.
+template <class Real>
+Real pane_y(int i, int w) {
+    return -Real(2 * i + 1) / Real(w) + Real(1);
+}
+
+// x_E := (2j + 1)/w - 1, as in the article.
+template <class Real>
+Real pane_x(int j, int w) {
+    return Real(2 * j + 1) / Real(w) - Real(1);
+}
+
 template <class Real>
 Vec3<Real> pane_point(int i, int j, int w, Real z_E) {
-    // y_E := -(2i + 1)/w + 1 and x_E := (2j + 1)/w - 1, as in the article.
-    const Real y_E = -Real(2 * i + 1) / Real(w) + Real(1);
-    const Real x_E = Real(2 * j + 1) / Real(w) - Real(1);
-    return {x_E, y_E, z_E};
+    return {pane_x<Real>(j, w), pane_y<Real>(i, w), z_E};
 }
 
 }  // namespace promyk

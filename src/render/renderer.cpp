@@ -22,9 +22,12 @@ void render_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* o
     // A local copy: stores through a uint8_t* may alias anything, so reading the
     // scene through a reference would reload it, and keep |S|^2 from being
     // hoisted, on every pixel.
+    // y_E is computed once a row: GCC will not hoist a division out of a loop
+    // by itself (it might trap), and the result is the same double.
     const ArticleWorld<double> local = world;
+    const double y_E = pane_y<double>(i, w);
     NullRecorder none;
-    for (int j = 0; j < w; ++j) out[j] = to_byte(trace_pixel_ray(local, w, i, j, none).I_P);
+    for (int j = 0; j < w; ++j) out[j] = to_byte(trace_ray(local, {pane_x<double>(j, w), y_E, local.z_E}, none).I_P);
 }
 
 namespace {
