@@ -73,7 +73,7 @@ int run_render(const RenderOptions& options) {
     std::optional<AtomicFile> traces;
     if (!options.traces_file.empty()) traces.emplace(options.traces_file);
     {
-        Progress progress("promyk render");
+        Progress progress("promyk render", "rows");
         FileSink sink(*image, traces ? &*traces : nullptr, progress);
         render(scene, {options.w, options.threads}, traced, sink);
     }

@@ -7,8 +7,8 @@
 
 namespace promyk::app {
 
-Progress::Progress(std::string what)
-    : what_(std::move(what)), start_(std::chrono::steady_clock::now()), terminal_(isatty(STDERR_FILENO) == 1) {}
+Progress::Progress(std::string what, std::string unit)
+    : what_(std::move(what)), unit_(std::move(unit)), start_(std::chrono::steady_clock::now()), terminal_(isatty(STDERR_FILENO) == 1) {}
 
 Progress::~Progress() {
     if (shown_) std::fputs("\n", stderr);
@@ -23,7 +23,7 @@ void Progress::update(long done, long total) {
     last_percent_ = percent;
     shown_ = true;
     const double seconds = std::chrono::duration<double>(elapsed).count();
-    fmt::print(stderr, "\r{}: {:3d}% ({} of {}), {:.1f} s", what_, percent, done, total, seconds);
+    fmt::print(stderr, "\r{}: {:3d}% ({} of {} {}), {:.1f} s", what_, percent, done, total, unit_, seconds);
     std::fflush(stderr);
 }
 

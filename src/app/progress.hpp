@@ -9,12 +9,14 @@ namespace promyk::app {
 
 class Progress {
 public:
-    explicit Progress(std::string what);
+    // `what` names the work, `unit` what `done` and `total` count.
+    Progress(std::string what, std::string unit);
     ~Progress();
     void update(long done, long total);
 
 private:
     std::string what_;
+    std::string unit_;
     std::chrono::steady_clock::time_point start_;
     bool terminal_;
     bool shown_ = false;
