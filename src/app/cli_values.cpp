@@ -63,6 +63,11 @@ void check_w(int w) {
         throw UsageError(fmt::format("--w must be between 1 and {}, got {}", max_w, w));
 }
 
+void check_threads(int threads) {
+    if (threads < 0 || threads > max_threads)
+        throw UsageError(fmt::format("--threads must be between 0 (all cores) and {}, got {}", max_threads, threads));
+}
+
 Scene load_scene_option(const std::string& path) { return path.empty() ? article_scene() : load_scene_file(path); }
 
 }  // namespace promyk::cli

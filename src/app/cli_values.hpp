@@ -26,6 +26,12 @@ PixelRegion parse_region(const std::string& text, const std::string& option, int
 // Checks 1 <= w <= max_w.
 void check_w(int w);
 
+// The most threads accepted: far more than any machine promyk runs on has cores.
+inline constexpr int max_threads = 1024;
+
+// Checks 0 (all cores) <= threads <= max_threads.
+void check_threads(int threads);
+
 // The built-in article scene, or the scene file when a path is given.
 Scene load_scene_option(const std::string& path);
 

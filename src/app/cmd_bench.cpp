@@ -24,7 +24,7 @@ std::function<int()> setup_bench(CLI::App& app) {
         cli::check_w(speed->w);
         cli::check_w(speed->trace_w);
         if (speed->repetitions < 1) throw UsageError("--repetitions must be at least 1");
-        if (speed->threads < 0) throw UsageError("--threads must be 0 (all cores) or more");
+        cli::check_threads(speed->threads);
         return bench::run_speed_bench(*speed);
     };
 }

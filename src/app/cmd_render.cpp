@@ -62,7 +62,7 @@ PixelSelection traced_pixels(const RenderOptions& options) {
 
 int run_render(const RenderOptions& options) {
     cli::check_w(options.w);
-    if (options.threads < 0) throw UsageError(fmt::format("--threads must be 0 (all cores) or more, got {}", options.threads));
+    cli::check_threads(options.threads);
     if (!options.traces_file.empty() && options.traces_file == options.output)
         throw UsageError("--traces and -o name the same file");
     const PixelSelection traced = traced_pixels(options);
