@@ -159,3 +159,24 @@ TEST_CASE("pixel selections", "[render]") {
     CHECK_FALSE(s.row_has_any(4));
     CHECK(PixelSelection::all().contains(1000, 1000));
 }
+
+namespace {
+
+// A sink that fails on its second band, as a full disk would.
+struct FailingSink final : RenderSink {
+    int bands = 0;
+    void image_rows(const std::uint8_t*, int) override {
+        if (++bands == 2) throw OutputError("disk full");
+    }
+};
+
+}  // namespace
+
+TEST_CASE("a sink failure stops the render and reaches the caller, whatever the thread count", "[render]") {
+    for (const int threads : {1, 2, 4}) {
+        FailingSink sink;
+        // w = 2048: bands of 512 rows, so the failure comes while helpers compute the next band.
+        CHECK_THROWS_AS(render(article_scene(), {2048, threads}, PixelSelection{}, sink), OutputError);
+        CHECK(sink.bands == 2);
+    }
+}

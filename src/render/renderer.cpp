@@ -50,6 +50,91 @@ int band_rows(int w, int threads, bool tracing) {
     return static_cast<int>(std::min<long>(rows, w));
 }
 
+// One band of rows: its pixels and trace lines, and the counter from which
+// every thread takes its next row (one at a time, so threads stay balanced).
+struct Band {
+    int first_row = 0;
+    int count = 0;
+    std::vector<std::uint8_t> pixels;
+    std::vector<std::string> traces;
+    std::atomic<int> next_row{0};
+
+    void start(int first, int rows_per_band, int w) {
+        first_row = first;
+        count = std::min(rows_per_band, w - first);
+        next_row = 0;
+    }
+    bool last(int w) const { return first_row + count >= w; }
+};
+
+// Computes the rows of bands; the first failure (or a signal) stops every thread.
+class BandWork {
+public:
+    BandWork(const ArticleWorld<double>& world, const TraceHeader& header, const PixelSelection& traced)
+        : world_(world), header_(header), traced_(traced) {}
+
+    void operator()(Band& band) noexcept {
+        const int w = header_.w;
+        try {
+            for (int k = band.next_row++; k < band.count && !stop_ && !interrupt_signal(); k = band.next_row++) {
+                const int i = band.first_row + k;
+                render_row(world_, w, i, &band.pixels[static_cast<std::size_t>(k) * w]);
+                if (traced_.row_has_any(i)) trace_row(world_, header_, traced_, i, band.traces[k]);
+            }
+        } catch (...) {
+            if (!stop_.exchange(true)) failure_ = std::current_exception();
+        }
+    }
+
+    void stop() { stop_ = true; }
+
+    // After the threads are joined: rethrows a failure, or Interrupted.
+    void check() const {
+        if (failure_) std::rethrow_exception(failure_);
+        throw_if_interrupted();
+    }
+
+private:
+    const ArticleWorld<double>& world_;
+    const TraceHeader& header_;
+    const PixelSelection& traced_;
+    std::atomic<bool> stop_{false};
+    std::exception_ptr failure_;
+};
+
+// Helper threads working on one band beside the calling thread. If the
+// caller leaves by an exception, the helpers are stopped and joined.
+class Helpers {
+public:
+    explicit Helpers(BandWork& work) : work_(work) {}
+    ~Helpers() {
+        if (threads_.empty()) return;
+        work_.stop();
+        join();
+    }
+    void start(int count, Band& band) {
+        for (int t = 0; t < count; ++t) threads_.emplace_back([this, &band] { work_(band); });
+    }
+    void join() {
+        for (std::thread& thread : threads_) thread.join();
+        threads_.clear();
+    }
+
+private:
+    BandWork& work_;
+    std::vector<std::thread> threads_;
+};
+
+void deliver(Band& band, int w, RenderSink& sink) {
+    sink.image_rows(band.pixels.data(), band.count);
+    for (int k = 0; k < band.count; ++k) {
+        if (band.traces[k].empty()) continue;
+        sink.trace_lines(band.traces[k]);
+        band.traces[k].clear();
+    }
+    sink.progress(band.first_row + band.count, w);
+}
+
 }  // namespace
 
 void render(const Scene& scene, const RenderSettings& settings, const PixelSelection& traced, RenderSink& sink) {
@@ -59,38 +144,33 @@ void render(const Scene& scene, const RenderSettings& settings, const PixelSelec
     const int rows_per_band = band_rows(w, threads, !traced.empty());
     const TraceHeader header = trace_header(scene, w);
 
-    std::vector<std::uint8_t> pixels(static_cast<std::size_t>(rows_per_band) * w);
-    std::vector<std::string> traces(static_cast<std::size_t>(rows_per_band));
+    // Two bands: while the helpers compute one, the calling thread hands the
+    // other to the sink (PNG compression, trace writing), then joins them.
+    Band bands[2];
+    for (Band& band : bands) {
+        band.pixels.resize(static_cast<std::size_t>(rows_per_band) * w);
+        band.traces.resize(static_cast<std::size_t>(rows_per_band));
+    }
+    BandWork work(world, header, traced);
+    Helpers helpers(work);
 
-    for (int i0 = 0; i0 < w; i0 += rows_per_band) {
-        const int count = std::min(rows_per_band, w - i0);
-        std::atomic<int> next_row{0};
-        std::exception_ptr failure;
-        std::atomic<bool> failed{false};
-        auto work = [&] {
-            try {
-                for (int k = next_row++; k < count && !failed && !interrupt_signal(); k = next_row++) {
-                    render_row(world, w, i0 + k, &pixels[static_cast<std::size_t>(k) * w]);
-                    if (traced.row_has_any(i0 + k)) trace_row(world, header, traced, i0 + k, traces[k]);
-                }
-            } catch (...) {
-                if (!failed.exchange(true)) failure = std::current_exception();
-            }
-        };
-        std::vector<std::thread> helpers;
-        for (int t = 1; t < threads; ++t) helpers.emplace_back(work);
-        work();
-        for (std::thread& helper : helpers) helper.join();
-        if (failure) std::rethrow_exception(failure);
-        throw_if_interrupted();
-
-        sink.image_rows(pixels.data(), count);
-        for (int k = 0; k < count; ++k) {
-            if (traces[k].empty()) continue;
-            sink.trace_lines(traces[k]);
-            traces[k].clear();
+    bands[0].start(0, rows_per_band, w);
+    helpers.start(threads - 1, bands[0]);
+    work(bands[0]);
+    helpers.join();
+    for (int b = 0;; ++b) {
+        work.check();
+        Band& done = bands[b % 2];
+        Band& next = bands[(b + 1) % 2];
+        const bool more = !done.last(w);
+        if (more) {
+            next.start(done.first_row + done.count, rows_per_band, w);
+            helpers.start(threads - 1, next);
         }
-        sink.progress(i0 + count, w);
+        deliver(done, w, sink);
+        if (!more) break;
+        work(next);
+        helpers.join();
     }
 }
 
