@@ -76,9 +76,7 @@ std::string read_bytes(const std::string& path) {
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
-void write_bytes(const std::string& path, const std::string& bytes) {
-    std::ofstream(path, std::ios::binary) << bytes;
-}
+void write_bytes(const std::string& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
 
 struct Grey {
     int width = 0;
@@ -183,8 +181,7 @@ TEST_CASE("the PNG is 8-bit greyscale and the PGM header is plain", "[image]") {
     CHECK(int(png[24]) == 8);  // bit depth
     CHECK(int(png[25]) == 0);  // colour type: greyscale
     CHECK(int(png[28]) == 0);  // not interlaced
-    CHECK(read_bytes(dir.file("g.pgm")) ==
-          "P5\n5 2\n255\n" + std::string(pixels.begin(), pixels.end()));
+    CHECK(read_bytes(dir.file("g.pgm")) == "P5\n5 2\n255\n" + std::string(pixels.begin(), pixels.end()));
 }
 
 TEST_CASE("the finished file gets the usual mode, not mkstemp's 0600", "[image]") {
@@ -194,8 +191,7 @@ TEST_CASE("the finished file gets the usual mode, not mkstemp's 0600", "[image]"
     const std::uint8_t pixel = 0;
     writer->write_rows(&pixel, 1);
     writer->commit();
-    CHECK((fs::status(path).permissions() & fs::perms::all) ==
-          static_cast<fs::perms>(0666 & ~current_umask()));
+    CHECK((fs::status(path).permissions() & fs::perms::all) == static_cast<fs::perms>(0666 & ~current_umask()));
 }
 
 TEST_CASE("a writer destroyed without commit leaves nothing", "[image]") {

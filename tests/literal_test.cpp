@@ -51,9 +51,12 @@ std::string show(const promyk::StepValue& v) {
 
 Branch literal_branch(const LiteralLocals& v) {
     switch (v.returned) {
-        case LiteralReturn::half: return Branch::miss;
-        case LiteralReturn::zero: return Branch::dark;
-        case LiteralReturn::intensity: return Branch::lit;
+        case LiteralReturn::half:
+            return Branch::miss;
+        case LiteralReturn::zero:
+            return Branch::dark;
+        case LiteralReturn::intensity:
+            return Branch::lit;
     }
     return Branch::miss;
 }
@@ -62,11 +65,7 @@ Branch literal_branch(const LiteralLocals& v) {
 // after delta, a dark or lit pixel after D.
 std::vector<promyk::Step> literal_steps(const LiteralLocals& v) {
     std::vector<promyk::Step> steps = {
-        {Key::E, Vec3d{v.x_E, v.y_E, v.z_E}},
-        {Key::EE, v.E},
-        {Key::SS, v.S},
-        {Key::C, v.C},
-        {Key::delta, v.Delta},
+        {Key::E, Vec3d{v.x_E, v.y_E, v.z_E}}, {Key::EE, v.E}, {Key::SS, v.S}, {Key::C, v.C}, {Key::delta, v.Delta},
     };
     if (v.returned == LiteralReturn::half) return steps;
     steps.push_back({Key::t, v.t});
@@ -89,7 +88,9 @@ std::string compare_pixel(const promyk::ArticleWorld<double>& world, const promy
                           const LiteralLocals& literal, double literal_t) {
     const int w = header.w;
     std::ostringstream why;
-    const auto where = [&] { return "w=" + std::to_string(w) + " (" + std::to_string(i) + "," + std::to_string(j) + "): "; };
+    const auto where = [&] {
+        return "w=" + std::to_string(w) + " (" + std::to_string(i) + "," + std::to_string(j) + "): ";
+    };
 
     // The loop's value and the function's result are one number.
     if (!same_bits(literal_t, literal.result)) why << where() << "literal loop and locals disagree\n";
@@ -125,8 +126,8 @@ std::string compare_pixel(const promyk::ArticleWorld<double>& world, const promy
             break;
         }
         if (!same_value(got.value, want.value))
-            why << where() << promyk::key_name(got.key) << " = " << show(got.value) << ", literal "
-                << show(want.value) << "\n";
+            why << where() << promyk::key_name(got.key) << " = " << show(got.value) << ", literal " << show(want.value)
+                << "\n";
     }
     return why.str();
 }

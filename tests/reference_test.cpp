@@ -164,7 +164,7 @@ struct ExactValues {
 // comments give the closed forms for the article's scene (z_E = 2,
 // S = (0, 0, 3.2), r = 1.1, L = (1.5, 1, 1), I = 1; |x_E|, |y_E| < 1).
 std::map<std::string, std::vector<long double>> pixel_error_bounds(const Vec3d& E_in, const promyk::Scene& scene,
-                                                                     const ExactValues& exact) {
+                                                                   const ExactValues& exact) {
     std::map<std::string, std::vector<long double>> bound;
     const auto put = [&](const std::string& key, const Bounded& b) { bound[key] = {b.e}; };
     const auto put3 = [&](const std::string& key, const Vec3b& b) { bound[key] = {b.x.e, b.y.e, b.z.e}; };
@@ -343,7 +343,7 @@ struct Worst {
     long double ulps = 0;        // |computed - exact| / ulp(exact)
     long double bound_ulps = 0;  // the derived bound at that pixel, in ulp(exact)
     long double max_bound_ulps = 0;
-    long double ratio = 0;  // largest error / bound
+    long double ratio = 0;        // largest error / bound
     long double scaled_ulps = 0;  // |computed - exact| / ulp(size of its terms), for delta and D
     std::string where;
     int count = 0;
@@ -466,23 +466,25 @@ TEST_CASE("the tracer agrees with the high-precision reference", "[reference]") 
                 // value is read from 30 digits (far below 1/256 ulp).
                 const long double tolerance = bound * (1 + 0x1p-20L) + 0x1p-60L * std::fabs(x);
                 if (!(error <= tolerance))
-                    fail(p, name + " = " + show(got[k]) + ", exact " + show(x) + ": error " +
-                                show(error / ulp(x)) + " ulp, bound " + show(bound / ulp(x)) + " ulp");
+                    fail(p, name + " = " + show(got[k]) + ", exact " + show(x) + ": error " + show(error / ulp(x)) +
+                                " ulp, bound " + show(bound / ulp(x)) + " ulp");
                 const auto fixed = fixed_ulps.find(ref_value.key);
                 if (fixed != fixed_ulps.end() && !(error <= fixed->second * ulp(x) + 0x1p-60L * std::fabs(x)))
                     fail(p, name + ": error " + show(error / ulp(x)) + " ulp, above its fixed bound");
                 Worst& w = worst[ref_value.key];
                 ++w.count;
                 const long double ulps = error / ulp(x);
-                const long double scale =
-                    ref_value.key == "delta" ? larger_term : ref_value.key == "D" ? D_terms : std::fabs(x);
+                const long double scale = ref_value.key == "delta" ? larger_term
+                                          : ref_value.key == "D"   ? D_terms
+                                                                   : std::fabs(x);
                 w.scaled_ulps = std::max(w.scaled_ulps, error / ulp(scale));
                 w.max_bound_ulps = std::max(w.max_bound_ulps, bound / ulp(x));
                 if (bound > 0) w.ratio = std::max(w.ratio, error / bound);
                 if (ulps > w.ulps || w.where.empty()) {
                     w.ulps = ulps;
                     w.bound_ulps = bound / ulp(x);
-                    w.where = "w=" + std::to_string(p.w) + " (" + std::to_string(p.i) + "," + std::to_string(p.j) + ") " + name;
+                    w.where = "w=" + std::to_string(p.w) + " (" + std::to_string(p.i) + "," + std::to_string(p.j) +
+                              ") " + name;
                 }
             }
         };
@@ -507,8 +509,8 @@ TEST_CASE("the tracer agrees with the high-precision reference", "[reference]") 
             const auto it = worst.find(key);
             if (it == worst.end()) continue;
             const Worst& w = it->second;
-            std::printf("%-6s %6d %12.3Lg %12.3Lg %14.3Lg %10.3Lg %12.3Lg  %s\n", key, w.count, w.ulps,
-                        w.bound_ulps, w.max_bound_ulps, w.ratio, w.scaled_ulps, w.where.c_str());
+            std::printf("%-6s %6d %12.3Lg %12.3Lg %14.3Lg %10.3Lg %12.3Lg  %s\n", key, w.count, w.ulps, w.bound_ulps,
+                        w.max_bound_ulps, w.ratio, w.scaled_ulps, w.where.c_str());
         }
     }
 }

@@ -116,8 +116,8 @@ TEST_CASE("the article's scene file is exactly what scene_to_json writes", "[sce
 }
 
 TEST_CASE("fields left out take their documented defaults", "[scene]") {
-    const Scene scene = parse_scene(R"({"spheres": [{"S": [0, 0, 3], "r": 1}], "lights": [{"L": [1, 2, 3]}]})",
-                                    "test.json");
+    const Scene scene =
+        parse_scene(R"({"spheres": [{"S": [0, 0, 3], "r": 1}], "lights": [{"L": [1, 2, 3]}]})", "test.json");
     CHECK(scene.name == "untitled");
     CHECK(scene.z_E == 2);
     CHECK(scene.background == 0.5);
@@ -132,10 +132,10 @@ TEST_CASE("limits that are allowed load", "[scene]") {
     check_accepted(scene_text("", article_sphere, R"({"L": [1.5, 1, 1], "I": 0})"));
     check_accepted(scene_text(R"("z_E": 1e-300,)"));
     check_accepted(scene_text(R"("name": ")" + std::string(200, 'a') + R"(",)"));
-    std::string polish;  // 200 characters, 400 bytes
+    std::string polish;                                  // 200 characters, 400 bytes
     for (int k = 0; k < 200; ++k) polish += "\xC5\x9B";  // ś
     check_accepted(scene_text(R"("name": ")" + polish + R"(",)"));
-    check_accepted("\xEF\xBB\xBF" + scene_text());  // a byte order mark
+    check_accepted("\xEF\xBB\xBF" + scene_text());                   // a byte order mark
     check_accepted(scene_text("", R"({"S": [0, 0, -3], "r": 1})"));  // behind the eye: the article does not check
 }
 
@@ -201,10 +201,9 @@ TEST_CASE("numbers too large for a double are rejected at their pointer", "[scen
     check_rejected(scene_text(R"("z_E": 1e999,)"), "/z_E", {"1e999", "not finite"});
     check_rejected(scene_text("", R"({"S": [0, 0, -1e400], "r": 1})"), "/spheres/0/S/2", {"-1e400", "not finite"});
     check_rejected(scene_text("", R"({"S": [0, 0, 3], "r": 1e309})"), "/spheres/0/r", {"not finite"});
-    check_rejected(scene_text("", article_sphere, "{\"L\": [" + std::string(400, '9') + ", 1, 1]}"),
-                   "/lights/0/L/0", {"not finite"});
-    check_rejected(scene_text("", article_sphere, R"({"L": [1, 1, 1], "I": 2e308})"), "/lights/0/I",
+    check_rejected(scene_text("", article_sphere, "{\"L\": [" + std::string(400, '9') + ", 1, 1]}"), "/lights/0/L/0",
                    {"not finite"});
+    check_rejected(scene_text("", article_sphere, R"({"L": [1, 1, 1], "I": 2e308})"), "/lights/0/I", {"not finite"});
 }
 
 TEST_CASE("values out of their range are rejected", "[scene]") {
@@ -238,8 +237,7 @@ TEST_CASE("duplicate keys are rejected at the second occurrence", "[scene]") {
 }
 
 TEST_CASE("this version needs exactly one sphere and one light", "[scene]") {
-    check_rejected(scene_text("", article_sphere + ", " + article_sphere), "/spheres",
-                   {"exactly one sphere", "got 2"});
+    check_rejected(scene_text("", article_sphere + ", " + article_sphere), "/spheres", {"exactly one sphere", "got 2"});
     check_rejected(R"({"spheres": [], "lights": [{"L": [1, 1, 1]}]})", "/spheres", {"exactly one sphere", "got 0"});
     check_rejected(scene_text("", article_sphere, article_light + ", " + article_light), "/lights",
                    {"exactly one light", "got 2"});
@@ -273,8 +271,9 @@ TEST_CASE("syntax errors give the line and column", "[scene]") {
 }
 
 TEST_CASE("nesting and size are limited", "[scene]") {
-    check_rejected(std::string(100, '['), "/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0"
-                                          "/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0",
+    check_rejected(std::string(100, '['),
+                   "/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0"
+                   "/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0",
                    {"nested deeper than 64"});
     check_rejected(scene_text() + std::string(promyk::max_scene_file_bytes, ' '), "", {"1 MiB"});
     check_accepted(scene_text() + std::string(promyk::max_scene_file_bytes - scene_text().size(), ' '));

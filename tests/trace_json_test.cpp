@@ -74,8 +74,8 @@ TEST_CASE("non-finite numbers are null with their text beside them", "[trace-jso
     PixelTrace trace = trace_pixel(article_scene(), 8, 3, 4);
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const double inf = std::numeric_limits<double>::infinity();
-    trace.steps[5].value = nan;                  // t
-    trace.steps[6].value = Vec3d{1, -inf, 2};    // P
+    trace.steps[5].value = nan;                // t
+    trace.steps[6].value = Vec3d{1, -inf, 2};  // P
     trace.result = inf;
     const json parsed = to_json(trace);
     CHECK(parsed["steps"][5] == json{{"key", "t"}, {"value", nullptr}, {"text", "nan"}});

@@ -26,19 +26,17 @@ std::vector<int> parse_integers(const std::string& text, std::size_t count, cons
             throw UsageError(fmt::format("{} expects {} (whole numbers), got '{}'", option, form, text));
         values.push_back(static_cast<int>(value));
         if (*end == '\0') break;
-        if (*end != ',')
-            throw UsageError(fmt::format("{} expects {} (whole numbers), got '{}'", option, form, text));
+        if (*end != ',') throw UsageError(fmt::format("{} expects {} (whole numbers), got '{}'", option, form, text));
         p = end + 1;
     }
-    if (values.size() != count)
-        throw UsageError(fmt::format("{} expects {}, got '{}'", option, form, text));
+    if (values.size() != count) throw UsageError(fmt::format("{} expects {}, got '{}'", option, form, text));
     return values;
 }
 
 void check_inside(int i, int j, int w, const std::string& option) {
     if (i < 0 || i >= w || j < 0 || j >= w)
-        throw UsageError(fmt::format("{} ({}, {}) is outside the {} x {} pane: i and j go from 0 to {}", option, i,
-                                     j, w, w, w - 1));
+        throw UsageError(
+            fmt::format("{} ({}, {}) is outside the {} x {} pane: i and j go from 0 to {}", option, i, j, w, w, w - 1));
 }
 
 }  // namespace
@@ -59,8 +57,7 @@ PixelRegion parse_region(const std::string& text, const std::string& option, int
 }
 
 void check_w(int w) {
-    if (w < 1 || w > max_w)
-        throw UsageError(fmt::format("--w must be between 1 and {}, got {}", max_w, w));
+    if (w < 1 || w > max_w) throw UsageError(fmt::format("--w must be between 1 and {}, got {}", max_w, w));
 }
 
 void check_threads(int threads) {

@@ -7,8 +7,8 @@
 #include <functional>
 #include <new>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include "app/commands.hpp"
 #include "util/errors.hpp"
@@ -27,14 +27,17 @@ std::string where_of(const promyk::InputError& error) {
 
 int main(int argc, char** argv) {
     promyk::install_interrupt_handlers();
-    CLI::App app{"promyk: an educational ray tracer that shows its work.\n"
-                 "It follows the Delta article \"Śledzenie promieni\": an eye at the origin, a pane of w x w pixels\n"
-                 "at z = z_E, a sphere, a point light, Lambert shading. Every number behind a pixel can be shown.",
-                 "promyk"};
+    CLI::App app{
+        "promyk: an educational ray tracer that shows its work.\n"
+        "It follows the Delta article \"Śledzenie promieni\": an eye at the origin, a pane of w x w pixels\n"
+        "at z = z_E, a sphere, a point light, Lambert shading. Every number behind a pixel can be shown.",
+        "promyk"};
     app.set_version_flag("--version", fmt::format("promyk {}", PROMYK_VERSION));
     app.require_subcommand(1);
-    app.footer("Run 'promyk COMMAND --help' for a command's options.\n"
-               "Exit codes: 0 success, 2 bad command line, 3 bad input file, 4 output not written, 130/143 interrupted.");
+    app.footer(
+        "Run 'promyk COMMAND --help' for a command's options.\n"
+        "Exit codes: 0 success, 2 bad command line, 3 bad input file, 4 output not written,\n"
+        "130/143 interrupted (nothing half-written), 70 internal error.");
 
     std::function<int()> run;
     const auto render = promyk::app::setup_render(app);

@@ -33,8 +33,10 @@ ImageFormat image_format_for_path(const std::string& path) {
 
 std::unique_ptr<ImageWriter> open_image_writer(const std::string& path, int width, int height) {
     switch (image_format_for_path(path)) {
-        case ImageFormat::png: return open_png_writer(path, width, height);
-        case ImageFormat::pgm: return open_pgm_writer(path, width, height);
+        case ImageFormat::png:
+            return open_png_writer(path, width, height);
+        case ImageFormat::pgm:
+            return open_pgm_writer(path, width, height);
     }
     throw std::logic_error("unknown ImageFormat");
 }

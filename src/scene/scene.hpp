@@ -12,21 +12,21 @@
 namespace promyk {
 
 struct Sphere {
-    Vec3d S;        // centre
-    double r = 1;   // radius, > 0
+    Vec3d S;       // centre
+    double r = 1;  // radius, > 0
 };
 
 struct Light {
-    Vec3d L;        // position of the point light
-    double I = 1;   // intensity, >= 0
+    Vec3d L;       // position of the point light
+    double I = 1;  // intensity, >= 0
 };
 
 struct Scene {
     std::string name = "untitled";
-    double z_E = 2;              // distance of the pane from the eye, > 0
+    double z_E = 2;  // distance of the pane from the eye, > 0
     std::vector<Sphere> spheres;
     std::vector<Light> lights;
-    double background = 0.5;     // intensity of a ray that misses every object
+    double background = 0.5;          // intensity of a ray that misses every object
     std::string source = "built-in";  // the file it was read from, for messages
 };
 

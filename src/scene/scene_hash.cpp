@@ -12,10 +12,8 @@ namespace {
 // round-trip text, so two scenes hash alike exactly when they render alike.
 std::string canonical_text(const Scene& scene) {
     std::string text = fmt::format("name={};z_E={};background={}", scene.name, scene.z_E, scene.background);
-    for (const Sphere& s : scene.spheres)
-        text += fmt::format(";sphere=S({},{},{}),r({})", s.S.x, s.S.y, s.S.z, s.r);
-    for (const Light& l : scene.lights)
-        text += fmt::format(";light=L({},{},{}),I({})", l.L.x, l.L.y, l.L.z, l.I);
+    for (const Sphere& s : scene.spheres) text += fmt::format(";sphere=S({},{},{}),r({})", s.S.x, s.S.y, s.S.z, s.r);
+    for (const Light& l : scene.lights) text += fmt::format(";light=L({},{},{}),I({})", l.L.x, l.L.y, l.L.z, l.I);
     return text;
 }
 

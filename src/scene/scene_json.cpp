@@ -93,10 +93,10 @@ struct Alias {
 };
 
 struct Level {
-    std::string_view name;                 // "the scene", "a sphere", "a light"
-    std::vector<std::string_view> keys;    // in the documented order
-    std::vector<Alias> aliases;            // common other names for the keys
-    std::string_view home;                 // where keys of this level belong
+    std::string_view name;               // "the scene", "a sphere", "a light"
+    std::vector<std::string_view> keys;  // in the documented order
+    std::vector<Alias> aliases;          // common other names for the keys
+    std::string_view home;               // where keys of this level belong
 };
 
 const Level& scene_level() {
@@ -132,8 +132,7 @@ bool has_key(const Level& level, std::string_view key) {
 // distance 2 (that is not a complete rewrite of it); else the allowed keys.
 std::string unknown_key_hint(const std::string& key, const Level& level) {
     for (const Level* other : {&scene_level(), &sphere_level(), &light_level()}) {
-        if (other != &level && has_key(*other, key))
-            return fmt::format("'{}' belongs {}", key, other->home);
+        if (other != &level && has_key(*other, key)) return fmt::format("'{}' belongs {}", key, other->home);
     }
     const std::string lower = lowercase(key);
     for (const Alias& alias : level.aliases) {
@@ -179,9 +178,9 @@ public:
                 Frame& frame = frames_.back();
                 frame.key = parsed.get_ref<const std::string&>();
                 if (!frame.keys.insert(frame.key).second)
-                    throw InputError(source_, pending_pointer(),
-                                     fmt::format("duplicate key '{}'; a key may appear only once in an object",
-                                                 shown(frame.key)));
+                    throw InputError(
+                        source_, pending_pointer(),
+                        fmt::format("duplicate key '{}'; a key may appear only once in an object", shown(frame.key)));
                 break;
             }
             case Json::parse_event_t::value:
@@ -292,8 +291,7 @@ public:
     explicit SceneReader(const std::string& source) : source_(source) {}
 
     Scene read(const Json& root) const {
-        if (!root.is_object())
-            fail("", fmt::format("a scene must be a JSON object {{...}}, got {}", type_of(root)));
+        if (!root.is_object()) fail("", fmt::format("a scene must be a JSON object {{...}}, got {}", type_of(root)));
         check_keys(root, "", scene_level());
 
         Scene scene;
@@ -323,8 +321,7 @@ public:
         const Sphere& sphere = scene.spheres.front();
         const double outside = length_squared(sphere.S) - sphere.r * sphere.r;
         if (!std::isfinite(outside))
-            fail("/spheres/0",
-                 "the sphere is too far or too large to compute with doubles (|S|² − r² is not finite)");
+            fail("/spheres/0", "the sphere is too far or too large to compute with doubles (|S|² − r² is not finite)");
         if (outside <= 0)
             fail("/spheres/0",
                  "the eye (at the origin) is inside or on the sphere (|S|² − r² <= 0); the article's program does "
@@ -338,9 +335,13 @@ private:
     }
 
     static std::string type_of(const Json& value) {
-        return value.is_number() ? "a number" : value.is_object() ? "an object" : value.is_array() ? "an array"
-             : value.is_string() ? "a string" : value.is_boolean() ? "a boolean" : value.is_null() ? "null"
-             : value.type_name();
+        return value.is_number()    ? "a number"
+               : value.is_object()  ? "an object"
+               : value.is_array()   ? "an array"
+               : value.is_string()  ? "a string"
+               : value.is_boolean() ? "a boolean"
+               : value.is_null()    ? "null"
+                                    : value.type_name();
     }
 
     void check_keys(const Json& object, const std::string& pointer, const Level& level) const {
@@ -379,8 +380,10 @@ private:
         for (std::size_t k = 0; k < name.size();) {  // valid UTF-8: nlohmann checked it
             const auto lead = static_cast<unsigned char>(name[k]);
             std::size_t length = lead < 0x80u ? 1 : lead < 0xE0u ? 2 : lead < 0xF0u ? 3 : 4;
-            std::uint32_t code = length == 1 ? lead : length == 2 ? (lead & 0x1Fu) : length == 3 ? (lead & 0x0Fu)
-                                                                                                 : (lead & 0x07u);
+            std::uint32_t code = length == 1   ? lead
+                                 : length == 2 ? (lead & 0x1Fu)
+                                 : length == 3 ? (lead & 0x0Fu)
+                                               : (lead & 0x07u);
             for (std::size_t m = 1; m < length && k + m < name.size(); ++m)
                 code = (code << 6) | (static_cast<unsigned char>(name[k + m]) & 0x3Fu);
             if (code < 0x20u || (code >= 0x7Fu && code <= 0x9Fu))
@@ -401,8 +404,7 @@ private:
         const auto it = root.find(key);
         if (it == root.end())
             fail(pointer, fmt::format("missing required key '{}' (an array holding exactly one {})", key, noun));
-        if (!it->is_array())
-            fail(pointer, fmt::format("{} must be an array of {}s, got {}", key, noun, type_of(*it)));
+        if (!it->is_array()) fail(pointer, fmt::format("{} must be an array of {}s, got {}", key, noun, type_of(*it)));
         if (it->size() != 1)
             fail(pointer, fmt::format("this version traces exactly one {} (the article's), got {}", noun, it->size()));
         return *it;
@@ -411,15 +413,14 @@ private:
     const Json& require(const Json& object, const char* key, const std::string& pointer,
                         std::string_view meaning) const {
         const auto it = object.find(key);
-        if (it == object.end())
-            fail(child(pointer, key), fmt::format("missing required key '{}' ({})", key, meaning));
+        if (it == object.end()) fail(child(pointer, key), fmt::format("missing required key '{}' ({})", key, meaning));
         return *it;
     }
 
     Sphere read_sphere(const Json& value, const std::string& pointer) const {
         if (!value.is_object())
-            fail(pointer, fmt::format("a sphere must be an object {{\"S\": [x, y, z], \"r\": r}}, got {}",
-                                      type_of(value)));
+            fail(pointer,
+                 fmt::format("a sphere must be an object {{\"S\": [x, y, z], \"r\": r}}, got {}", type_of(value)));
         check_keys(value, pointer, sphere_level());
         Sphere sphere;
         sphere.S = read_vec3(require(value, "S", pointer, "the sphere's centre [x, y, z]"), child(pointer, "S"), "S");
@@ -431,8 +432,8 @@ private:
 
     Light read_light(const Json& value, const std::string& pointer) const {
         if (!value.is_object())
-            fail(pointer, fmt::format("a light must be an object {{\"L\": [x, y, z], \"I\": I}}, got {}",
-                                      type_of(value)));
+            fail(pointer,
+                 fmt::format("a light must be an object {{\"L\": [x, y, z], \"I\": I}}, got {}", type_of(value)));
         check_keys(value, pointer, light_level());
         Light light;
         light.L = read_vec3(require(value, "L", pointer, "the light's position [x, y, z]"), child(pointer, "L"), "L");
@@ -481,9 +482,9 @@ Scene load_scene_file(const std::string& path) {
         const std::size_t got = std::fread(buffer, 1, sizeof buffer, file.get());
         text.append(buffer, got);
         if (text.size() > max_scene_file_bytes)
-            throw InputError(path, "",
-                             fmt::format("the scene file is larger than the limit of {} bytes (1 MiB)",
-                                         max_scene_file_bytes));
+            throw InputError(
+                path, "",
+                fmt::format("the scene file is larger than the limit of {} bytes (1 MiB)", max_scene_file_bytes));
         if (got < sizeof buffer) {
             if (std::ferror(file.get())) throw InputError(path, "", "cannot read the scene file: " + errno_text(errno));
             break;

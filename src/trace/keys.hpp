@@ -36,9 +36,12 @@ enum class Branch {
 
 constexpr std::string_view branch_name(Branch branch) {
     switch (branch) {
-        case Branch::miss: return "miss";
-        case Branch::dark: return "dark";
-        case Branch::lit: return "lit";
+        case Branch::miss:
+            return "miss";
+        case Branch::dark:
+            return "dark";
+        case Branch::lit:
+            return "lit";
     }
     return "?";
 }

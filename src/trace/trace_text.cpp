@@ -53,8 +53,8 @@ std::string format_trace_text(const PixelTrace& trace, const Vocabulary& vocabul
         widths[3] = std::max(widths[3], display_width(row.formula));
     }
 
-    std::string out = fmt::format("pixel (i, j) = ({}, {}) of a {} x {} pane; scene \"{}\", z_E = {}\n", h.i, h.j,
-                                  h.w, h.w, h.scene_name, h.z_E);
+    std::string out = fmt::format("pixel (i, j) = ({}, {}) of a {} x {} pane; scene \"{}\", z_E = {}\n", h.i, h.j, h.w,
+                                  h.w, h.scene_name, h.z_E);
     out += fmt::format("numbers: {}, formula: {}, samples per pixel: {}\n\n", h.real, h.formula, h.spp);
     for (const Row& row : rows) {
         out += fmt::format("{:>{}}  {}  {}  {}  {}\n", row.step, widths[0], pad(row.key, widths[1]),

@@ -57,8 +57,7 @@ Vocabulary parse_vocabulary(std::string_view text, const std::string& source) {
         entry.formula_latex = required_string(item, "formula_latex", source, pointer);
         entry.pl = required_string(item, "pl", source, pointer);
         entry.en = required_string(item, "en", source, pointer);
-        if (vocabulary.find(entry.key))
-            throw InputError(source, pointer + "/key", "duplicate key '" + entry.key + "'");
+        if (vocabulary.find(entry.key)) throw InputError(source, pointer + "/key", "duplicate key '" + entry.key + "'");
         vocabulary.keys.push_back(std::move(entry));
     }
     const auto branches = document.find("branches");

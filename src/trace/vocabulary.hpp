@@ -10,13 +10,13 @@ namespace promyk {
 
 struct VocabularyEntry {
     std::string key;
-    std::string kind;     // "scalar", "point" or "vector"
-    std::string symbol;   // as the article writes it, in Unicode
+    std::string kind;    // "scalar", "point" or "vector"
+    std::string symbol;  // as the article writes it, in Unicode
     std::string latex;
     std::string program;  // the name the article's program uses
     std::string formula;  // plain Unicode text
     std::string formula_latex;
-    std::string pl, en;   // short descriptions
+    std::string pl, en;  // short descriptions
 };
 
 struct BranchEntry {

@@ -28,8 +28,7 @@ struct OutputError : std::runtime_error {
 
 // The user interrupted the work (SIGINT, SIGTERM): exit 128 + signal.
 struct Interrupted : std::runtime_error {
-    explicit Interrupted(int signal)
-        : std::runtime_error("interrupted"), signal_number(signal) {}
+    explicit Interrupted(int signal) : std::runtime_error("interrupted"), signal_number(signal) {}
     int signal_number;
 };
 
