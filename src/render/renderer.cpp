@@ -1,5 +1,7 @@
 #include "render/renderer.hpp"
 
+#include <sched.h>
+
 #include <algorithm>
 #include <atomic>
 #include <exception>
@@ -15,6 +17,10 @@ namespace promyk {
 
 int resolve_threads(int threads) {
     if (threads > 0) return threads;
+    // The cores this process may run on (taskset, a container's cpuset), not
+    // all the machine has, which is what hardware_concurrency() counts.
+    cpu_set_t allowed;
+    if (sched_getaffinity(0, sizeof allowed, &allowed) == 0) return std::max(1, CPU_COUNT(&allowed));
     return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
