@@ -14,12 +14,16 @@ std::function<int()> setup_bench(CLI::App& app) {
     auto speed = std::make_shared<bench::SpeedOptions>();
     CLI::App* speed_cmd = cmd->add_subcommand(
         "speed", "The engine against the article's literal program, all threads against one, trace writing");
-    speed_cmd->add_option("--w", speed->w, "Pane size for the image timings")->capture_default_str();
+    speed_cmd->add_option("--w", speed->w, "Pane size for the image timings")->type_name("N")->capture_default_str();
     speed_cmd->add_option("--repetitions", speed->repetitions, "Alternating rounds (medians are reported)")
+        ->type_name("N")
         ->capture_default_str();
     speed_cmd->add_option("--threads", speed->threads, "Threads for the threaded timings; 0 means all cores")
+        ->type_name("N")
         ->capture_default_str();
-    speed_cmd->add_option("--trace-w", speed->trace_w, "Pane size for the traces' throughput")->capture_default_str();
+    speed_cmd->add_option("--trace-w", speed->trace_w, "Pane size for the traces' throughput")
+        ->type_name("N")
+        ->capture_default_str();
     return [speed] {
         cli::check_w(speed->w);
         cli::check_w(speed->trace_w);

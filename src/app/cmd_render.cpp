@@ -89,17 +89,25 @@ int run_render(const RenderOptions& options) {
 std::function<int()> setup_render(CLI::App& app) {
     auto options = std::make_shared<RenderOptions>();
     CLI::App* cmd = app.add_subcommand("render", "Render the scene to an image (PNG or PGM), optionally with traces");
-    cmd->add_option("--scene", options->scene_file, "Scene file (JSON); default: the article's built-in scene");
+    cmd->add_option("--scene", options->scene_file, "Scene file (JSON); default: the article's built-in scene")
+        ->type_name("FILE");
     cmd->add_option("-o,--output", options->output, "Image file: .png, or .pgm for the plain format")
+        ->type_name("FILE")
         ->capture_default_str();
-    cmd->add_option("--w", options->w, "Pane size: w x w pixels")->capture_default_str();
-    cmd->add_option("--threads", options->threads, "Threads to render with; 0 means all cores")->capture_default_str();
+    cmd->add_option("--w", options->w, "Pane size: w x w pixels")->type_name("N")->capture_default_str();
+    cmd->add_option("--threads", options->threads, "Threads to render with; 0 means all cores")
+        ->type_name("N")
+        ->capture_default_str();
     cmd->add_option("--traces", options->traces_file,
-                    "Also write one JSON trace per pixel to FILE (JSON Lines, rows in order); all pixels unless "
-                    "--trace-pixel or --trace-region choose some");
-    cmd->add_option("--trace-pixel", options->trace_pixels, "Trace pixel I,J (repeatable)")->allow_extra_args(false);
+                    "Also write one JSON trace per pixel to FILE (JSON Lines, rows in order);\n"
+                    "all pixels unless --trace-pixel or --trace-region choose some")
+        ->type_name("FILE");
+    cmd->add_option("--trace-pixel", options->trace_pixels, "Trace pixel I,J (repeatable)")
+        ->type_name("I,J")
+        ->allow_extra_args(false);
     cmd->add_option("--trace-region", options->trace_regions,
                     "Trace the pixels of rectangle I0,J0,I1,J1, corners included (repeatable)")
+        ->type_name("I0,J0,I1,J1")
         ->allow_extra_args(false);
     cmd->footer("Intensity maps to 8-bit grey as round(clamp(v, 0, 1) * 255).");
     return [options] { return run_render(*options); };

@@ -43,9 +43,11 @@ std::function<int()> setup_trace(CLI::App& app) {
     auto options = std::make_shared<TraceOptions>();
     CLI::App* cmd = app.add_subcommand("trace", "Trace one pixel and print every quantity of the article's derivation");
     cmd->add_option("--pixel", options->pixel, "Pixel I,J: row i from the top, column j from the left")
+        ->type_name("I,J")
         ->capture_default_str();
-    cmd->add_option("--w", options->w, "Pane size: w x w pixels")->capture_default_str();
-    cmd->add_option("--scene", options->scene_file, "Scene file (JSON); default: the article's built-in scene");
+    cmd->add_option("--w", options->w, "Pane size: w x w pixels")->type_name("N")->capture_default_str();
+    cmd->add_option("--scene", options->scene_file, "Scene file (JSON); default: the article's built-in scene")
+        ->type_name("FILE");
     cmd->add_option("--format", options->format, "text: an aligned table; json: the trace as one JSON line")
         ->check(CLI::IsMember({"text", "json"}))
         ->capture_default_str();
