@@ -6,7 +6,6 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene.hpp"
 #include "trace/keys.hpp"
 #include "trace/recorder.hpp"
 
