@@ -9,6 +9,7 @@
 
 #include "app/cli_values.hpp"
 #include "app/commands.hpp"
+#include "app/common_options.hpp"
 #include "app/progress.hpp"
 #include "render/image_writer.hpp"
 #include "render/renderer.hpp"
@@ -89,12 +90,11 @@ int run_render(const RenderOptions& options) {
 std::function<int()> setup_render(CLI::App& app) {
     auto options = std::make_shared<RenderOptions>();
     CLI::App* cmd = app.add_subcommand("render", "Render the scene to an image (PNG or PGM), optionally with traces");
-    cmd->add_option("--scene", options->scene_file, "Scene file (JSON); default: the article's built-in scene")
-        ->type_name("FILE");
+    add_scene_option(*cmd, options->scene_file);
     cmd->add_option("-o,--output", options->output, "Image file: .png, or .pgm for the plain format")
         ->type_name("FILE")
         ->capture_default_str();
-    cmd->add_option("--w", options->w, "Pane size: w x w pixels")->type_name("N")->capture_default_str();
+    add_w_option(*cmd, options->w);
     cmd->add_option("--threads", options->threads, "Threads to render with; 0 means all cores")
         ->type_name("N")
         ->capture_default_str();

@@ -7,6 +7,7 @@
 
 #include "app/cli_values.hpp"
 #include "app/commands.hpp"
+#include "app/common_options.hpp"
 #include "render/trace_pixel.hpp"
 #include "trace/trace_text.hpp"
 
@@ -45,9 +46,8 @@ std::function<int()> setup_trace(CLI::App& app) {
     cmd->add_option("--pixel", options->pixel, "Pixel I,J: row i from the top, column j from the left")
         ->type_name("I,J")
         ->capture_default_str();
-    cmd->add_option("--w", options->w, "Pane size: w x w pixels")->type_name("N")->capture_default_str();
-    cmd->add_option("--scene", options->scene_file, "Scene file (JSON); default: the article's built-in scene")
-        ->type_name("FILE");
+    add_w_option(*cmd, options->w);
+    add_scene_option(*cmd, options->scene_file);
     cmd->add_option("--format", options->format, "text: an aligned table; json: the trace as one JSON line")
         ->check(CLI::IsMember({"text", "json"}))
         ->capture_default_str();

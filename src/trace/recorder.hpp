@@ -35,7 +35,6 @@ public:
     void operator()(Key key, double value) { steps_.push_back({key, value}); }
     void operator()(Key key, const Vec3d& value) { steps_.push_back({key, value}); }
 
-    const std::vector<Step>& steps() const { return steps_; }
     std::vector<Step> take_steps() { return std::move(steps_); }
 
 private:
