@@ -14,6 +14,10 @@ namespace promyk {
 // Returns the nearer root t of t^2|E|^2 - 2t E.S + |S|^2 - r^2 = 0, or no
 // value when the ray misses. Like the article, a tangent ray (delta = 0)
 // misses and t is not checked to be positive.
+//
+// When delta is not finite (the coefficients overflowed), nothing can be
+// decided: the returned t is then NaN or infinite, and the caller reports the
+// pixel as non-finite. A delta of -inf must not pass for a miss.
 template <class Real, class Recorder>
 std::optional<Real> intersect_sphere_article(const Vec3<Real>& E, const Vec3<Real>& S, Real r, Recorder& record) {
     // Compute the quadratic's coefficients, named as in the program.
@@ -27,7 +31,8 @@ std::optional<Real> intersect_sphere_article(const Vec3<Real>& E, const Vec3<Rea
     // Compute the program's delta: a quarter of formula (2)'s discriminant.
     const Real delta = C * C - EE * (SS - r * r);
     record(Key::delta, delta);
-    if (delta <= 0) return std::nullopt;
+    using std::isinf;
+    if (delta <= 0 && !isinf(delta)) return std::nullopt;
 
     // Compute the nearer root: the minus sign, since |E|^2 > 0.
     using std::sqrt;

@@ -24,7 +24,7 @@ int resolve_threads(int threads) {
     return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
-void render_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out) {
+RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out) {
     // A local copy: stores through a uint8_t* may alias anything, so reading the
     // scene through a reference would reload it, and keep |S|^2 from being
     // hoisted, on every pixel.
@@ -33,7 +33,19 @@ void render_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* o
     const ArticleWorld<double> local = world;
     const double y_E = pane_y<double>(i, w);
     NullRecorder none;
-    for (int j = 0; j < w; ++j) out[j] = to_byte(trace_ray(local, {pane_x<double>(j, w), y_E, local.z_E}, none).I_P);
+    RowCounts counts;
+    for (int j = 0; j < w; ++j) {
+        const PixelResult<double> pixel = trace_ray(local, {pane_x<double>(j, w), y_E, local.z_E}, none);
+        out[j] = to_byte(pixel.I_P);
+        ++counts.branches[static_cast<int>(pixel.branch)];
+    }
+    // Rare: looked for only when the row has one, so the loop stays lean.
+    if (counts.branches[static_cast<int>(Branch::non_finite)] != 0) {
+        for (int j = 0; j < w && counts.first_non_finite_j < 0; ++j)
+            if (trace_ray(local, {pane_x<double>(j, w), y_E, local.z_E}, none).branch == Branch::non_finite)
+                counts.first_non_finite_j = j;
+    }
+    return counts;
 }
 
 namespace {
@@ -63,6 +75,7 @@ struct Band {
     int count = 0;
     std::vector<std::uint8_t> pixels;
     std::vector<std::string> traces;
+    std::vector<RowCounts> counts;
     std::atomic<int> next_row{0};
 
     void start(int first, int rows_per_band, int w) {
@@ -84,8 +97,9 @@ public:
         try {
             for (int k = band.next_row++; k < band.count && !stop_ && !interrupt_signal(); k = band.next_row++) {
                 const int i = band.first_row + k;
-                render_row(world_, w, i, &band.pixels[static_cast<std::size_t>(k) * w]);
+                band.counts[k] = render_row(world_, w, i, &band.pixels[static_cast<std::size_t>(k) * w]);
                 if (traced_.row_has_any(i)) trace_row(world_, header_, traced_, i, band.traces[k]);
+                rows_done_.fetch_add(1, std::memory_order_relaxed);
             }
         } catch (...) {
             if (!stop_.exchange(true)) failure_ = std::current_exception();
@@ -93,6 +107,7 @@ public:
     }
 
     void stop() { stop_ = true; }
+    long long rows_done() const { return rows_done_.load(std::memory_order_relaxed); }
 
     // After the threads are joined: rethrows a failure, or Interrupted.
     void check() const {
@@ -105,6 +120,7 @@ private:
     const TraceHeader& header_;
     const PixelSelection& traced_;
     std::atomic<bool> stop_{false};
+    std::atomic<long long> rows_done_{0};
     std::exception_ptr failure_;
 };
 
@@ -131,7 +147,31 @@ private:
     std::vector<std::thread> threads_;
 };
 
-void deliver(Band& band, int w, RenderSink& sink) {
+// Adds a delivered band's counts; rows arrive in order, so the first
+// non-finite pixel found is the first in row order.
+void count(const Band& band, int w, RenderStats& stats) {
+    for (int k = 0; k < band.count; ++k) {
+        const RowCounts& row = band.counts[k];
+        for (int b = 0; b < 4; ++b) stats.branches[b] += row.branches[b];
+        if (row.first_non_finite_j >= 0 && stats.first_non_finite_i < 0) {
+            stats.first_non_finite_i = band.first_row + k;
+            stats.first_non_finite_j = row.first_non_finite_j;
+        }
+    }
+    // The article's scene: one primary ray and one sphere test per pixel.
+    stats.primary_rays += static_cast<long long>(band.count) * w;
+    stats.sphere_tests += static_cast<long long>(band.count) * w;
+}
+
+// Writes rows_computed when render() leaves, by return or by exception.
+struct RowsComputed {
+    const BandWork& work;
+    RenderStats& stats;
+    ~RowsComputed() { stats.rows_computed = work.rows_done(); }
+};
+
+void deliver(Band& band, int w, RenderSink& sink, RenderStats& stats) {
+    count(band, w, stats);
     sink.image_rows(band.pixels.data(), band.count);
     for (int k = 0; k < band.count; ++k) {
         if (band.traces[k].empty()) continue;
@@ -143,7 +183,11 @@ void deliver(Band& band, int w, RenderSink& sink) {
 
 }  // namespace
 
-void render(const Scene& scene, const RenderSettings& settings, const PixelSelection& traced, RenderSink& sink) {
+void render(const Scene& scene, const RenderSettings& settings, const PixelSelection& traced, RenderSink& sink,
+            RenderStats* stats) {
+    RenderStats local_stats;
+    RenderStats& out_stats = stats != nullptr ? *stats : local_stats;
+    out_stats = RenderStats{};
     const ArticleWorld<double> world = article_world(scene);
     const int w = settings.w;
     const int threads = std::min(resolve_threads(settings.threads), w);
@@ -156,8 +200,10 @@ void render(const Scene& scene, const RenderSettings& settings, const PixelSelec
     for (Band& band : bands) {
         band.pixels.resize(static_cast<std::size_t>(rows_per_band) * w);
         band.traces.resize(static_cast<std::size_t>(rows_per_band));
+        band.counts.resize(static_cast<std::size_t>(rows_per_band));
     }
     BandWork work(world, header, traced);
+    const RowsComputed rows_computed{work, out_stats};
     Helpers helpers(work);
 
     bands[0].start(0, rows_per_band, w);
@@ -173,7 +219,7 @@ void render(const Scene& scene, const RenderSettings& settings, const PixelSelec
             next.start(done.first_row + done.count, rows_per_band, w);
             helpers.start(threads - 1, next);
         }
-        deliver(done, w, sink);
+        deliver(done, w, sink, out_stats);
         if (!more) break;
         work(next);
         helpers.join();

@@ -23,6 +23,23 @@ public:
     virtual void progress(int rows_done, int rows_total) { (void)rows_done, (void)rows_total; }
 };
 
+// What a render did, counted row by row (PRODUCT.md: statistics on request).
+struct RenderStats {
+    long long rows_computed = 0;  // rows whose pixels were computed (also when interrupted)
+    long long primary_rays = 0;   // one per pixel: the ray OE through the pixel's centre
+    long long sphere_tests = 0;   // ray-sphere intersection tests
+    long long branches[4] = {};   // pixels per Branch: miss, dark, lit, non_finite
+    int first_non_finite_i = -1, first_non_finite_j = -1;  // in row order; -1 if none
+
+    long long count(Branch branch) const { return branches[static_cast<int>(branch)]; }
+};
+
+// One row's pixels per branch, and its first non-finite pixel's column.
+struct RowCounts {
+    int branches[4] = {};
+    int first_non_finite_j = -1;
+};
+
 struct RenderSettings {
     int w = 512;
     int threads = 0;  // 0: all cores
@@ -32,10 +49,13 @@ struct RenderSettings {
 int resolve_threads(int threads);
 
 // Renders row i of the pane into out[0 .. w): the article's pixel loop body.
-void render_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out);
+RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out);
 
 // Renders the scene; traces the selected pixels. Throws InputError for a scene
-// the engine cannot trace and Interrupted when SIGINT or SIGTERM arrives.
-void render(const Scene& scene, const RenderSettings& settings, const PixelSelection& traced, RenderSink& sink);
+// the engine cannot trace and Interrupted when a signal asks to stop. `stats`,
+// when given, is filled in as the rows are delivered (rows_computed also on
+// an interruption).
+void render(const Scene& scene, const RenderSettings& settings, const PixelSelection& traced, RenderSink& sink,
+            RenderStats* stats = nullptr);
 
 }  // namespace promyk

@@ -3,12 +3,15 @@
 // rendering calls it with a NullRecorder, tracing with a RecordingRecorder.
 #pragma once
 
+#include <cmath>
+#include <limits>
+
 #include "geometry/hit.hpp"
 #include "geometry/sphere_article.hpp"
 #include "math/vec3.hpp"
-#include "render/lambert.hpp"
 #include "render/pane.hpp"
 #include "scene/scene.hpp"
+#include "shading/lambert.hpp"
 #include "trace/keys.hpp"
 
 namespace promyk {
@@ -31,7 +34,7 @@ ArticleWorld<double> article_world(const Scene& scene);
 template <class Real>
 struct PixelResult {
     Real I_P;       // the pixel's intensity
-    Branch branch;  // miss, dark or lit
+    Branch branch;  // miss, dark, lit or non_finite
 };
 
 // The article's intensity(x_E, y_E, z_E).
@@ -40,6 +43,9 @@ PixelResult<Real> trace_ray(const ArticleWorld<Real>& world, const Vec3<Real>& E
     record(Key::E, E);
     const auto t = intersect_sphere_article(E, world.S, world.r, record);
     if (!t) return {world.background, Branch::miss};
+    // A root that overflowed, or a delta that was not finite, decides nothing.
+    using std::isfinite;
+    if (!isfinite(*t)) return {std::numeric_limits<Real>::quiet_NaN(), Branch::non_finite};
     const Hit<Real> hit = describe_sphere_hit(*t, E, world.S, record);
     const Shade<Real> shade = shade_lambert(hit.P, hit.N, world.r, world.L, world.I, record);
     return {shade.I_P, shade.branch};

@@ -32,6 +32,9 @@ enum class Branch {
     miss,  // delta <= 0: the ray misses (a tangent ray misses too, as in the article)
     dark,  // D <= 0: the hit point is on the sphere's dark side
     lit,   // D > 0: lit, I_P = I D / (r sqrt(K))
+    // A value that decides the branch (delta, |K|^2, D) or the result is NaN
+    // or infinite: no comparison with it may pass for a miss, dark or lit.
+    non_finite,
 };
 
 constexpr std::string_view branch_name(Branch branch) {
@@ -42,6 +45,8 @@ constexpr std::string_view branch_name(Branch branch) {
             return "dark";
         case Branch::lit:
             return "lit";
+        case Branch::non_finite:
+            return "non-finite";
     }
     return "?";
 }

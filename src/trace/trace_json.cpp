@@ -1,4 +1,5 @@
 #include <iterator>
+#include <type_traits>
 
 #include <fmt/format.h>
 
@@ -54,6 +55,12 @@ void append_header(std::string& out, const TraceHeader& h) {
     append_string(out, h.scene_name);
     out += ",\"scene_hash\":";
     append_string(out, h.scene_hash);
+    out += ",\"scene_file\":";
+    append_string(out, h.scene_file);
+    if (!h.scene_content.empty()) {
+        out += ",\"scene_content\":";
+        out += h.scene_content;  // already JSON
+    }
     fmt::format_to(std::back_inserter(out), ",\"w\":{},\"z_E\":", h.w);
     append_number(out, h.z_E);
     fmt::format_to(std::back_inserter(out), ",\"pixel\":{{\"i\":{},\"j\":{}}},\"numeric\":{{\"real\":", h.i, h.j);
@@ -82,7 +89,14 @@ void append_trace_json(std::string& out, const PixelTrace& trace) {
         std::visit([&out](const auto& value) { append_value(out, value); }, step.value);
         out += '}';
     }
-    out += "],\"branch\":";
+    out += ']';
+    if (trace.first_non_finite) {
+        const std::size_t k = *trace.first_non_finite;
+        fmt::format_to(std::back_inserter(out), ",\"first_non_finite\":{{\"index\":{},\"key\":", k);
+        append_string(out, k < trace.steps.size() ? key_name(trace.steps[k].key) : "");
+        out += '}';
+    }
+    out += ",\"branch\":";
     append_string(out, branch_name(trace.branch));
     out += ",\"result\":";
     append_number(out, trace.result);
@@ -90,7 +104,22 @@ void append_trace_json(std::string& out, const PixelTrace& trace) {
         out += ",\"result_text\":";
         append_string(out, non_finite_text(trace.result));
     }
-    out += '}';
+    fmt::format_to(std::back_inserter(out), ",\"grey\":{}}}", trace.grey);
+}
+
+std::optional<std::size_t> first_non_finite_step(const std::vector<Step>& steps) {
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+        const bool ok = std::visit(
+            [](const auto& v) {
+                if constexpr (std::is_same_v<std::decay_t<decltype(v)>, double>)
+                    return std::isfinite(v);
+                else
+                    return finite(v);
+            },
+            steps[k].value);
+        if (!ok) return k;
+    }
+    return std::nullopt;
 }
 
 }  // namespace promyk

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 
 #include "math/vec3.hpp"
 #include "trace/keys.hpp"
@@ -12,12 +13,14 @@ namespace promyk {
 template <class Real>
 struct Shade {
     Real I_P;       // intensity reaching the eye
-    Branch branch;  // dark or lit
+    Branch branch;  // dark, lit, or non_finite
 };
 
 template <class Real, class Recorder>
 Shade<Real> shade_lambert(const Vec3<Real>& P, const Vec3<Real>& N, Real r, const Vec3<Real>& L, Real I,
                           Recorder& record) {
+    using std::isfinite;
+    using std::sqrt;
     // Compute the direction to the light, K = L - P, and its squared length.
     const Vec3<Real> K = L - P;
     record(Key::K, K);
@@ -26,9 +29,13 @@ Shade<Real> shade_lambert(const Vec3<Real>& P, const Vec3<Real>& N, Real r, cons
     // Compute D = N.K: |N||K| cos(alpha), negative on the dark side.
     const Real D = dot(N, K);
     record(Key::D, D);
+    // An overflow anywhere since E shows in |K|^2 or D (each sums squares or
+    // products of every earlier quantity); a NaN must not decide dark or lit.
+    if (!isfinite(KK) || !isfinite(D)) return {std::numeric_limits<Real>::quiet_NaN(), Branch::non_finite};
     if (D <= 0) return {Real(0), Branch::dark};
-    using std::sqrt;
-    return {I * D / (r * sqrt(KK)), Branch::lit};
+    const Real I_P = I * D / (r * sqrt(KK));
+    if (!isfinite(I_P)) return {I_P, Branch::non_finite};
+    return {I_P, Branch::lit};
 }
 
 }  // namespace promyk

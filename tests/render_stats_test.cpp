@@ -1,0 +1,100 @@
+// What render() counts, and that a signal stops the work inside a band.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <cstring>
+#include <limits>
+
+#include "render/renderer.hpp"
+#include "render/trace_pixel.hpp"
+#include "util/errors.hpp"
+#include "util/interrupt.hpp"
+
+using namespace promyk;
+
+namespace {
+
+struct NullSink final : RenderSink {
+    int rows = 0;
+    void image_rows(const std::uint8_t*, int count) override { rows += count; }
+};
+
+}  // namespace
+
+TEST_CASE("render counts pixels by branch, rays and sphere tests", "[render-stats]") {
+    // Counts of the article's program run by hand (Python floats, see
+    // tests/reference): w = 8: 32 miss, 10 dark, 22 lit; w = 64: 2380, 342, 1374.
+    struct Expected {
+        int w;
+        long long miss, dark, lit;
+    };
+    for (const Expected e : {Expected{8, 32, 10, 22}, Expected{64, 2380, 342, 1374}}) {
+        for (const int threads : {1, 2}) {
+            NullSink sink;
+            RenderStats stats;
+            render(article_scene(), {e.w, threads}, PixelSelection{}, sink, &stats);
+            INFO("w = " << e.w << ", threads = " << threads);
+            CHECK(stats.count(Branch::miss) == e.miss);
+            CHECK(stats.count(Branch::dark) == e.dark);
+            CHECK(stats.count(Branch::lit) == e.lit);
+            CHECK(stats.count(Branch::non_finite) == 0);
+            CHECK(stats.first_non_finite_i == -1);
+            CHECK(stats.primary_rays == static_cast<long long>(e.w) * e.w);
+            CHECK(stats.sphere_tests == static_cast<long long>(e.w) * e.w);
+            CHECK(stats.rows_computed == e.w);
+            CHECK(sink.rows == e.w);
+        }
+    }
+}
+
+TEST_CASE("render reports the first non-finite pixel in row order", "[render-stats]") {
+    Scene scene = article_scene();
+    scene.lights.front().I = std::numeric_limits<double>::max();  // I·D overflows where D > 1
+    NullSink sink;
+    RenderStats stats;
+    render(scene, {8, 2}, PixelSelection{}, sink, &stats);
+    long long traced_non_finite = 0;
+    int first_i = -1, first_j = -1;
+    for (int i = 0; i < 8; ++i)
+        for (int j = 0; j < 8; ++j)
+            if (trace_pixel(scene, 8, i, j).branch == Branch::non_finite) {
+                ++traced_non_finite;
+                if (first_i < 0) first_i = i, first_j = j;
+            }
+    CHECK(stats.count(Branch::non_finite) == traced_non_finite);
+    CHECK(traced_non_finite > 0);
+    CHECK(stats.count(Branch::lit) + stats.count(Branch::non_finite) == 22);  // the lit pixels of w = 8
+    CHECK(stats.count(Branch::miss) == 32);
+    CHECK(stats.first_non_finite_i == first_i);
+    CHECK(stats.first_non_finite_j == first_j);
+}
+
+TEST_CASE("a signal stops the threads inside a band, before its rows are computed", "[render-stats]") {
+    // In a child process, since the signal flag stays set: a SIGINT already
+    // received when render() starts must stop it before it computes a row of
+    // the first band (w = 64 is one band). The child's exit code is the rows
+    // computed, or 100 + something for an unexpected outcome.
+    const pid_t child = fork();
+    REQUIRE(child >= 0);
+    if (child == 0) {
+        install_interrupt_handlers();
+        std::raise(SIGINT);
+        NullSink sink;
+        RenderStats stats;
+        try {
+            render(article_scene(), {64, 1}, PixelSelection{}, sink, &stats);
+            _exit(101);
+        } catch (const Interrupted& interrupted) {
+            _exit(interrupted.signal_number == SIGINT ? static_cast<int>(stats.rows_computed) : 102);
+        } catch (...) {
+            _exit(103);
+        }
+    }
+    int status = 0;
+    REQUIRE(waitpid(child, &status, 0) == child);
+    REQUIRE(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 0);
+}
