@@ -1,6 +1,9 @@
 #include "app/cli_values.hpp"
 
+#include <cctype>
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 
 #include <fmt/format.h>
@@ -12,34 +15,103 @@ namespace promyk::cli {
 
 namespace {
 
-// Splits "a,b,..." into exactly `count` whole numbers, or throws.
-std::vector<int> parse_integers(const std::string& text, std::size_t count, const std::string& option,
-                                const char* form) {
-    std::vector<int> values;
-    const char* p = text.c_str();
-    while (true) {
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+// -?(0|[1-9][0-9]*): what a person means by a whole number, and nothing a C
+// library would read otherwise (strtol's base 0 takes 010 as eight).
+bool plain_decimal(const std::string& text) {
+    std::size_t k = text.size() > 0 && text[0] == '-' ? 1 : 0;
+    if (k == text.size()) return false;
+    if (text[k] == '0') return k + 1 == text.size();
+    for (; k < text.size(); ++k)
+        if (!is_digit(text[k])) return false;
+    return true;
+}
+
+std::string trim(const std::string& text) {
+    const auto first = text.find_first_not_of(" \t\r\n");
+    if (first == std::string::npos) return "";
+    const auto last = text.find_last_not_of(" \t\r\n");
+    return text.substr(first, last - first + 1);
+}
+
+// What the user probably meant, written plainly: "010" -> "10",
+// "0x10" -> "16", " 16" -> "16", "1e3" -> "1000"; empty when nothing fits.
+std::string plain_form(const std::string& typed) {
+    const std::string text = trim(typed);
+    if (text.empty()) return "";
+    const bool negative = text[0] == '-';
+    const std::string body = text.substr(negative || text[0] == '+' ? 1 : 0);
+    long long value = 0;
+    if (body.size() > 2 && body[0] == '0' && (body[1] == 'x' || body[1] == 'X')) {
         char* end = nullptr;
         errno = 0;
-        const long value = std::strtol(p, &end, 10);
-        const bool digits = end != p && (*p == '-' || *p == '+' || (*p >= '0' && *p <= '9'));
-        if (!digits || errno == ERANGE || value < -1000000000L || value > 1000000000L)
-            throw UsageError(fmt::format("{} expects {} (whole numbers), got '{}'", option, form, text));
-        values.push_back(static_cast<int>(value));
-        if (*end == '\0') break;
-        if (*end != ',') throw UsageError(fmt::format("{} expects {} (whole numbers), got '{}'", option, form, text));
-        p = end + 1;
+        value = std::strtoll(body.c_str() + 2, &end, 16);
+        if (*end != '\0' || errno != 0) return "";
+    } else if (!body.empty() && std::all_of(body.begin(), body.end(), is_digit)) {
+        const auto nonzero = body.find_first_not_of('0');
+        const std::string digits = nonzero == std::string::npos ? "0" : body.substr(nonzero);
+        if (digits.size() > 18) return "";
+        value = std::stoll(digits);
+    } else {
+        char* end = nullptr;
+        errno = 0;
+        const double number = std::strtod(body.c_str(), &end);
+        if (*end != '\0' || errno != 0 || !std::isfinite(number) || number != std::floor(number) ||
+            std::fabs(number) > 1e18)
+            return "";
+        value = static_cast<long long>(number);
     }
-    if (values.size() != count) throw UsageError(fmt::format("{} expects {}, got '{}'", option, form, text));
+    return fmt::format("{}{}", negative && value != 0 ? "-" : "", value);
+}
+
+// Splits "a,b,..." (optionally in parentheses, spaces allowed around each
+// number) into exactly `count` plain whole numbers, or throws.
+std::vector<int> parse_integers(const std::string& typed, std::size_t count, const std::string& option,
+                                const char* form) {
+    std::string text = trim(typed);
+    if (text.size() >= 2 && text.front() == '(' && text.back() == ')') text = text.substr(1, text.size() - 2);
+    std::vector<int> values;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t comma = text.find(',', start);
+        const std::string part = trim(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+        if (!plain_decimal(part) || part.size() > 10)
+            throw UsageError(fmt::format("{} expects {} (whole numbers in plain decimal), got '{}'", option, form, typed));
+        values.push_back(std::stoi(part));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    if (values.size() != count) throw UsageError(fmt::format("{} expects {}, got '{}'", option, form, typed));
     return values;
 }
 
 void check_inside(int i, int j, int w, const std::string& option) {
     if (i < 0 || i >= w || j < 0 || j >= w)
-        throw UsageError(
-            fmt::format("{} ({}, {}) is outside the {} x {} pane: i and j go from 0 to {}", option, i, j, w, w, w - 1));
+        throw UsageError(fmt::format("{} ({}, {}) is outside the {} × {} pane: i and j go from 0 to {}", option, i, j,
+                                     w, w, w - 1));
 }
 
 }  // namespace
+
+std::optional<std::string> whole_number_problem(const std::string& text, long min, long max) {
+    const std::string range = fmt::format("a whole number from {} to {}", min, max);
+    if (text.empty()) return fmt::format("needs a value: {}", range);
+    if (!plain_decimal(text)) {
+        const std::string plain = plain_form(text);
+        return fmt::format("expects {} written in plain decimal, got '{}'{}", range, text,
+                           plain.empty() ? "" : fmt::format("; write {}", plain));
+    }
+    if (text.size() > 12 || std::stol(text) < min || std::stol(text) > max)
+        return fmt::format("expects {}, got {}", range, text);
+    return std::nullopt;
+}
+
+int parse_whole_number(const std::string& text, const std::string& option, long min, long max) {
+    if (const auto problem = whole_number_problem(text, min, max))
+        throw UsageError(fmt::format("{} {}", option, *problem));
+    return static_cast<int>(std::stol(text));
+}
 
 Pixel parse_pixel(const std::string& text, const std::string& option, int w) {
     const std::vector<int> v = parse_integers(text, 2, option, "I,J (row from the top, column from the left)");
@@ -54,15 +126,6 @@ PixelRegion parse_region(const std::string& text, const std::string& option, int
     if (v[0] > v[2] || v[1] > v[3])
         throw UsageError(fmt::format("{} '{}': the first corner must be above and left of the second", option, text));
     return {v[0], v[1], v[2], v[3]};
-}
-
-void check_w(int w) {
-    if (w < 1 || w > max_w) throw UsageError(fmt::format("--w must be between 1 and {}, got {}", max_w, w));
-}
-
-void check_threads(int threads) {
-    if (threads < 0 || threads > max_threads)
-        throw UsageError(fmt::format("--threads must be between 0 (all cores) and {}, got {}", max_threads, threads));
 }
 
 Scene load_scene_option(const std::string& path) { return path.empty() ? article_scene() : load_scene_file(path); }

@@ -1,7 +1,10 @@
-// Parsing and checking the values users type on the command line. Every
-// failure is a UsageError (exit 2) whose message names the option.
+// Parsing and checking the values users type on the command line. Numbers
+// are plain decimal (no octal 010, no hexadecimal 0x10, no spaces, no
+// exponent); every failure is a UsageError (exit 2) whose message names the
+// option and, where one exists, the plain form of what was meant.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,24 +16,26 @@ namespace promyk::cli {
 // The largest pane side accepted: beyond it a render would take hours.
 inline constexpr int max_w = 32768;
 
+// The most threads accepted: far more than any machine promyk runs on has cores.
+inline constexpr int max_threads = 1024;
+
 struct Pixel {
     int i, j;  // row from the top, column from the left
 };
 
-// "I,J" -> pixel; checks 0 <= i, j < w.
+// The message for a text that is not a whole number from min to max in plain
+// decimal, or nothing when it is one. `option` names the option ("--w").
+std::optional<std::string> whole_number_problem(const std::string& text, long min, long max);
+
+// `text` as a whole number from min to max; UsageError naming `option` otherwise.
+int parse_whole_number(const std::string& text, const std::string& option, long min, long max);
+
+// "I,J" -> pixel; also "I, J" and "(I, J)" as `promyk trace` prints it.
+// Checks 0 <= i, j < w.
 Pixel parse_pixel(const std::string& text, const std::string& option, int w);
 
 // "I0,J0,I1,J1" -> region (corners inclusive), inside the pane, I0 <= I1, J0 <= J1.
 PixelRegion parse_region(const std::string& text, const std::string& option, int w);
-
-// Checks 1 <= w <= max_w.
-void check_w(int w);
-
-// The most threads accepted: far more than any machine promyk runs on has cores.
-inline constexpr int max_threads = 1024;
-
-// Checks 0 (all cores) <= threads <= max_threads.
-void check_threads(int threads);
 
 // The built-in article scene, or the scene file when a path is given.
 Scene load_scene_option(const std::string& path);

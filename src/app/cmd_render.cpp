@@ -62,8 +62,6 @@ PixelSelection traced_pixels(const RenderOptions& options) {
 }
 
 int run_render(const RenderOptions& options) {
-    cli::check_w(options.w);
-    cli::check_threads(options.threads);
     if (!options.traces_file.empty() && options.traces_file == options.output)
         throw UsageError("--traces and -o name the same file");
     const PixelSelection traced = traced_pixels(options);
@@ -93,15 +91,15 @@ std::function<int()> setup_render(CLI::App& app) {
     add_scene_option(*cmd, options->scene_file);
     cmd->add_option("-o,--output", options->output, "Image file: .png, or .pgm for the plain format")
         ->type_name("FILE")
+        ->check(non_empty())
         ->capture_default_str();
     add_w_option(*cmd, options->w);
-    cmd->add_option("--threads", options->threads, "Threads to render with; 0 means all cores")
-        ->type_name("N")
-        ->capture_default_str();
+    add_threads_option(*cmd, options->threads);
     cmd->add_option("--traces", options->traces_file,
                     "Also write one JSON trace per pixel to FILE (JSON Lines, rows in order);\n"
                     "all pixels unless --trace-pixel or --trace-region choose some")
-        ->type_name("FILE");
+        ->type_name("FILE")
+        ->check(non_empty());
     cmd->add_option("--trace-pixel", options->trace_pixels, "Trace pixel I,J (repeatable)")
         ->type_name("I,J")
         ->allow_extra_args(false);

@@ -1,14 +1,39 @@
 #include "app/common_options.hpp"
 
+#include "app/cli_values.hpp"
+
 namespace promyk::app {
+
+CLI::Validator whole_number(long min, long max) {
+    return CLI::Validator(
+        [min, max](std::string& text) { return cli::whole_number_problem(text, min, max).value_or(std::string()); },
+        "", "");
+}
+
+CLI::Validator non_empty() {
+    return CLI::Validator(
+        [](std::string& text) { return text.empty() ? std::string("needs a value; got an empty one") : std::string(); },
+        "", "");
+}
 
 CLI::Option* add_scene_option(CLI::App& cmd, std::string& scene_file) {
     return cmd.add_option("--scene", scene_file, "Scene file (JSON); default: the article's built-in scene")
-        ->type_name("FILE");
+        ->type_name("FILE")
+        ->check(non_empty());
 }
 
 CLI::Option* add_w_option(CLI::App& cmd, int& w) {
-    return cmd.add_option("--w", w, "Pane size: w x w pixels")->type_name("N")->capture_default_str();
+    return cmd.add_option("--w", w, "Pane size: w × w pixels")
+        ->type_name("N")
+        ->check(whole_number(1, cli::max_w))
+        ->capture_default_str();
+}
+
+CLI::Option* add_threads_option(CLI::App& cmd, int& threads) {
+    return cmd.add_option("--threads", threads, "Threads to use; 0 means all cores")
+        ->type_name("N")
+        ->check(whole_number(0, cli::max_threads))
+        ->capture_default_str();
 }
 
 }  // namespace promyk::app

@@ -1,5 +1,5 @@
 // Options several subcommands share, declared once so their names, value
-// names and help read the same in every command.
+// names, checks and help read the same in every command.
 #pragma once
 
 #include <string>
@@ -8,10 +8,20 @@
 
 namespace promyk::app {
 
-// --scene FILE: a scene file; empty means the article's built-in scene.
+// A check for a whole number from min to max in plain decimal; its message
+// names the range and the plain form of what was typed ("write 10").
+CLI::Validator whole_number(long min, long max);
+
+// A check that refuses an empty value (`--scene ''` must not mean "none").
+CLI::Validator non_empty();
+
+// --scene FILE: a scene file; not given means the article's built-in scene.
 CLI::Option* add_scene_option(CLI::App& cmd, std::string& scene_file);
 
 // --w N: the pane's size in pixels, with the command's default shown.
 CLI::Option* add_w_option(CLI::App& cmd, int& w);
+
+// --threads N: 0 (the default) means all the cores this process may use.
+CLI::Option* add_threads_option(CLI::App& cmd, int& threads);
 
 }  // namespace promyk::app

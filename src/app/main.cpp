@@ -2,7 +2,11 @@
 // main only wires the subcommands and maps errors to exit codes:
 // 0 success, 2 bad command line, 3 bad input file, 4 output not written,
 // 128 + signal after SIGINT or SIGTERM; 70 an internal error (a bug).
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <string>
+#include <vector>
 #include <exception>
 #include <functional>
 #include <new>
@@ -11,12 +15,28 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.hpp"
+#include "util/edit_distance.hpp"
 #include "util/errors.hpp"
 #include "util/interrupt.hpp"
 
 namespace {
 
-void report(const char* what) { fmt::print(stderr, "promyk: {}\n", what); }
+void report(const std::string& what) { fmt::print(stderr, "promyk: {}\n", what); }
+
+// "unknown command 'Render'; did you mean 'render'? ..."
+std::string unknown_command_message(const std::string& typed, const std::vector<std::string>& commands) {
+    std::string lower = typed;
+    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    std::string list;
+    for (const std::string& command : commands) list += (list.empty() ? "" : ", ") + command;
+    for (const std::string& command : commands) {
+        // the same but for case, or a letter or two off (rendr, trcae)
+        if (promyk::edit_distance(lower, command) <= 2)
+            return fmt::format("unknown command '{}'; did you mean '{}'? The commands are {}; see promyk --help",
+                               typed, command, list);
+    }
+    return fmt::format("unknown command '{}'; the commands are {}; see promyk --help", typed, list);
+}
 
 std::string where_of(const promyk::InputError& error) {
     if (error.where.empty()) return error.file;
@@ -29,7 +49,7 @@ int main(int argc, char** argv) {
     promyk::install_interrupt_handlers();
     CLI::App app{
         "promyk: an educational ray tracer that shows its work.\n"
-        "It follows the Delta article \"Śledzenie promieni\": an eye at the origin, a pane of w x w pixels\n"
+        "It follows the Delta article \"Śledzenie promieni\": an eye at the origin, a pane of w × w pixels\n"
         "at z = z_E, a sphere, a point light, Lambert shading. Every number behind a pixel can be shown.",
         "promyk"};
     app.set_version_flag("--version", fmt::format("promyk {}", PROMYK_VERSION));
@@ -39,20 +59,43 @@ int main(int argc, char** argv) {
         "Exit codes: 0 success, 2 bad command line, 3 bad input file, 4 output not written,\n"
         "130/143 interrupted (nothing half-written), 70 internal error.");
 
-    std::function<int()> run;
     const auto render = promyk::app::setup_render(app);
     const auto trace = promyk::app::setup_trace(app);
     const auto bench = promyk::app::setup_bench(app);
+    const std::vector<std::string> commands = {"render", "trace", "bench"};
+
+    // The command is the first argument that is not an option; check it
+    // here, so that a typo gets a suggestion and `promyk help` gets help.
+    std::vector<std::string> args(argv + 1, argv + argc);
+    if (!args.empty() && args[0] == "help") {
+        // promyk help [COMMAND ...]: the same as promyk [COMMAND ...] --help.
+        args.erase(args.begin());
+        args.push_back("--help");
+    }
+    if (!args.empty() && !args[0].empty() && args[0][0] != '-' &&
+        std::find(commands.begin(), commands.end(), args[0]) == commands.end()) {
+        report(unknown_command_message(args[0], commands));
+        return 2;
+    }
+    if (args.empty()) {
+        fmt::print(stderr, "{}", app.help());
+        report("a command is required: render, trace or bench");
+        return 2;
+    }
+    const std::string name = !args[0].empty() && args[0][0] != '-' ? args[0] : "";
 
     try {
-        app.parse(argc, argv);
+        std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
+        app.parse(reversed);
+    } catch (const CLI::Success& done) {
+        return app.exit(done);  // --help or --version: printed to stdout
     } catch (const CLI::ParseError& error) {
-        const int code = app.exit(error);  // prints help, version or the error
-        return code == 0 ? 0 : 2;
+        report(error.what());
+        fmt::print(stderr, "Run 'promyk {}--help' for the options.\n", name.empty() ? "" : name + " ");
+        return 2;
     }
 
-    const std::string name = app.get_subcommands().front()->get_name();
-    run = name == "render" ? render : name == "trace" ? trace : bench;
+    const std::function<int()>& run = name == "render" ? render : name == "trace" ? trace : bench;
     try {
         return run();
     } catch (const promyk::UsageError& error) {
@@ -72,7 +115,7 @@ int main(int argc, char** argv) {
         report("out of memory");
         return 70;
     } catch (const std::exception& error) {
-        report(fmt::format("internal error (a bug in promyk, please report it): {}", error.what()).c_str());
+        report(fmt::format("internal error (a bug in promyk, please report it): {}", error.what()));
         return 70;
     }
 }
