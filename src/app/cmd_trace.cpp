@@ -20,10 +20,10 @@ struct TraceOptions {
     int w = 8;
     std::string scene_file;
     std::string format = "text";
+    bool wide = false;
 };
 
 int run_trace(const TraceOptions& options) {
-    cli::check_w(options.w);
     const cli::Pixel pixel = cli::parse_pixel(options.pixel, "--pixel", options.w);
     const Scene scene = cli::load_scene_option(options.scene_file);
     const PixelTrace trace = trace_pixel(scene, options.w, pixel.i, pixel.j);
@@ -32,7 +32,7 @@ int run_trace(const TraceOptions& options) {
         append_trace_json(out, trace);
         out += '\n';
     } else {
-        out = format_trace_text(trace, builtin_vocabulary());
+        out = format_trace_text(trace, builtin_vocabulary(), options.wide ? TraceLayout::wide : TraceLayout::narrow);
     }
     std::fputs(out.c_str(), stdout);
     return 0;
@@ -51,6 +51,9 @@ std::function<int()> setup_trace(CLI::App& app) {
     cmd->add_option("--format", options->format, "text: an aligned table; json: the trace as one JSON line")
         ->check(CLI::IsMember({"text", "json"}))
         ->capture_default_str();
+    cmd->add_flag("--wide", options->wide,
+                  "text: one row a step (symbol, formula, value side by side; about 140 columns)\n"
+                  "instead of the default layout that fits 80 columns");
     cmd->footer(
         "Example: promyk trace --pixel 3,4 --w 8   (at w = 8, (0,0) misses, (5,1) is on the dark side, (3,4) is lit)");
     return [options] { return run_trace(*options); };

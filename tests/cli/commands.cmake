@@ -1,0 +1,39 @@
+# Command names, command-line values, the trace's text layout and the
+# non-finite branch, as a user meets them. Included from tests/CMakeLists.txt.
+
+# promyk help, and commands typed wrong
+promyk_cli_test(help_command ARGS help EXIT 0 STDOUT "render.*trace.*bench.*Exit codes")
+promyk_cli_test(help_command_render ARGS help render EXIT 0 STDOUT "Usage: promyk render")
+promyk_cli_test(command_case ARGS Render EXIT 2 STDERR "^promyk: unknown command 'Render'; did you mean 'render'\\?")
+promyk_cli_test(command_typo ARGS trcae EXIT 2 STDERR "did you mean 'trace'\\?")
+promyk_cli_test(parse_error_prefix ARGS trace --bogus EXIT 2 STDERR "^promyk: .*--bogus.*Run 'promyk trace --help'")
+
+# Numbers are plain decimal; each refusal names the option and the plain form.
+promyk_cli_test(w_octal ARGS trace --w 010 EXIT 2 STDERR "^promyk: --w: .*plain decimal, got '010'; write 10\n")
+promyk_cli_test(w_hex ARGS trace --w 0x10 EXIT 2 STDERR "got '0x10'; write 16\n")
+promyk_cli_test(w_space ARGS trace --w " 16" EXIT 2 STDERR "got ' 16'; write 16\n")
+promyk_cli_test(w_exponent ARGS render --w 1e3 EXIT 2 STDERR "from 1 to 32768 .*got '1e3'; write 1000" EMPTY)
+promyk_cli_test(w_plus ARGS trace --w +8 EXIT 2 STDERR "got '\\+8'; write 8")
+promyk_cli_test(threads_hex ARGS render --threads 0x2 EXIT 2 STDERR "--threads: .*got '0x2'; write 2" EMPTY)
+promyk_cli_test(repetitions_zero ARGS bench speed --repetitions 0 EXIT 2 STDERR "--repetitions: .*from 1 to 1000, got 0")
+promyk_cli_test(pixel_as_printed ARGS trace --pixel "3, 4" EXIT 0 STDOUT "^pixel \\(i, j\\) = \\(3, 4\\)")
+promyk_cli_test(pixel_in_parentheses ARGS trace --pixel "(5, 1)" EXIT 0 STDOUT "branch: dark")
+promyk_cli_test(pixel_octal ARGS trace --pixel 03,4 EXIT 2 STDERR "plain decimal\\), got '03,4'")
+promyk_cli_test(pixel_three ARGS trace --pixel 1,2,3 EXIT 2 STDERR "--pixel expects I,J")
+
+# The text layout fits 80 columns; --wide keeps one row a step.
+promyk_cli_test(trace_wide ARGS trace --wide EXIT 0
+                STDOUT "step +key +symbol +formula +value\n.*\n +5 +delta +Δ/4 +C² − \\|E\\|²·\\(\\|S\\|² − r²\\) +4.557812500000004\n")
+promyk_cli_test(trace_grey_miss ARGS trace --pixel 0,0 EXIT 0 STDOUT "grey level: 128 of 255 = round\\(255 · I_P\\)")
+promyk_cli_test(trace_a_7 ARGS trace --w 7 --pixel 3,3 EXIT 0 STDOUT "of a 7 × 7 pane")
+promyk_cli_test(trace_an_11 ARGS trace --w 11 --pixel 3,3 EXIT 0 STDOUT "of an 11 × 11 pane")
+
+# Overflow: accepted, traced to the first non-finite step, never a branch by NaN.
+promyk_cli_test(trace_far_pane ARGS trace --scene ${scenes}/far_pane.json EXIT 0
+                STDOUT "branch: non-finite.*first non-finite value: step 2, \\|E\\|² = inf")
+promyk_cli_test(trace_far_centre ARGS trace --scene ${scenes}/far_centre.json --format json EXIT 0
+                STDOUT "\"first_non_finite\":\\{\"index\":4,\"key\":\"delta\"\\},\"branch\":\"non-finite\",\"result\":null,\"result_text\":\"nan\"")
+
+# Empty values are errors, not "none" (CMake lists cannot carry an empty argument).
+add_test(NAME cli.empty_values COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cli/empty_values_test.sh $<TARGET_FILE:promyk>
+                                       ${CMAKE_CURRENT_BINARY_DIR}/cli/empty_values)
