@@ -176,10 +176,10 @@ TEST_CASE("the article's three pixels at w = 8 take the three branches", "[trace
 TEST_CASE("pixel (3, 4) at w = 8: the first steps by hand", "[tracer]") {
     const PixelTrace lit = trace_pixel(article_scene(), 8, 3, 4);
     // x_E = 9/8 - 1, y_E = -7/8 + 1: exact in binary.
-    CHECK(std::get<Vec3d>(lit.steps[0].value) == Vec3d{0.125, 0.125, 2});
-    CHECK(std::get<double>(lit.steps[1].value) == 4.03125);  // 1/64 + 1/64 + 4
-    CHECK(std::get<double>(lit.steps[2].value) == 3.2 * 3.2);
-    CHECK(std::get<double>(lit.steps[3].value) == 2 * 3.2);
+    CHECK(vector(lit, Key::E) == Vec3d{0.125, 0.125, 2});
+    CHECK(scalar(lit, Key::EE) == 4.03125);  // 1/64 + 1/64 + 4
+    CHECK(scalar(lit, Key::SS) == 3.2 * 3.2);
+    CHECK(scalar(lit, Key::C) == 2 * 3.2);
 }
 
 TEST_CASE("traced and untraced pixels are identical bit for bit", "[tracer]") {
