@@ -11,6 +11,8 @@
 // - "I D / (r sqrt(K))" is I * D / (r * sqrt(K)): (I*D) / (r*sqrt(K)).
 // - The program's locals keep the program's names: E, S and K are squared
 //   lengths, Delta is a quarter of formula (2)'s discriminant.
+// - "return 1/2" is the article's background; a scene may choose another,
+//   so the yardstick returns the scene's `background` (1/2 by default).
 #pragma once
 
 #include <cmath>
@@ -18,18 +20,20 @@
 
 namespace promyk_literal {
 
-// The numbers the article gives for Fig. 5 (I is not given; I = 1).
+// The numbers the article gives for Fig. 5 (I is not given; I = 1) by
+// default; tests fill in other scenes.
 struct LiteralScene {
     double z_E = 2;
     double x_S = 0, y_S = 0, z_S = 3.2;  // S = (0, 0, 3 1/5)
     double r = 1.1;                      // r = 1 1/10
     double x_L = 1.5, y_L = 1, z_L = 1;  // L = (1 1/2, 1, 1)
     double I = 1;
+    double background = 1.0 / 2.0;  // the article's "return 1/2"
 };
 
 // Which `return` the function left by.
 enum class LiteralReturn {
-    half,       // "if Delta <= 0 then return 1/2"
+    half,       // "if Delta <= 0 then return 1/2" (the background)
     zero,       // "if D <= 0 then return 0"
     intensity,  // "return I D / (r sqrt(K))"
 };
@@ -55,7 +59,8 @@ struct LiteralLocals {
 
 //   function intensity(x_E, y_E, z_E)
 inline double literal_intensity(double x_E, double y_E, double z_E, double x_S, double y_S, double z_S, double r,
-                                double x_L, double y_L, double z_L, double I, LiteralLocals* locals = nullptr) {
+                                double x_L, double y_L, double z_L, double I, double background,
+                                LiteralLocals* locals = nullptr) {
     LiteralLocals scratch;
     LiteralLocals& v = locals ? *locals : scratch;
     v = LiteralLocals{};
@@ -74,10 +79,10 @@ inline double literal_intensity(double x_E, double y_E, double z_E, double x_S, 
     //     Delta := C^2 - E(S - r^2)
     const double Delta = C * C - E * (S - r * r);
     v.Delta = Delta;
-    //     if Delta <= 0 then return 1/2
+    //     if Delta <= 0 then return 1/2   (1/2 is the article's background)
     if (Delta <= 0) {
         v.returned = LiteralReturn::half;
-        return v.result = 1.0 / 2.0;
+        return v.result = background;
     }
     //     t := (C - sqrt(Delta)) / E
     const double t = (C - std::sqrt(Delta)) / E;
@@ -115,7 +120,7 @@ inline double literal_intensity(double x_E, double y_E, double z_E, double x_S, 
 
 inline double literal_intensity(double x_E, double y_E, double z_E, const LiteralScene& s,
                                 LiteralLocals* locals = nullptr) {
-    return literal_intensity(x_E, y_E, z_E, s.x_S, s.y_S, s.z_S, s.r, s.x_L, s.y_L, s.z_L, s.I, locals);
+    return literal_intensity(x_E, y_E, z_E, s.x_S, s.y_S, s.z_S, s.r, s.x_L, s.y_L, s.z_L, s.I, s.background, locals);
 }
 
 // The article's pixel loop (section 2), filling t[i, j] row by row:

@@ -1,11 +1,16 @@
 // The tracer against an independent high-precision reference
 // (tests/reference/article_reference.json, made by make_reference.py with
-// mpmath at 200 bits; see tests/reference/README.md).
+// mpmath at 200 bits; see tests/reference/README.md), and the same checks on
+// scenes that are not the article's (tests/reference/scenes_reference.json,
+// made by make_reference.py --scenes from the scene files in
+// tests/reference/scenes/: off-axis centres, I != 1, backgrounds != 1/2,
+// z_E != 2, and pixels where delta or D is exactly 0 in double).
 //
 // For every pixel listed there the tracer's trace must have
 // - the reference's branch (when the reference is certain of it);
 // - the reference's keys, in order (a miss stops after delta, a dark pixel
-//   after D);
+//   after D), among the steps that are the program's variables (steps the
+//   tracer adds for lessons are skipped: values are matched by key);
 // - every recorded value, each vector component, and the result inside the
 //   reference's rigorous enclosure [lo, hi] of what an IEEE double program
 //   performing the article's operations in the article's order can produce;
@@ -52,6 +57,7 @@
 #include "render/trace_pixel.hpp"
 #include "render/tracer.hpp"
 #include "scene/scene.hpp"
+#include "scene/scene_json.hpp"
 #include "trace/keys.hpp"
 #include "trace/recorder.hpp"
 #include "trace/trace.hpp"
@@ -67,6 +73,8 @@ constexpr long double unit_roundoff = 0x1p-53L;
 constexpr long double subnormal_half_spacing = 0x1p-1075L;
 
 const char* const reference_path = PROMYK_SOURCE_DIR "/tests/reference/article_reference.json";
+const char* const scenes_reference_path = PROMYK_SOURCE_DIR "/tests/reference/scenes_reference.json";
+const std::string scene_dir = PROMYK_SOURCE_DIR "/tests/reference/scenes/";
 
 double parse_double(const json& text) {
     const std::string s = text.get<std::string>();
@@ -160,7 +168,8 @@ struct ExactValues {
 };
 
 // The error bound of every quantity the program computes at one pixel, in the
-// program's order. Each follows from the rules at the top of this file; the
+// program's order. Each follows from the rules at the top of this file, for
+// any scene (Bounded walks the operations with the scene's numbers); the
 // comments give the closed forms for the article's scene (z_E = 2,
 // S = (0, 0, 3.2), r = 1.1, L = (1.5, 1, 1), I = 1; |x_E|, |y_E| < 1).
 std::map<std::string, std::vector<long double>> pixel_error_bounds(const Vec3d& E_in, const promyk::Scene& scene,
@@ -271,6 +280,7 @@ struct RefValue {
 };
 
 struct RefPixel {
+    std::string scene;  // the scenes reference names each pixel's scene; empty: the article's
     int w = 0, i = 0, j = 0;
     std::string branch;        // miss, dark, lit or uncertain
     std::string uncertain_at;  // delta or D when uncertain
@@ -304,38 +314,67 @@ struct Reference {
     std::vector<RefPixel> pixels;
 };
 
-const Reference& reference() {
-    static const Reference loaded = [] {
-        std::ifstream in(reference_path);
-        if (!in) throw std::runtime_error(std::string("cannot open ") + reference_path);
-        const json doc = json::parse(in);
-        Reference ref;
-        ref.header = doc;
-        ref.header.erase("pixels");
-        for (const json& p : doc.at("pixels")) {
-            RefPixel pixel;
-            pixel.w = p.at("w").get<int>();
-            pixel.i = p.at("i").get<int>();
-            pixel.j = p.at("j").get<int>();
-            pixel.branch = p.at("branch").get<std::string>();
-            if (p.contains("uncertain_at")) pixel.uncertain_at = p.at("uncertain_at").get<std::string>();
-            for (const json& q : p.at("pane_rational")) pixel.pane_rational.push_back(parse_rational(q));
-            for (const json& s : p.at("steps")) pixel.steps.push_back(parse_value(s, s.at("key").get<std::string>()));
-            if (p.contains("result")) {
-                pixel.has_result = true;
-                pixel.result = parse_value(p.at("result"), "I_P");
-            }
-            ref.pixels.push_back(std::move(pixel));
+Reference load_reference(const char* path) {
+    std::ifstream in(path);
+    if (!in) throw std::runtime_error(std::string("cannot open ") + path);
+    const json doc = json::parse(in);
+    Reference ref;
+    ref.header = doc;
+    ref.header.erase("pixels");
+    for (const json& p : doc.at("pixels")) {
+        RefPixel pixel;
+        if (p.contains("scene")) pixel.scene = p.at("scene").get<std::string>();
+        pixel.w = p.at("w").get<int>();
+        pixel.i = p.at("i").get<int>();
+        pixel.j = p.at("j").get<int>();
+        pixel.branch = p.at("branch").get<std::string>();
+        if (p.contains("uncertain_at")) pixel.uncertain_at = p.at("uncertain_at").get<std::string>();
+        for (const json& q : p.at("pane_rational")) pixel.pane_rational.push_back(parse_rational(q));
+        for (const json& s : p.at("steps")) pixel.steps.push_back(parse_value(s, s.at("key").get<std::string>()));
+        if (p.contains("result")) {
+            pixel.has_result = true;
+            pixel.result = parse_value(p.at("result"), "I_P");
         }
-        return ref;
-    }();
+        ref.pixels.push_back(std::move(pixel));
+    }
+    return ref;
+}
+
+const Reference& reference() {
+    static const Reference loaded = load_reference(reference_path);
     return loaded;
+}
+
+const Reference& scenes_reference() {
+    static const Reference loaded = load_reference(scenes_reference_path);
+    return loaded;
+}
+
+// The scenes of the scenes reference, read from their files by promyk's own
+// parser (the reference read the same files with Python's json), by name.
+std::map<std::string, promyk::Scene> reference_scenes() {
+    std::map<std::string, promyk::Scene> scenes;
+    for (const json& s : scenes_reference().header.at("scenes"))
+        scenes[s.at("name").get<std::string>()] =
+            promyk::load_scene_file(scene_dir + s.at("file").get<std::string>());
+    return scenes;
 }
 
 std::vector<double> components(const promyk::StepValue& value) {
     if (std::holds_alternative<double>(value)) return {std::get<double>(value)};
     const Vec3d& v = std::get<Vec3d>(value);
     return {v.x, v.y, v.z};
+}
+
+// The trace's steps that are the program's variables (the reference's keys),
+// in the trace's order: steps the tracer may add for lessons are skipped, so
+// values are compared by key, not by position.
+std::vector<const promyk::Step*> program_steps(const promyk::PixelTrace& trace, const json& keys) {
+    std::vector<const promyk::Step*> steps;
+    for (const promyk::Step& step : trace.steps)
+        for (const json& key : keys)
+            if (promyk::key_name(step.key) == key.get<std::string>()) steps.push_back(&step);
+    return steps;
 }
 
 // Largest errors seen, per quantity, for the optional report.
@@ -349,13 +388,9 @@ struct Worst {
     int count = 0;
 };
 
-}  // namespace
-
-TEST_CASE("the reference describes the article's scene", "[reference]") {
-    const Reference& ref = reference();
-    const promyk::Scene scene = promyk::article_scene();
-    const json& s = ref.header.at("scene");
-    CHECK(ref.header.at("precision_bits").get<int>() >= 200);
+void check_scene_header(const json& s, const promyk::Scene& scene) {
+    INFO("scene " << s.at("name").get<std::string>());
+    CHECK(s.at("name").get<std::string>() == scene.name);
     CHECK(same_bits(parse_double(s.at("z_E")), scene.z_E));
     for (std::size_t k = 0; k < 3; ++k) {
         CHECK(same_bits(parse_double(s.at("S").at(k)), components(scene.spheres.at(0).S)[k]));
@@ -364,42 +399,34 @@ TEST_CASE("the reference describes the article's scene", "[reference]") {
     CHECK(same_bits(parse_double(s.at("r")), scene.spheres.at(0).r));
     CHECK(same_bits(parse_double(s.at("I")), scene.lights.at(0).I));
     CHECK(same_bits(parse_double(s.at("background")), scene.background));
-    CHECK(ref.header.at("pixel_count").get<std::size_t>() == ref.pixels.size());
-
-    // The pixel set covers what the reference promises.
-    std::map<int, int> per_size;
-    std::map<std::string, int> per_branch;
-    for (const RefPixel& p : ref.pixels) {
-        ++per_size[p.w];
-        ++per_branch[p.branch];
-    }
-    CHECK(per_size[1] == 1);
-    CHECK(per_size[8] == 64);
-    CHECK(per_size[7] == 49);
-    CHECK(per_size[512] > 0);
-    CHECK(per_size[2049] > 0);
-    CHECK(per_branch["miss"] > 0);
-    CHECK(per_branch["dark"] > 0);
-    CHECK(per_branch["lit"] > 0);
 }
 
-TEST_CASE("the tracer agrees with the high-precision reference", "[reference]") {
-    const Reference& ref = reference();
-    const promyk::Scene scene = promyk::article_scene();
+std::string where_text(const RefPixel& p) {
+    return (p.scene.empty() ? std::string() : p.scene + " ") + "w=" + std::to_string(p.w) + " (" +
+           std::to_string(p.i) + "," + std::to_string(p.j) + ")";
+}
+
+// Checks every pixel of a reference against the tracer; `scene_of` gives a
+// pixel's scene. `article` turns on the bounds derived for the article's
+// scene only (fixed ulp bounds of EE, SS, C and delta's 5 ulp of its terms).
+void check_against_reference(const Reference& ref, const std::map<std::string, promyk::Scene>& scene_of,
+                             bool article) {
     std::map<std::string, Worst> worst;
     int failures = 0;
     std::string first_failures;
     const auto fail = [&](const RefPixel& p, const std::string& what) {
-        if (++failures <= 10)
-            first_failures += "w=" + std::to_string(p.w) + " (" + std::to_string(p.i) + "," + std::to_string(p.j) +
-                              "): " + what + "\n";
+        if (++failures <= 10) first_failures += where_text(p) + ": " + what + "\n";
     };
+    const json& keys = ref.header.at("keys");
 
     // Per quantity, a fixed bound in ulp of the exact value where the
-    // derivation above gives one independent of the pixel (for this scene).
-    const std::map<std::string, long double> fixed_ulps = {{"EE", 2}, {"SS", 0.5L}, {"C", 0}};
+    // derivation above gives one independent of the pixel (for the article's scene).
+    const std::map<std::string, long double> fixed_ulps =
+        article ? std::map<std::string, long double>{{"EE", 2}, {"SS", 0.5L}, {"C", 0}}
+                : std::map<std::string, long double>{};
 
     for (const RefPixel& p : ref.pixels) {
+        const promyk::Scene& scene = scene_of.at(p.scene);
         const promyk::PixelTrace trace = promyk::trace_pixel(scene, p.w, p.i, p.j);
 
         // The branch.
@@ -410,15 +437,16 @@ TEST_CASE("the tracer agrees with the high-precision reference", "[reference]") 
             continue;
         }
 
-        // The keys, in order.
+        // The program's keys, in order.
+        const std::vector<const promyk::Step*> steps = program_steps(trace, keys);
         const bool certain = p.branch != "uncertain";
-        if (certain ? trace.steps.size() != p.steps.size() : trace.steps.size() < p.steps.size()) {
-            fail(p, std::to_string(trace.steps.size()) + " steps, reference " + std::to_string(p.steps.size()));
+        if (certain ? steps.size() != p.steps.size() : steps.size() < p.steps.size()) {
+            fail(p, std::to_string(steps.size()) + " steps, reference " + std::to_string(p.steps.size()));
             continue;
         }
         bool keys_match = true;
         for (std::size_t k = 0; k < p.steps.size(); ++k)
-            if (promyk::key_name(trace.steps[k].key) != p.steps[k].key) keys_match = false;
+            if (promyk::key_name(steps[k]->key) != p.steps[k].key) keys_match = false;
         if (!keys_match) {
             fail(p, "keys differ from the reference's");
             continue;
@@ -427,7 +455,7 @@ TEST_CASE("the tracer agrees with the high-precision reference", "[reference]") 
         // The pane point: exactly the reference's doubles, and within 1 ulp
         // of 1 (2^-52) of the exact rational (the quotient (2j+1)/w < 2 is
         // rounded by <= 2^-53, the sum with -1 or 1 (|result| <= 1) by <= 2^-53).
-        const std::vector<double> E = components(trace.steps.at(0).value);
+        const std::vector<double> E = components(steps.at(0)->value);
         for (std::size_t k = 0; k < 2; ++k) {
             if (!same_bits(E[k], p.steps[0].lo[k]) || !same_bits(E[k], p.steps[0].hi[k]))
                 fail(p, "E differs from the reference's pane point");
@@ -483,19 +511,20 @@ TEST_CASE("the tracer agrees with the high-precision reference", "[reference]") 
                 if (ulps > w.ulps || w.where.empty()) {
                     w.ulps = ulps;
                     w.bound_ulps = bound / ulp(x);
-                    w.where = "w=" + std::to_string(p.w) + " (" + std::to_string(p.i) + "," + std::to_string(p.j) +
-                              ") " + name;
+                    w.where = where_text(p) + " " + name;
                 }
             }
         };
-        for (std::size_t k = 0; k < p.steps.size(); ++k) check(p.steps[k], components(trace.steps[k].value));
+        for (std::size_t k = 0; k < p.steps.size(); ++k) check(p.steps[k], components(steps[k]->value));
         if (p.has_result) check(p.result, {trace.result});
 
-        // delta also within 5 ulp of its larger term (C^2 or EE (SS - r^2)),
-        // as derived for its bound above.
-        const double delta = std::get<double>(trace.steps.at(4).value);
-        if (!(std::fabs(delta - exact.at("delta")) <= 5 * ulp(larger_term)))
-            fail(p, "delta more than 5 ulp of its larger term from exact");
+        // For the article's scene, delta also within 5 ulp of its larger term
+        // (C^2 or EE (SS - r^2)), as derived for its bound above.
+        if (article) {
+            const double delta = std::get<double>(steps.at(4)->value);
+            if (!(std::fabs(delta - exact.at("delta")) <= 5 * ulp(larger_term)))
+                fail(p, "delta more than 5 ulp of its larger term from exact");
+        }
     }
 
     INFO(first_failures);
@@ -513,4 +542,81 @@ TEST_CASE("the tracer agrees with the high-precision reference", "[reference]") 
                         w.max_bound_ulps, w.ratio, w.scaled_ulps, w.where.c_str());
         }
     }
+}
+
+}  // namespace
+
+TEST_CASE("the reference describes the article's scene", "[reference]") {
+    const Reference& ref = reference();
+    const promyk::Scene scene = promyk::article_scene();
+    CHECK(ref.header.at("precision_bits").get<int>() >= 200);
+    check_scene_header(ref.header.at("scene"), scene);
+    CHECK(ref.header.at("pixel_count").get<std::size_t>() == ref.pixels.size());
+
+    // The pixel set covers what the reference promises.
+    std::map<int, int> per_size;
+    std::map<std::string, int> per_branch;
+    for (const RefPixel& p : ref.pixels) {
+        ++per_size[p.w];
+        ++per_branch[p.branch];
+    }
+    CHECK(per_size[1] == 1);
+    CHECK(per_size[8] == 64);
+    CHECK(per_size[7] == 49);
+    CHECK(per_size[512] > 0);
+    CHECK(per_size[2049] > 0);
+    CHECK(per_branch["miss"] > 0);
+    CHECK(per_branch["dark"] > 0);
+    CHECK(per_branch["lit"] > 0);
+}
+
+TEST_CASE("the tracer agrees with the high-precision reference", "[reference]") {
+    check_against_reference(reference(), {{"", promyk::article_scene()}}, true);
+}
+
+TEST_CASE("the scenes reference describes its scene files and covers what it must", "[reference]") {
+    const Reference& ref = scenes_reference();
+    const std::map<std::string, promyk::Scene> scenes = reference_scenes();
+    CHECK(ref.header.at("precision_bits").get<int>() >= 200);
+    CHECK(ref.header.at("pixel_count").get<std::size_t>() == ref.pixels.size());
+    for (const json& s : ref.header.at("scenes")) check_scene_header(s, scenes.at(s.at("name").get<std::string>()));
+
+    // Not the article's: off-axis centres with distinct non-zero coordinates,
+    // I != 1, backgrounds != 1/2, z_E != 2.
+    bool off_axis = false, I_not_1 = false, background_not_half = false, z_E_not_2 = false;
+    for (const auto& [name, scene] : scenes) {
+        const Vec3d& S = scene.spheres.at(0).S;
+        if (S.x != 0 && S.y != 0 && S.z != 0 && S.x != S.y && S.y != S.z && S.x != S.z) off_axis = true;
+        if (scene.lights.at(0).I != 1) I_not_1 = true;
+        if (scene.background != 0.5) background_not_half = true;
+        if (scene.z_E != 2) z_E_not_2 = true;
+    }
+    CHECK(off_axis);
+    CHECK(I_not_1);
+    CHECK(background_not_half);
+    CHECK(z_E_not_2);
+
+    // Every branch, and pixels where delta or D is exactly 0 (exact value,
+    // enclosure and double all 0): a tangent ray that misses, a hit facing
+    // the light edge-on that is dark.
+    std::map<std::string, int> per_branch;
+    int delta_zero_misses = 0, D_zero_darks = 0;
+    for (const RefPixel& p : ref.pixels) {
+        ++per_branch[p.branch];
+        for (const RefValue& v : p.steps) {
+            const bool zero = v.exact.at(0) == 0 && v.lo.at(0) == 0 && v.hi.at(0) == 0 && v.ieee.at(0) == 0;
+            if (zero && v.key == "delta" && p.branch == "miss") ++delta_zero_misses;
+            if (zero && v.key == "D" && p.branch == "dark") ++D_zero_darks;
+        }
+    }
+    CHECK(per_branch["miss"] > 0);
+    CHECK(per_branch["dark"] > 0);
+    CHECK(per_branch["lit"] > 0);
+    CHECK(per_branch["uncertain"] == 0);
+    CHECK(delta_zero_misses >= 3);
+    CHECK(D_zero_darks >= 2);
+}
+
+TEST_CASE("the tracer agrees with the high-precision reference on scenes that are not the article's", "[reference]") {
+    check_against_reference(scenes_reference(), reference_scenes(), false);
 }

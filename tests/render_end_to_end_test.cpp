@@ -21,9 +21,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<unsigned char> expected_grey(int w) {
+std::vector<unsigned char> expected_grey(int w, const promyk_literal::LiteralScene& scene = {}) {
     std::vector<unsigned char> grey;
-    for (const double v : promyk_literal::literal_program(w))
+    for (const double v : promyk_literal::literal_program(w, scene))
         grey.push_back(static_cast<unsigned char>(std::lround(std::clamp(v, 0.0, 1.0) * 255)));
     return grey;
 }
@@ -87,5 +87,42 @@ TEST_CASE("promyk render writes the article's image: odd sizes, PGM, any thread 
     const fs::path png = dir / "w37.png";
     REQUIRE(run("render --w 37 -o " + png.string()) == 0);
     CHECK(decode_png(png, 37) == expected_grey(37));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("promyk render --scene writes a scene that is not the article's as the literal program computes it",
+          "[end-to-end]") {
+    // tests/reference/scenes/off_axis_far.json and tangent_axis.json, their
+    // numbers written out here by hand: off-axis S, I = 3 (clamped to 255),
+    // background 0.2; a tangent ray through the centre of w = 3 (background 0.625).
+    promyk_literal::LiteralScene far;
+    far.z_E = 3;
+    far.x_S = 0.45, far.y_S = -0.35, far.z_S = 4.2;
+    far.r = 1.3;
+    far.x_L = -2.5, far.y_L = 2, far.z_L = 4.5;
+    far.I = 3;
+    far.background = 0.2;
+    promyk_literal::LiteralScene tangent;
+    tangent.z_E = 2;
+    tangent.x_S = 1, tangent.y_S = 0, tangent.z_S = 4;
+    tangent.r = 1;
+    tangent.x_L = -1, tangent.y_L = 0.5, tangent.z_L = 1;
+    tangent.I = 0.75;
+    tangent.background = 0.625;
+
+    const fs::path dir = fresh_dir("scenes");
+    const std::string scenes = std::string(PROMYK_SOURCE_DIR) + "/tests/reference/scenes/";
+    for (const int threads : {1, 2}) {
+        INFO("threads = " << threads);
+        const fs::path out = dir / ("far" + std::to_string(threads) + ".pgm");
+        REQUIRE(run("render --scene " + scenes + "off_axis_far.json --w 45 --threads " + std::to_string(threads) +
+                    " -o " + out.string()) == 0);
+        CHECK(decode_pgm(out, 45) == expected_grey(45, far));
+    }
+    const fs::path out = dir / "tangent.png";
+    REQUIRE(run("render --scene " + scenes + "tangent_axis.json --w 3 -o " + out.string()) == 0);
+    const std::vector<unsigned char> grey = decode_png(out, 3);
+    CHECK(grey == expected_grey(3, tangent));
+    CHECK(static_cast<int>(grey.at(4)) == 159);  // the tangent centre: round(0.625 * 255) = round(159.375)
     fs::remove_all(dir);
 }

@@ -19,9 +19,19 @@ TEST_CASE("Vec3 operations follow the article's formulas", "[math]") {
 }
 
 TEST_CASE("dot sums left to right, as the program writes it", "[math]") {
-    // (1e16 + 1) - 1e16 = 0 in double, while 1e16 + (1 - 1e16) = 1: the order is visible.
-    const Vec3d P{1e16, 1, -1e16}, ones{1, 1, 1};
-    CHECK(promyk::dot(P, ones) == 0.0);
+    // Three products a, b, c can be summed in three ways: (a + b) + c (left
+    // to right, the program's), a + (b + c) and (a + c) + b. With 1 and
+    // +-1e16 (1e16 +- 1 rounds back to 1e16: the spacing there is 2) each
+    // vector below tells the left-to-right sum from the others:
+    const Vec3d ones{1, 1, 1};
+    // (1e16 + -1e16) + 1 = 1; 1e16 + (-1e16 + 1) = 0; (1e16 + 1) + -1e16 = 0.
+    CHECK(promyk::dot(Vec3d{1e16, -1e16, 1}, ones) == 1.0);
+    // (1 + 1e16) + -1e16 = 0; 1 + (1e16 + -1e16) = 1.
+    CHECK(promyk::dot(Vec3d{1, 1e16, -1e16}, ones) == 0.0);
+    // (1e16 + 1) + -1e16 = 0; (1e16 + -1e16) + 1 = 1.
+    CHECK(promyk::dot(Vec3d{1e16, 1, -1e16}, ones) == 0.0);
+    // The same through the products: x_P x_Q + y_P y_Q + z_P z_Q.
+    CHECK(promyk::dot(Vec3d{2e16, -1e16, 0.5}, Vec3d{0.5, 1, 2}) == 1.0);
 }
 
 TEST_CASE("pane: pixel (i, j) maps to the centre of its square", "[pane]") {

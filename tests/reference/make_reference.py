@@ -41,6 +41,7 @@ type are used; numbers are formatted by this script from exact rationals).
 
 import json
 import math
+import os
 import sys
 from fractions import Fraction
 
@@ -54,7 +55,8 @@ FLOOR = libmp.round_floor
 CEIL = libmp.round_ceiling
 
 # The article's scene, as the IEEE doubles the tracer holds.
-SCENE = {
+ARTICLE_SCENE = {
+    "name": "article",
     "z_E": 2.0,
     "S": (0.0, 0.0, 3.2),
     "r": 1.1,
@@ -80,6 +82,15 @@ def raw_to_fraction(raw):
         return Fraction(0)
     value = Fraction(man * 2**exp) if exp >= 0 else Fraction(man, 2**-exp)
     return -value if sign else value
+
+
+def is_double(raw):
+    """Whether a raw mpf value is exactly an IEEE double (finite)."""
+    value = raw_to_fraction(raw)
+    try:
+        return Fraction(float(value)) == value
+    except OverflowError:
+        return False
 
 
 def round_down(value):
@@ -175,6 +186,11 @@ class Interval:
     def rounded(self):
         if self.lo == libmp.fzero and self.hi == libmp.fzero:
             return self  # an exact zero is returned exactly
+        if self.lo == self.hi and is_double(self.lo):
+            # The operation's exact result is this one value and it is a
+            # double: a correctly rounded operation returns it exactly (so a
+            # delta or D that is exactly 0 in double is a certain miss or dark).
+            return self
         lo = libmp.mpf_sub(self.lo, libmp.mpf_mul(libmp.mpf_abs(self.lo), UNIT_ROUNDOFF, PREC, CEIL), PREC, FLOOR)
         hi = libmp.mpf_add(self.hi, libmp.mpf_mul(libmp.mpf_abs(self.hi), UNIT_ROUNDOFF, PREC, CEIL), PREC, CEIL)
         # Does the interval reach below the smallest normal in magnitude?
@@ -233,14 +249,14 @@ class Interval:
 # the chosen kind from a double; `sqrt` is the square root of that kind.
 
 
-def article_program(num, sqrt, x_E, y_E, z_E):
+def article_program(scene, num, sqrt, x_E, y_E, z_E):
     """Returns (steps, branch, result): steps is a list of (key, value) with
     value a number or a 3-tuple; branch is 'miss', 'dark' or 'lit', or
     ('test', value) for the caller to decide delta's or D's sign."""
-    x_S, y_S, z_S = (num(v) for v in SCENE["S"])
-    r = num(SCENE["r"])
-    x_L, y_L, z_L = (num(v) for v in SCENE["L"])
-    I = num(SCENE["I"])
+    x_S, y_S, z_S = (num(v) for v in scene["S"])
+    r = num(scene["r"])
+    x_L, y_L, z_L = (num(v) for v in scene["L"])
+    I = num(scene["I"])
     x_E, y_E, z_E = num(x_E), num(y_E), num(z_E)
 
     steps = [("E", (x_E, y_E, z_E))]
@@ -277,13 +293,13 @@ def interval_num(f):
     return Interval.point(f)
 
 
-def run_exact(x_E, y_E, z_E):
+def run_exact(scene, x_E, y_E, z_E):
     """Exact values (200 bits) of every quantity the program reaches, and
     the exact branch."""
-    program = article_program(exact_num, mpmath.sqrt, x_E, y_E, z_E)
+    program = article_program(scene, exact_num, mpmath.sqrt, x_E, y_E, z_E)
     steps, _, delta = next(program)
     if delta <= 0:
-        return list(steps), "miss", Fraction(SCENE["background"])
+        return list(steps), "miss", Fraction(scene["background"])
     steps, _, D = next(program)
     if D <= 0:
         return list(steps), "dark", Fraction(0)
@@ -291,12 +307,12 @@ def run_exact(x_E, y_E, z_E):
     return list(steps), "lit", result
 
 
-def run_double(x_E, y_E, z_E):
+def run_double(scene, x_E, y_E, z_E):
     """The IEEE double program: values, branch and result."""
-    program = article_program(float, math.sqrt, x_E, y_E, z_E)
+    program = article_program(scene, float, math.sqrt, x_E, y_E, z_E)
     steps, _, delta = next(program)
     if delta <= 0:
-        return list(steps), "miss", SCENE["background"]
+        return list(steps), "miss", scene["background"]
     steps, _, D = next(program)
     if D <= 0:
         return list(steps), "dark", 0.0
@@ -304,15 +320,15 @@ def run_double(x_E, y_E, z_E):
     return list(steps), "lit", result
 
 
-def run_enclosure(x_E, y_E, z_E):
+def run_enclosure(scene, x_E, y_E, z_E):
     """Enclosures of every quantity the program can reach, the branch
     ('uncertain' if a test can go either way) and the test it is uncertain
     at, and the result's enclosure (None if uncertain)."""
-    program = article_program(interval_num, Interval.sqrt, x_E, y_E, z_E)
+    program = article_program(scene, interval_num, Interval.sqrt, x_E, y_E, z_E)
     steps, _, delta = next(program)
     lo, hi = delta.doubles()
     if hi <= 0:
-        return list(steps), "miss", None, Interval.point(SCENE["background"])
+        return list(steps), "miss", None, Interval.point(scene["background"])
     if lo <= 0:
         return list(steps), "uncertain", "delta", None
     steps, _, D = next(program)
@@ -329,11 +345,11 @@ def run_enclosure(x_E, y_E, z_E):
 # One pixel
 
 
-def pane_point(w, i, j):
+def pane_point(scene, w, i, j):
     """The tracer's input: the pane formula in IEEE doubles."""
     y_E = -(2 * i + 1) / w + 1
     x_E = (2 * j + 1) / w - 1
-    return x_E, y_E, SCENE["z_E"]
+    return x_E, y_E, scene["z_E"]
 
 
 def mpf_fraction(value):
@@ -366,13 +382,14 @@ def value_record(key, exact_value, enclosure, double_value):
     return record
 
 
-def pixel_record(w, i, j):
-    x_E, y_E, z_E = pane_point(w, i, j)
-    exact_steps, exact_branch, exact_result = run_exact(x_E, y_E, z_E)
-    bound_steps, branch, uncertain_at, bound_result = run_enclosure(x_E, y_E, z_E)
-    double_steps, double_branch, double_result = run_double(x_E, y_E, z_E)
+def pixel_record(scene, w, i, j, name_scene=False):
+    x_E, y_E, z_E = pane_point(scene, w, i, j)
+    exact_steps, exact_branch, exact_result = run_exact(scene, x_E, y_E, z_E)
+    bound_steps, branch, uncertain_at, bound_result = run_enclosure(scene, x_E, y_E, z_E)
+    double_steps, double_branch, double_result = run_double(scene, x_E, y_E, z_E)
 
-    record = {"w": w, "i": i, "j": j}
+    record = {"scene": scene["name"]} if name_scene else {}
+    record.update({"w": w, "i": i, "j": j})
     record["pane_rational"] = [fraction_text(Fraction(2 * j + 1, w) - 1), fraction_text(-Fraction(2 * i + 1, w) + 1)]
     record["branch"] = branch
     if branch == "uncertain":
@@ -399,12 +416,12 @@ def pixel_record(w, i, j):
 # the terminator (small D); it is deterministic (ties broken by (i, j)).
 
 
-def double_program(w, i, j):
+def double_program(scene, w, i, j):
     """(delta, delta's term size, D, D's term size) in doubles; D None on a miss."""
-    x_E, y_E, z_E = pane_point(w, i, j)
-    x_S, y_S, z_S = SCENE["S"]
-    r = SCENE["r"]
-    x_L, y_L, z_L = SCENE["L"]
+    x_E, y_E, z_E = pane_point(scene, w, i, j)
+    x_S, y_S, z_S = scene["S"]
+    r = scene["r"]
+    x_L, y_L, z_L = scene["L"]
     EE = x_E * x_E + y_E * y_E + z_E * z_E
     SS = x_S * x_S + y_S * y_S + z_S * z_S
     C = x_E * x_S + y_E * y_S + z_E * z_S
@@ -421,12 +438,12 @@ def double_program(w, i, j):
     return delta, delta_size, D, D_size
 
 
-def scan(w, rows):
+def scan(scene, w, rows):
     """Per pixel of the given rows: (i, j, delta/size, D/size or None)."""
     out = []
     for i in rows:
         for j in range(w):
-            delta, delta_size, D, D_size = double_program(w, i, j)
+            delta, delta_size, D, D_size = double_program(scene, w, i, j)
             out.append((i, j, delta / delta_size, None if D is None else D / D_size))
     return out
 
@@ -462,12 +479,12 @@ def smallest(table, index, count, positive):
     return set(chosen)
 
 
-def row_edges(w, i):
+def row_edges(scene, w, i):
     """The pixels of row i beside a sign change of delta or of D, found by
     bisection (delta falls as |x_E| grows; D is scanned every 8 columns
     over the hit span, then bisected), as rows of `scan`'s table."""
     def values(j):
-        delta, delta_size, D, D_size = double_program(w, i, j)
+        delta, delta_size, D, D_size = double_program(scene, w, i, j)
         return (i, j, delta / delta_size, None if D is None else D / D_size)
 
     middle = (w - 1) // 2
@@ -510,7 +527,7 @@ def pixel_set():
     # terminator over the whole image (both sides of each test), and the
     # pixels beside the silhouette and the terminator on every 32nd row.
     w = 512
-    table = scan(w, range(w))
+    table = scan(ARTICLE_SCENE, w, range(w))
     chosen = {(i, j) for i in range(32, w, 64) for j in range(32, w, 64)}
     chosen |= {(i, j) for i in (255, 256) for j in (255, 256)}  # the centre
     for index in (2, 3):
@@ -528,7 +545,7 @@ def pixel_set():
     chosen = {(1024, 1024), (0, 0), (2048, 2048)}
     candidates = []
     for i in range(w):
-        candidates += row_edges(w, i)
+        candidates += row_edges(ARTICLE_SCENE, w, i)
     for i in (600, 1024, 1400):
         chosen |= {(ci, cj) for ci, cj, _, _ in candidates if ci == i}
     for index in (2, 3):
@@ -539,27 +556,104 @@ def pixel_set():
 
 
 # --------------------------------------------------------------------------
+# Scenes other than the article's (--scenes): off-axis centres (x_S, y_S,
+# z_S distinct and non-zero), I != 1, backgrounds != 1/2, z_E != 2, and
+# scenes where delta or D is exactly 0 in double at some pixel. They live in
+# tests/reference/scenes/ as scene files, which the C++ tests read with
+# promyk's own parser; Python's json reads each number as the nearest double,
+# as that parser does (the tests check that both hold the same doubles).
+
+SCENE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "scenes")
+
+SCENE_FILES = [
+    "off_axis_far.json",      # z_E = 3, I = 3, background 0.2
+    "off_axis_near.json",     # z_E = 1.5, I = 0.75, background 0.75
+    "tangent_axis.json",      # w = 1 and w = 3: E = (0, 0, 2) touches S = (1, 0, 4), r = 1: delta = 0
+    "tangent_off_axis.json",  # w = 2, pixel (0, 1): E = (0.5, 0.5, 2) touches S = (3, 3, 7.5), r = 1.5
+    "dark_exact.json",        # w = 1 and w = 3: P = (0, 0, 3), N = (0, 0, -1), K = (2, 1, 0): D = 0
+]
+
+
+def load_scene(file_name):
+    with open(os.path.join(SCENE_DIR, file_name), encoding="utf-8") as f:
+        doc = json.load(f)
+    (sphere,), (light,) = doc["spheres"], doc["lights"]
+    return {
+        "name": doc["name"],
+        "file": file_name,
+        "z_E": float(doc["z_E"]),
+        "S": tuple(float(v) for v in sphere["S"]),
+        "r": float(sphere["r"]),
+        "L": tuple(float(v) for v in light["L"]),
+        "I": float(light["I"]),
+        "background": float(doc["background"]),
+    }
+
+
+def scenes_pixel_set(scenes):
+    """(scene, w, i, j) for every pixel of a few small panes of each scene,
+    and for the off-axis scenes the pixels of w = 64 closest to either test."""
+    pixels = []
+    for s in scenes:
+        if s["name"].startswith("off_axis"):
+            sizes = (7, 8) if s["name"] == "off_axis_far" else (8,)
+            chosen = []
+            for w in sizes:
+                chosen += [(w, i, j) for i in range(w) for j in range(w)]
+            table = scan(s, 64, range(64))
+            near = set()
+            for index in (2, 3):
+                for positive in (True, False):
+                    near |= smallest(table, index, 4, positive)
+            chosen += [(64, i, j) for i, j in sorted(near)]
+        elif s["name"] == "tangent_off_axis":
+            chosen = [(w, i, j) for w in (2, 3) for i in range(w) for j in range(w)]
+        else:
+            chosen = [(1, 0, 0)] + [(3, i, j) for i in range(3) for j in range(3)]
+        pixels += [(s, w, i, j) for w, i, j in chosen]
+    return pixels
+
+
+# --------------------------------------------------------------------------
 # Output
 
 
-def header():
-    s = SCENE
-    return {
+def scene_header(s):
+    record = {"name": s["name"]}
+    if "file" in s:
+        record["file"] = s["file"]
+    record.update({
+        "z_E": double_text(s["z_E"]),
+        "S": [double_text(v) for v in s["S"]],
+        "r": double_text(s["r"]),
+        "L": [double_text(v) for v in s["L"]],
+        "I": double_text(s["I"]),
+        "background": double_text(s["background"]),
+        "note": "each number is taken as the exact value of the IEEE double nearest its decimal text",
+    })
+    return record
+
+
+def header(scenes):
+    start = {
         "format": "promyk article reference",
         "format_version": 1,
         "generator": "tests/reference/make_reference.py (python3 with mpmath); regenerate with: "
                      "python3 tests/reference/make_reference.py tests/reference/article_reference.json",
         "precision_bits": PREC,
-        "scene": {
-            "name": "article",
-            "z_E": double_text(s["z_E"]),
-            "S": [double_text(v) for v in s["S"]],
-            "r": double_text(s["r"]),
-            "L": [double_text(v) for v in s["L"]],
-            "I": double_text(s["I"]),
-            "background": double_text(s["background"]),
-            "note": "each number is taken as the exact value of the IEEE double nearest its decimal text",
-        },
+        "scene": scene_header(ARTICLE_SCENE),
+    }
+    if scenes is not None:
+        start = {
+            "format": "promyk scenes reference",
+            "format_version": 1,
+            "generator": "tests/reference/make_reference.py (python3 with mpmath); regenerate with: "
+                         "python3 tests/reference/make_reference.py --scenes tests/reference/scenes_reference.json",
+            "precision_bits": PREC,
+            "scenes": [scene_header(s) for s in scenes],
+            "scene_files": "tests/reference/scenes/FILE, read by promyk's parse_scene in the tests",
+        }
+    return dict(start, **{
         "pane": "E = (x_E, y_E, z_E) with y_E = -(2i+1)/w + 1 and x_E = (2j+1)/w - 1 computed in IEEE doubles "
                 "(the tracer's input); pane_rational holds the exact values [x_E, y_E]",
         "exact": "the article's formula at 200 bits from the exact double inputs, %d significant digits"
@@ -572,25 +666,33 @@ def header():
         "branch": "miss (delta <= 0), dark (D <= 0), lit, or uncertain (the enclosure of delta or D straddles "
                   "the test; steps stop at that test and there is no result)",
         "keys": KEYS,
-    }
+    })
 
 
 def main(argv):
-    if len(argv) != 2:
-        sys.stderr.write("usage: make_reference.py OUTPUT.json\n")
+    scenes_mode = len(argv) == 3 and argv[1] == "--scenes"
+    if len(argv) != 2 and not scenes_mode:
+        sys.stderr.write("usage: make_reference.py [--scenes] OUTPUT.json\n")
         return 2
-    pixels = pixel_set()
+    if scenes_mode:
+        scenes = [load_scene(name) for name in SCENE_FILES]
+        pixels = scenes_pixel_set(scenes)
+        records = [json.dumps(pixel_record(s, w, i, j, name_scene=True), separators=(",", ":"))
+                   for s, w, i, j in pixels]
+    else:
+        scenes = None
+        pixels = pixel_set()
+        records = [json.dumps(pixel_record(ARTICLE_SCENE, w, i, j), separators=(",", ":")) for w, i, j in pixels]
     lines = ["{"]
-    for key, value in header().items():
+    for key, value in header(scenes).items():
         lines.append(" %s: %s," % (json.dumps(key), json.dumps(value, ensure_ascii=True)))
     lines.append(' "pixel_count": %d,' % len(pixels))
     lines.append(' "pixels": [')
-    records = [json.dumps(pixel_record(w, i, j), separators=(",", ":")) for w, i, j in pixels]
     lines.append(",\n".join(records))
     lines.append(" ]")
     lines.append("}")
     text = "\n".join(lines) + "\n"
-    with open(argv[1], "w", encoding="ascii", newline="\n") as out:
+    with open(argv[-1], "w", encoding="ascii", newline="\n") as out:
         out.write(text)
     return 0
 
