@@ -1,7 +1,10 @@
 // Scene files: the article's scene file, defaults, every rejection (with the
 // JSON pointer or line/column it names), round trips, file errors.
 
+#include <cerrno>
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -10,6 +13,12 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <thread>
+
+#include <fcntl.h>
+#include <pthread.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <catch2/catch.hpp>
 
@@ -360,4 +369,70 @@ TEST_CASE("a missing or unreadable scene file is an input error", "[scene]") {
         CHECK(error.where == "/spheres/0/r");
     }
     std::filesystem::remove(bad);
+}
+
+TEST_CASE("a scene file is read to its end through short reads and signals", "[scene]") {
+    const auto fifo = std::filesystem::temp_directory_path() /
+                      ("promyk_scene_json_test_fifo_" + std::to_string(::getpid()));
+    std::filesystem::remove(fifo);
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    // A handler without SA_RESTART, as promyk's own: a blocked read fails with EINTR.
+    struct sigaction quiet {}, old_usr1 {}, old_pipe {};
+    quiet.sa_handler = [](int) {};
+    sigemptyset(&quiet.sa_mask);
+    sigaction(SIGUSR1, &quiet, &old_usr1);
+    struct sigaction ignore {};
+    ignore.sa_handler = SIG_IGN;
+    sigaction(SIGPIPE, &ignore, &old_pipe);  // if the reader gave up early, the writer must not die
+
+    std::ifstream article_file(article_path, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(article_file)), std::istreambuf_iterator<char>());
+    const pthread_t reader = pthread_self();
+    std::thread writer([&] {
+        const int fd = ::open(fifo.c_str(), O_WRONLY);
+        if (fd < 0) return;
+        const auto pause = [] { std::this_thread::sleep_for(std::chrono::milliseconds(150)); };
+        const auto send = [&](std::size_t from, std::size_t count) {
+            if (::write(fd, text.data() + from, count) < 0) return;
+        };
+        send(0, 20);  // a short read
+        pause();
+        send(20, 30);
+        pause();
+        pthread_kill(reader, SIGUSR1);  // the reader is blocked waiting for more
+        pause();
+        send(50, text.size() - 50);
+        ::close(fd);
+    });
+    Scene loaded;
+    std::string failure;
+    try {
+        loaded = promyk::load_scene_file(fifo.string());
+    } catch (const InputError& error) {
+        failure = error.what();
+    }
+    writer.join();
+    sigaction(SIGUSR1, &old_usr1, nullptr);
+    sigaction(SIGPIPE, &old_pipe, nullptr);
+    std::filesystem::remove(fifo);
+    INFO("error: " << failure);
+    REQUIRE(failure.empty());
+    check_same_scene(loaded, promyk::article_scene());
+}
+
+TEST_CASE("a scene file that cannot be opened or read carries errno", "[scene]") {
+    try {
+        promyk::load_scene_file(std::string(PROMYK_SOURCE_DIR) + "/lessons/scenes/no-such-scene.json");
+        FAIL("a missing file loaded");
+    } catch (const promyk::SceneFileError& error) {
+        CHECK(error.error_number == ENOENT);
+        CHECK(error.where.empty());
+    }
+    try {
+        promyk::load_scene_file(std::string(PROMYK_SOURCE_DIR) + "/lessons/scenes");
+        FAIL("a directory loaded");
+    } catch (const promyk::SceneFileError& error) {
+        CHECK(error.error_number == EISDIR);
+        CHECK_THAT(error.what(), Catch::Matchers::Contains("cannot read the scene file: Is a directory"));
+    }
 }

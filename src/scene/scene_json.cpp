@@ -9,18 +9,20 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <functional>
-#include <memory>
 #include <system_error>
 #include <unordered_set>
 #include <vector>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "math/vec3.hpp"
 #include "util/errors.hpp"
+#include "util/interrupt.hpp"
 
 namespace promyk {
 
@@ -464,31 +466,54 @@ std::string vec3_text(const Vec3d& v) {
     return fmt::format("[{}, {}, {}]", number_text(v.x), number_text(v.y), number_text(v.z));
 }
 
-struct FileCloser {
-    void operator()(std::FILE* file) const { std::fclose(file); }
+// Closes a file descriptor when it goes out of scope.
+struct Descriptor {
+    int fd;
+    Descriptor(const Descriptor&) = delete;
+    Descriptor& operator=(const Descriptor&) = delete;
+    ~Descriptor() { ::close(fd); }
 };
 
 std::string errno_text(int error) { return std::error_code(error, std::generic_category()).message(); }
 
 }  // namespace
 
+// A FIFO, a pipe or a slow device may give the file in pieces: read until the
+// end of the file (read() returning 0), not until a short read. A signal that
+// interrupts open() (waiting for a FIFO's writer) or read() (EINTR) is
+// promyk's interrupt (SIGINT, SIGTERM: Interrupted, exit 128 + signal) or
+// else harmless, and the call is made again.
 Scene load_scene_file(const std::string& path) {
-    errno = 0;
-    const std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
-    if (!file) throw InputError(path, "", "cannot open the scene file: " + errno_text(errno));
+    int fd = -1;
+    for (;;) {
+        fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+        if (fd >= 0) break;
+        const int error = errno;
+        if (error == EINTR) {
+            throw_if_interrupted();
+            continue;
+        }
+        throw SceneFileError(path, "cannot open the scene file: " + errno_text(error), error);
+    }
+    const Descriptor file{fd};
     std::string text;
     char buffer[1 << 16];
     for (;;) {
-        const std::size_t got = std::fread(buffer, 1, sizeof buffer, file.get());
-        text.append(buffer, got);
+        const ssize_t got = ::read(file.fd, buffer, sizeof buffer);
+        if (got == 0) break;
+        if (got < 0) {
+            const int error = errno;
+            if (error == EINTR) {
+                throw_if_interrupted();
+                continue;
+            }
+            throw SceneFileError(path, "cannot read the scene file: " + errno_text(error), error);
+        }
+        text.append(buffer, static_cast<std::size_t>(got));
         if (text.size() > max_scene_file_bytes)
             throw InputError(
                 path, "",
                 fmt::format("the scene file is larger than the limit of {} bytes (1 MiB)", max_scene_file_bytes));
-        if (got < sizeof buffer) {
-            if (std::ferror(file.get())) throw InputError(path, "", "cannot read the scene file: " + errno_text(errno));
-            break;
-        }
     }
     return parse_scene(text, path);
 }
