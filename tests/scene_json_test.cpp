@@ -371,6 +371,71 @@ TEST_CASE("a missing or unreadable scene file is an input error", "[scene]") {
     std::filesystem::remove(bad);
 }
 
+// ---------------------------------------------------------------------------
+// Hostile input: bytes that hide content, control characters in messages,
+// files built to be slow, files that arrive slowly.
+
+namespace {
+
+const std::string bom = "\xEF\xBB\xBF";
+
+std::string scene_file(const std::string& name) { return std::string(PROMYK_SOURCE_DIR) + "/tests/cli/scenes/" + name; }
+
+}  // namespace
+
+TEST_CASE("a NUL byte anywhere is rejected at its line and column", "[scene]") {
+    const std::string nul(1, '\0');
+    // nlohmann's lexer takes a NUL for the end of the input: what follows it was ignored.
+    check_rejected(scene_text() + nul + "garbage", "line 1, column " + std::to_string(scene_text().size() + 1),
+                   {"NUL"});
+    check_rejected(scene_text() + "\n\n  " + nul, "line 3, column 3", {"NUL"});
+    check_rejected(nul + scene_text(), "line 1, column 1", {"NUL"});
+    check_rejected(nul, "line 1, column 1", {"NUL"});
+    check_rejected(bom + nul + scene_text(), "line 1, column 1", {"NUL"});  // columns after the byte order mark
+    check_rejected(scene_text("\"name\": \"Ś" + nul + "\",\n"), "line 1, column 12", {"NUL"});  // in a string
+    check_rejected(scene_text("\n\"z_E\": 2" + nul + ",\n"), "line 2, column 9", {"NUL"});
+
+    try {
+        promyk::load_scene_file(scene_file("nul_after_scene.json"));
+        FAIL("a file with a NUL byte loaded");
+    } catch (const InputError& error) {
+        CHECK(error.file == scene_file("nul_after_scene.json"));
+        CHECK(error.where == "line 12, column 1");
+        CHECK_THAT(error.what(), Catch::Matchers::Contains("NUL"));
+    }
+}
+
+TEST_CASE("one byte order mark is allowed, only at the start", "[scene]") {
+    check_accepted(bom + scene_text());
+    check_accepted(bom + "\n " + scene_text());
+    check_rejected(bom + bom + scene_text(), "line 1, column 1", {"byte order mark", "start"});
+    check_rejected(bom + " " + bom + scene_text(), "line 1, column 2", {"byte order mark"});
+    check_rejected(" " + bom + scene_text(), "line 1, column 2", {"byte order mark"});
+    check_rejected(scene_text() + "\n" + bom, "line 2, column 1", {"byte order mark"});
+    check_rejected(scene_text("\"name\": \"a" + bom + "b\","), "line 1, column 12", {"byte order mark"});
+    check_rejected(bom + bom, "line 1, column 1", {"byte order mark"});
+
+    try {
+        promyk::load_scene_file(scene_file("two_byte_order_marks.json"));
+        FAIL("a file with two byte order marks loaded");
+    } catch (const InputError& error) {
+        CHECK(error.where == "line 1, column 1");
+        CHECK_THAT(error.what(), Catch::Matchers::Contains("byte order mark"));
+    }
+}
+
+TEST_CASE("bytes that are not JSON text are syntax errors, in strings and out", "[scene]") {
+    check_rejected(scene_text() + "\xff", "line 1, column " + std::to_string(scene_text().size() + 1),
+                   {"syntax error"});
+    check_rejected("\xFF\xFE{}", "line 1, column 1", {"syntax error"});  // UTF-16's byte order mark
+    check_rejected(scene_text("\"name\": \"a\xff\","), "line 1, column 12", {"syntax error", "UTF-8"});
+    check_rejected(scene_text("\"name\": \"a\xC0\x80\","), "line 1, column 12", {"syntax error", "UTF-8"});
+    check_rejected(scene_text("\"name\": \"a\xED\xA0\x80\","), "line 1, column 13", {"syntax error", "UTF-8"});
+    check_rejected(scene_text("\"name\": \"a\x1b[31m\","), "line 1, column 12", {"syntax error", "control character"});
+    check_rejected(scene_text("\x0c\"z_E\": 2,"), "line 1, column 2", {"syntax error"});  // form feed
+    check_rejected(scene_text("\x1b[8m\"z_E\": 2,"), "line 1, column 2", {"syntax error"});
+}
+
 TEST_CASE("a scene file is read to its end through short reads and signals", "[scene]") {
     const auto fifo = std::filesystem::temp_directory_path() /
                       ("promyk_scene_json_test_fifo_" + std::to_string(::getpid()));

@@ -258,12 +258,33 @@ std::string syntax_reason(const std::string& what) {
     return reason;
 }
 
+// The whole file is the JSON text, with at most one UTF-8 byte order mark at
+// its start (removed from `text` here). A NUL byte anywhere is rejected: the
+// parser would take it for the end of the input and ignore what follows. So
+// is a second byte order mark, or one anywhere else (the parser skips one at
+// the start of what it reads, so two at the start hid one from both checks).
+// Other bytes that are not JSON text are the parser's syntax errors: outside
+// strings anything but JSON's tokens and whitespace, inside strings raw
+// control characters and ill-formed UTF-8.
+void check_bytes(std::string_view& text, const std::string& source) {
+    constexpr std::string_view bom = "\xEF\xBB\xBF";
+    if (text.substr(0, bom.size()) == bom) text.remove_prefix(bom.size());
+    const std::size_t nul = text.find('\0');
+    const std::size_t second_bom = text.find(bom);
+    if (nul != std::string_view::npos && nul < second_bom)
+        throw InputError(source, line_column(text, nul + 1),
+                         "a NUL byte (U+0000), which JSON text never holds; the parser would ignore everything after it");
+    if (second_bom != std::string_view::npos)
+        throw InputError(source, line_column(text, second_bom + 1),
+                         "a UTF-8 byte order mark (U+FEFF) is allowed only once, at the very start of the file");
+}
+
 Json parse_json(std::string_view text, const std::string& source) {
     if (text.size() > max_scene_file_bytes)
         throw InputError(source, "",
                          fmt::format("the scene is {} bytes, more than the limit of {} bytes (1 MiB)", text.size(),
                                      max_scene_file_bytes));
-    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // a UTF-8 byte order mark
+    check_bytes(text, source);
     if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
         throw InputError(source, "",
                          "the scene is empty; a scene is a JSON object such as "
