@@ -381,6 +381,31 @@ const std::string bom = "\xEF\xBB\xBF";
 
 std::string scene_file(const std::string& name) { return std::string(PROMYK_SOURCE_DIR) + "/tests/cli/scenes/" + name; }
 
+// A byte or UTF-8 sequence a terminal acts on: C0, DEL, C1 (C2 80 – C2 9F).
+bool has_terminal_control(const std::string& text) {
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        const auto c = static_cast<unsigned char>(text[k]);
+        if (c < 0x20u || c == 0x7Fu) return true;
+        if (c == 0xC2u && k + 1 < text.size()) {
+            const auto next = static_cast<unsigned char>(text[k + 1]);
+            if (next >= 0x80u && next <= 0x9Fu) return true;
+        }
+    }
+    return false;
+}
+
+// Rejected, and neither the pointer nor the message holds a control character.
+void check_rejected_printable(const std::string& text, const std::string& where,
+                              std::initializer_list<const char*> words) {
+    check_rejected(text, where, words);
+    try {
+        parse_scene(text, "test.json");
+    } catch (const InputError& error) {
+        CHECK(!has_terminal_control(error.where));
+        CHECK(!has_terminal_control(error.what()));
+    }
+}
+
 }  // namespace
 
 TEST_CASE("a NUL byte anywhere is rejected at its line and column", "[scene]") {
@@ -434,6 +459,25 @@ TEST_CASE("bytes that are not JSON text are syntax errors, in strings and out", 
     check_rejected(scene_text("\"name\": \"a\x1b[31m\","), "line 1, column 12", {"syntax error", "control character"});
     check_rejected(scene_text("\x0c\"z_E\": 2,"), "line 1, column 2", {"syntax error"});  // form feed
     check_rejected(scene_text("\x1b[8m\"z_E\": 2,"), "line 1, column 2", {"syntax error"});
+}
+
+TEST_CASE("input text in messages and pointers is printable", "[scene]") {
+    check_rejected_printable(scene_text(R"("\u001b[31mEVIL": 1,)"), "/\\u001b[31mEVIL",
+                             {"unknown key '\\u001b[31mEVIL'"});
+    check_rejected_printable(scene_text("\"\x1b[31mEVIL\": 1,"), "line 1, column 3", {"control character"});
+    check_rejected_printable(scene_text("", R"({"S": [0, 0, 3.2], "r": 1.1, "\n\u009b2J": 1})"),
+                             "/spheres/0/\\n\\u009b2J", {"unknown key '\\n\\u009b2J'"});
+    check_rejected_printable(scene_text("", article_sphere, R"({"L": [1, 1, 1], "I\u007f": 1})"),
+                             "/lights/0/I\\u007f", {"unknown key 'I\\u007f'"});
+    check_rejected_printable(scene_text("\"\xC2\x85\": 1,"), "/\\u0085", {"unknown key '\\u0085'"});
+    check_rejected_printable(scene_text("\"\xE2\x80\xAEtxt\": 1,"), "/\\u202etxt", {"unknown key '\\u202etxt'"});
+    check_rejected_printable(scene_text(R"("\u0007": 1, "\u0007": 2,)"), "/\\u0007", {"duplicate key '\\u0007'"});
+    check_rejected_printable(scene_text(R"("comment": {"\u001b]0;title\u0007": 1e999},)"),
+                             "/comment/\\u001b]0;title\\u0007", {"1e999", "not finite"});
+    check_rejected_printable(scene_text(R"("comment": {"\t": [)" + std::string(70, '[')),
+                             "/comment/\\t/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0"
+                             "/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0",
+                             {"nested deeper than 64"});
 }
 
 TEST_CASE("a scene file is read to its end through short reads and signals", "[scene]") {

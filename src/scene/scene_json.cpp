@@ -23,6 +23,7 @@
 #include "math/vec3.hpp"
 #include "util/errors.hpp"
 #include "util/interrupt.hpp"
+#include "util/printable.hpp"
 
 namespace promyk {
 
@@ -58,10 +59,18 @@ std::string pointer_token(std::string_view token) {
 std::string child(const std::string& pointer, std::string_view key) { return pointer + "/" + pointer_token(key); }
 std::string child(const std::string& pointer, std::size_t index) { return pointer + "/" + std::to_string(index); }
 
-// A key as shown inside a message: JSON string escapes, without the quotes.
+// A key as shown inside a message: JSON string escapes, without the quotes,
+// and printable() for what JSON leaves raw (DEL, C1 controls, ...).
 std::string shown(const std::string& key) {
     const std::string quoted = Json(key).dump(-1, ' ', false, Json::error_handler_t::replace);
-    return quoted.substr(1, quoted.size() - 2);
+    return printable(std::string_view(quoted).substr(1, quoted.size() - 2));
+}
+
+// Every InputError of the loader is made here: the pointer (built from keys
+// of the file) and the message are printable() (the file name is the
+// caller's and is left as given).
+[[noreturn]] void reject(const std::string& source, std::string_view where, std::string_view what) {
+    throw InputError(source, printable(where), printable(what));
 }
 
 std::string lowercase(std::string_view text) {
@@ -171,8 +180,8 @@ public:
             case Json::parse_event_t::object_start:
             case Json::parse_event_t::array_start:
                 if (frames_.size() >= max_nesting)
-                    throw InputError(source_, pending_pointer(),
-                                     fmt::format("nested deeper than {} levels; a scene nests 4", max_nesting));
+                    reject(source_, pending_pointer(),
+                           fmt::format("nested deeper than {} levels; a scene nests 4", max_nesting));
                 count_element();
                 frames_.push_back(Frame{event == Json::parse_event_t::array_start, {}, 0, {}});
                 break;
@@ -180,7 +189,7 @@ public:
                 Frame& frame = frames_.back();
                 frame.key = parsed.get_ref<const std::string&>();
                 if (!frame.keys.insert(frame.key).second)
-                    throw InputError(
+                    reject(
                         source_, pending_pointer(),
                         fmt::format("duplicate key '{}'; a key may appear only once in an object", shown(frame.key)));
                 break;
@@ -272,28 +281,28 @@ void check_bytes(std::string_view& text, const std::string& source) {
     const std::size_t nul = text.find('\0');
     const std::size_t second_bom = text.find(bom);
     if (nul != std::string_view::npos && nul < second_bom)
-        throw InputError(source, line_column(text, nul + 1),
-                         "a NUL byte (U+0000), which JSON text never holds; the parser would ignore everything after it");
+        reject(source, line_column(text, nul + 1),
+               "a NUL byte (U+0000), which JSON text never holds; the parser would ignore everything after it");
     if (second_bom != std::string_view::npos)
-        throw InputError(source, line_column(text, second_bom + 1),
-                         "a UTF-8 byte order mark (U+FEFF) is allowed only once, at the very start of the file");
+        reject(source, line_column(text, second_bom + 1),
+               "a UTF-8 byte order mark (U+FEFF) is allowed only once, at the very start of the file");
 }
 
 Json parse_json(std::string_view text, const std::string& source) {
     if (text.size() > max_scene_file_bytes)
-        throw InputError(source, "",
-                         fmt::format("the scene is {} bytes, more than the limit of {} bytes (1 MiB)", text.size(),
-                                     max_scene_file_bytes));
+        reject(source, "",
+               fmt::format("the scene is {} bytes, more than the limit of {} bytes (1 MiB)", text.size(),
+                           max_scene_file_bytes));
     check_bytes(text, source);
     if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
-        throw InputError(source, "",
-                         "the scene is empty; a scene is a JSON object such as "
-                         "{\"spheres\": [{\"S\": [0, 0, 3.2], \"r\": 1.1}], \"lights\": [{\"L\": [1.5, 1, 1]}]}");
+        reject(source, "",
+               "the scene is empty; a scene is a JSON object such as "
+               "{\"spheres\": [{\"S\": [0, 0, 3.2], \"r\": 1.1}], \"lights\": [{\"L\": [1.5, 1, 1]}]}");
     PathTracker tracker(source);
     try {
         return Json::parse(text.begin(), text.end(), std::ref(tracker));
     } catch (const Json::parse_error& error) {
-        throw InputError(source, line_column(text, error.byte), syntax_reason(error.what()));
+        reject(source, line_column(text, error.byte), syntax_reason(error.what()));
     } catch (const Json::out_of_range& error) {
         // 406: a number literal too large for a double (1e999).
         const std::string what = error.what();
@@ -301,8 +310,8 @@ Json parse_json(std::string_view text, const std::string& source) {
         const std::size_t close = what.rfind('\'');
         const std::string literal =
             open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : "";
-        throw InputError(source, tracker.pending_pointer(),
-                         fmt::format("the number {} is out of the range of a double (it is not finite)", literal));
+        reject(source, tracker.pending_pointer(),
+               fmt::format("the number {} is out of the range of a double (it is not finite)", literal));
     }
 }
 
@@ -353,9 +362,7 @@ public:
     }
 
 private:
-    [[noreturn]] void fail(const std::string& where, const std::string& what) const {
-        throw InputError(source_, where, what);
-    }
+    [[noreturn]] void fail(const std::string& where, const std::string& what) const { reject(source_, where, what); }
 
     static std::string type_of(const Json& value) {
         return value.is_number()    ? "a number"
@@ -532,9 +539,8 @@ Scene load_scene_file(const std::string& path) {
         }
         text.append(buffer, static_cast<std::size_t>(got));
         if (text.size() > max_scene_file_bytes)
-            throw InputError(
-                path, "",
-                fmt::format("the scene file is larger than the limit of {} bytes (1 MiB)", max_scene_file_bytes));
+            reject(path, "",
+                   fmt::format("the scene file is larger than the limit of {} bytes (1 MiB)", max_scene_file_bytes));
     }
     return parse_scene(text, path);
 }
