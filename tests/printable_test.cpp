@@ -92,19 +92,19 @@ TEST_CASE("printable escapes characters that reorder or hide text", "[printable]
 
 TEST_CASE("printable writes each byte of invalid UTF-8 as \\xNN", "[printable]") {
     CHECK(printable("\xff") == "\\xff");
-    CHECK(printable("a\x80z") == "a\\x80z");                    // a stray continuation byte
-    CHECK(printable("\xC5") == "\\xc5");                         // truncated at the end
-    CHECK(printable("\xC5z") == "\\xc5z");                       // truncated before ASCII
-    CHECK(printable("\xE2\x82") == "\\xe2\\x82");                // truncated three-byte form
-    CHECK(printable("\xC0\x80") == "\\xc0\\x80");                // overlong NUL
-    CHECK(printable("\xC1\xBF") == "\\xc1\\xbf");                // overlong DEL
-    CHECK(printable("\xE0\x80\xAF") == "\\xe0\\x80\\xaf");       // overlong '/'
+    CHECK(printable("a\x80z") == "a\\x80z");                         // a stray continuation byte
+    CHECK(printable("\xC5") == "\\xc5");                             // truncated at the end
+    CHECK(printable("\xC5z") == "\\xc5z");                           // truncated before ASCII
+    CHECK(printable("\xE2\x82") == "\\xe2\\x82");                    // truncated three-byte form
+    CHECK(printable("\xC0\x80") == "\\xc0\\x80");                    // overlong NUL
+    CHECK(printable("\xC1\xBF") == "\\xc1\\xbf");                    // overlong DEL
+    CHECK(printable("\xE0\x80\xAF") == "\\xe0\\x80\\xaf");           // overlong '/'
     CHECK(printable("\xF0\x80\x80\xAF") == "\\xf0\\x80\\x80\\xaf");  // overlong '/'
-    CHECK(printable("\xED\xA0\x80") == "\\xed\\xa0\\x80");       // a surrogate, U+D800
+    CHECK(printable("\xED\xA0\x80") == "\\xed\\xa0\\x80");           // a surrogate, U+D800
     CHECK(printable("\xF4\x90\x80\x80") == "\\xf4\\x90\\x80\\x80");  // above U+10FFFF
     CHECK(printable("\xF5\xF8\xFE") == "\\xf5\\xf8\\xfe");
-    CHECK(printable("\xC5\x9B\xff\xC5\x9B") == "ś\\xffś");       // resynchronises after a bad byte
-    CHECK(printable("\xC2\x1b") == "\\xc2\\u001b");              // a bad lead byte hides no ESC
+    CHECK(printable("\xC5\x9B\xff\xC5\x9B") == "ś\\xffś");  // resynchronises after a bad byte
+    CHECK(printable("\xC2\x1b") == "\\xc2\\u001b");         // a bad lead byte hides no ESC
 }
 
 TEST_CASE("printable output is valid, control-free and stable under a second application", "[printable]") {

@@ -467,26 +467,28 @@ TEST_CASE("input text in messages and pointers is printable", "[scene]") {
     check_rejected_printable(scene_text("\"\x1b[31mEVIL\": 1,"), "line 1, column 3", {"control character"});
     check_rejected_printable(scene_text("", R"({"S": [0, 0, 3.2], "r": 1.1, "\n\u009b2J": 1})"),
                              "/spheres/0/\\n\\u009b2J", {"unknown key '\\n\\u009b2J'"});
-    check_rejected_printable(scene_text("", article_sphere, R"({"L": [1, 1, 1], "I\u007f": 1})"),
-                             "/lights/0/I\\u007f", {"unknown key 'I\\u007f'"});
+    check_rejected_printable(scene_text("", article_sphere, R"({"L": [1, 1, 1], "I\u007f": 1})"), "/lights/0/I\\u007f",
+                             {"unknown key 'I\\u007f'"});
     check_rejected_printable(scene_text("\"\xC2\x85\": 1,"), "/\\u0085", {"unknown key '\\u0085'"});
     check_rejected_printable(scene_text("\"\xE2\x80\xAEtxt\": 1,"), "/\\u202etxt", {"unknown key '\\u202etxt'"});
     check_rejected_printable(scene_text(R"("\u0007": 1, "\u0007": 2,)"), "/\\u0007", {"duplicate key '\\u0007'"});
     check_rejected_printable(scene_text(R"("comment": {"\u001b]0;title\u0007": 1e999},)"),
                              "/comment/\\u001b]0;title\\u0007", {"1e999", "not finite"});
-    check_rejected_printable(scene_text(R"("comment": {"\t": [)" + std::string(70, '[')),
-                             "/comment/\\t/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0"
-                             "/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0",
-                             {"nested deeper than 64"});
+    check_rejected_printable(
+        scene_text(R"("comment": {"\t": [)" + std::string(70, '[')),
+        "/comment/\\t/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0"
+        "/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0",
+        {"nested deeper than 64"});
 }
 
 TEST_CASE("a scene file is read to its end through short reads and signals", "[scene]") {
-    const auto fifo = std::filesystem::temp_directory_path() /
-                      ("promyk_scene_json_test_fifo_" + std::to_string(::getpid()));
+    const auto fifo =
+        std::filesystem::temp_directory_path() / ("promyk_scene_json_test_fifo_" + std::to_string(::getpid()));
     std::filesystem::remove(fifo);
     REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
     // A handler without SA_RESTART, as promyk's own: a blocked read fails with EINTR.
-    struct sigaction quiet {}, old_usr1 {}, old_pipe {};
+    struct sigaction quiet {
+    }, old_usr1{}, old_pipe{};
     quiet.sa_handler = [](int) {};
     sigemptyset(&quiet.sa_mask);
     sigaction(SIGUSR1, &quiet, &old_usr1);

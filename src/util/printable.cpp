@@ -50,11 +50,11 @@ std::size_t utf8_sequence(std::string_view text, std::uint32_t& code) {
 
 bool needs_escape(std::uint32_t code) {
     return code < 0x20u || (code >= 0x7Fu && code <= 0x9Fu)  // C0, DEL, C1
-           || code == 0x061Cu                                   // Arabic letter mark
-           || code == 0x200Eu || code == 0x200Fu                // left-to-right, right-to-left marks
-           || (code >= 0x2028u && code <= 0x202Eu)              // separators, embeddings, overrides
-           || (code >= 0x2066u && code <= 0x2069u)              // isolates
-           || code == 0xFEFFu;                                  // byte order mark
+           || code == 0x061Cu                                // Arabic letter mark
+           || code == 0x200Eu || code == 0x200Fu             // left-to-right, right-to-left marks
+           || (code >= 0x2028u && code <= 0x202Eu)           // separators, embeddings, overrides
+           || (code >= 0x2066u && code <= 0x2069u)           // isolates
+           || code == 0xFEFFu;                               // byte order mark
 }
 
 }  // namespace
