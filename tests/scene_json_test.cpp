@@ -481,6 +481,86 @@ TEST_CASE("input text in messages and pointers is printable", "[scene]") {
         {"nested deeper than 64"});
 }
 
+namespace {
+
+// `count` distinct keys of 1 to 3 printable ASCII characters (none of the
+// format's keys, no '"' or '\\'), each with the value 0, after `first`.
+std::string many_members(std::size_t count, const std::string& first) {
+    std::string alphabet;
+    for (char c = '!'; c <= '~'; ++c)
+        if (c != '"' && c != '\\') alphabet += c;
+    std::string out = "\"" + first + "\":0";
+    std::size_t made = 1;
+    for (std::size_t length = 1; length <= 3 && made < count; ++length) {
+        std::size_t combinations = 1;
+        for (std::size_t k = 0; k < length; ++k) combinations *= alphabet.size();
+        for (std::size_t n = 0; n < combinations && made < count; ++n) {
+            std::string key;
+            for (std::size_t k = 0, rest = n; k < length; ++k, rest /= alphabet.size())
+                key += alphabet[rest % alphabet.size()];
+            if (key == "S" || key == "r" || key == "L" || key == "I" || key == "z_E" || key == first) continue;
+            out += ",\"" + key + "\":0";
+            ++made;
+        }
+    }
+    return out;
+}
+
+void check_rejected_in_time(const std::string& text, const std::string& where,
+                            std::initializer_list<const char*> words) {
+    REQUIRE(text.size() <= promyk::max_scene_file_bytes);
+    const auto start = std::chrono::steady_clock::now();
+    check_rejected(text, where, words);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    INFO("bytes: " << text.size() << ", seconds: " << seconds);
+    CHECK(seconds < 10);  // a bound for slow (sanitizer) builds, not a speed claim
+}
+
+}  // namespace
+
+TEST_CASE("a scene file of many keys is rejected in time, whatever its shape", "[scene][slow]") {
+    const std::size_t keys = 131567;  // a 1 MiB file of such keys took 39.5 s when objects kept file order
+    const std::string members = many_members(keys, "nmae");
+    check_rejected_in_time("{" + members + "}", "/nmae", {"unknown key 'nmae'; did you mean 'name'?"});
+    check_rejected_in_time("{" + members + ",\"!\":1}", "/!", {"duplicate key '!'"});
+    check_rejected_in_time("{\"name\":{" + members + "}}", "/name", {"name must be a string, got an object"});
+    check_rejected_in_time("{\"comment\":{" + members + "}}", "/comment", {"unknown key 'comment'"});
+    check_rejected_in_time("{\"spheres\":[{" + many_members(keys - 2, "radius") + ",\"S\":[0,0,3],\"r\":1}]}",
+                           "/spheres/0/radius", {"unknown key 'radius'; did you mean 'r'?"});
+    std::string empty_objects = "{}";
+    for (int k = 1; k < 200000; ++k) empty_objects += ",{}";
+    check_rejected_in_time("{\"spheres\":[" + empty_objects + "]}", "/spheres", {"exactly one sphere", "got 200000"});
+    std::string empty_arrays = "[]";
+    for (int k = 1; k < 200000; ++k) empty_arrays += ",[]";
+    check_rejected_in_time("{\"background\":[" + empty_arrays + "]}", "/background",
+                           {"background must be a number, got an array"});
+    std::string zeros = "0";
+    for (int k = 1; k < 300000; ++k) zeros += ",0";
+    check_rejected_in_time("{\"spheres\":[" + zeros + "]}", "/spheres", {"exactly one sphere", "got 300000"});
+    // The first unknown key in file order is reported, wherever the others sit.
+    check_rejected_in_time("{\"lights\":[{\"L\":[1,1,1],\"power\":1," + many_members(keys - 3, "~~~~") +
+                               "}],\"spheres\":[{\"S\":[0,0,3],\"r\":1}]}",
+                           "/lights/0/power", {"unknown key 'power'; did you mean 'I'?"});
+}
+
+TEST_CASE("the first unknown key in the file is the one reported", "[scene]") {
+    check_rejected(scene_text(R"("zzz": 1, "aaa": 1, "nmae": 1,)"), "/zzz", {"unknown key 'zzz'"});
+    check_rejected(scene_text("", R"({"x": 1, "S": [0, 0, 3.2], "r": 1.1, "a": 2})"), "/spheres/0/x",
+                   {"unknown key 'x'"});
+    check_rejected(scene_text("", article_sphere, R"({"q": 1, "L": [1, 1, 1], "b": 2})"), "/lights/0/q",
+                   {"unknown key 'q'"});
+    // Found after the file is read: a later syntax error is reported first ...
+    check_rejected(R"({"zzz": 1, "spheres": [}])", "line 1, column 24", {"syntax error"});
+    // ... and the top level's keys before a sphere's, a sphere's before its fields.
+    check_rejected(R"({"spheres": [{"x": 1, "S": [0, 0, 3], "r": -1}], "lights": [], "zzz": 1})", "/zzz",
+                   {"unknown key 'zzz'"});
+    check_rejected(R"({"z_E": -1, "spheres": [{"x": 1, "S": [0, 0, 3], "r": 1}], "lights": []})", "/z_E", {"> 0"});
+    check_rejected(R"({"spheres": [{"S": [0, 0, 3], "r": -1, "x": 1}], "lights": []})", "/spheres/0/x",
+                   {"unknown key 'x'"});
+    // In a second sphere (not read in this version), unknown keys do not matter before the count does.
+    check_rejected(scene_text("", article_sphere + R"(, {"x": 1})"), "/spheres", {"exactly one sphere"});
+}
+
 TEST_CASE("a scene file is read to its end through short reads and signals", "[scene]") {
     const auto fifo =
         std::filesystem::temp_directory_path() / ("promyk_scene_json_test_fifo_" + std::to_string(::getpid()));
