@@ -1,7 +1,10 @@
 // Scene files: the article's scene file, defaults, every rejection (with the
 // JSON pointer or line/column it names), round trips, file errors.
 
+#include <cerrno>
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -10,6 +13,12 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <thread>
+
+#include <fcntl.h>
+#include <pthread.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <catch2/catch.hpp>
 
@@ -360,4 +369,261 @@ TEST_CASE("a missing or unreadable scene file is an input error", "[scene]") {
         CHECK(error.where == "/spheres/0/r");
     }
     std::filesystem::remove(bad);
+}
+
+// ---------------------------------------------------------------------------
+// Hostile input: bytes that hide content, control characters in messages,
+// files built to be slow, files that arrive slowly.
+
+namespace {
+
+const std::string bom = "\xEF\xBB\xBF";
+
+std::string scene_file(const std::string& name) { return std::string(PROMYK_SOURCE_DIR) + "/tests/cli/scenes/" + name; }
+
+// A byte or UTF-8 sequence a terminal acts on: C0, DEL, C1 (C2 80 – C2 9F).
+bool has_terminal_control(const std::string& text) {
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        const auto c = static_cast<unsigned char>(text[k]);
+        if (c < 0x20u || c == 0x7Fu) return true;
+        if (c == 0xC2u && k + 1 < text.size()) {
+            const auto next = static_cast<unsigned char>(text[k + 1]);
+            if (next >= 0x80u && next <= 0x9Fu) return true;
+        }
+    }
+    return false;
+}
+
+// Rejected, and neither the pointer nor the message holds a control character.
+void check_rejected_printable(const std::string& text, const std::string& where,
+                              std::initializer_list<const char*> words) {
+    check_rejected(text, where, words);
+    try {
+        parse_scene(text, "test.json");
+    } catch (const InputError& error) {
+        CHECK(!has_terminal_control(error.where));
+        CHECK(!has_terminal_control(error.what()));
+    }
+}
+
+}  // namespace
+
+TEST_CASE("a NUL byte anywhere is rejected at its line and column", "[scene]") {
+    const std::string nul(1, '\0');
+    // nlohmann's lexer takes a NUL for the end of the input: what follows it was ignored.
+    check_rejected(scene_text() + nul + "garbage", "line 1, column " + std::to_string(scene_text().size() + 1),
+                   {"NUL"});
+    check_rejected(scene_text() + "\n\n  " + nul, "line 3, column 3", {"NUL"});
+    check_rejected(nul + scene_text(), "line 1, column 1", {"NUL"});
+    check_rejected(nul, "line 1, column 1", {"NUL"});
+    check_rejected(bom + nul + scene_text(), "line 1, column 1", {"NUL"});  // columns after the byte order mark
+    check_rejected(scene_text("\"name\": \"Ś" + nul + "\",\n"), "line 1, column 12", {"NUL"});  // in a string
+    check_rejected(scene_text("\n\"z_E\": 2" + nul + ",\n"), "line 2, column 9", {"NUL"});
+
+    try {
+        promyk::load_scene_file(scene_file("nul_after_scene.json"));
+        FAIL("a file with a NUL byte loaded");
+    } catch (const InputError& error) {
+        CHECK(error.file == scene_file("nul_after_scene.json"));
+        CHECK(error.where == "line 12, column 1");
+        CHECK_THAT(error.what(), Catch::Matchers::Contains("NUL"));
+    }
+}
+
+TEST_CASE("one byte order mark is allowed, only at the start", "[scene]") {
+    check_accepted(bom + scene_text());
+    check_accepted(bom + "\n " + scene_text());
+    check_rejected(bom + bom + scene_text(), "line 1, column 1", {"byte order mark", "start"});
+    check_rejected(bom + " " + bom + scene_text(), "line 1, column 2", {"byte order mark"});
+    check_rejected(" " + bom + scene_text(), "line 1, column 2", {"byte order mark"});
+    check_rejected(scene_text() + "\n" + bom, "line 2, column 1", {"byte order mark"});
+    check_rejected(scene_text("\"name\": \"a" + bom + "b\","), "line 1, column 12", {"byte order mark"});
+    check_rejected(bom + bom, "line 1, column 1", {"byte order mark"});
+
+    try {
+        promyk::load_scene_file(scene_file("two_byte_order_marks.json"));
+        FAIL("a file with two byte order marks loaded");
+    } catch (const InputError& error) {
+        CHECK(error.where == "line 1, column 1");
+        CHECK_THAT(error.what(), Catch::Matchers::Contains("byte order mark"));
+    }
+}
+
+TEST_CASE("bytes that are not JSON text are syntax errors, in strings and out", "[scene]") {
+    check_rejected(scene_text() + "\xff", "line 1, column " + std::to_string(scene_text().size() + 1),
+                   {"syntax error"});
+    check_rejected("\xFF\xFE{}", "line 1, column 1", {"syntax error"});  // UTF-16's byte order mark
+    check_rejected(scene_text("\"name\": \"a\xff\","), "line 1, column 12", {"syntax error", "UTF-8"});
+    check_rejected(scene_text("\"name\": \"a\xC0\x80\","), "line 1, column 12", {"syntax error", "UTF-8"});
+    check_rejected(scene_text("\"name\": \"a\xED\xA0\x80\","), "line 1, column 13", {"syntax error", "UTF-8"});
+    check_rejected(scene_text("\"name\": \"a\x1b[31m\","), "line 1, column 12", {"syntax error", "control character"});
+    check_rejected(scene_text("\x0c\"z_E\": 2,"), "line 1, column 2", {"syntax error"});  // form feed
+    check_rejected(scene_text("\x1b[8m\"z_E\": 2,"), "line 1, column 2", {"syntax error"});
+}
+
+TEST_CASE("input text in messages and pointers is printable", "[scene]") {
+    check_rejected_printable(scene_text(R"("\u001b[31mEVIL": 1,)"), "/\\u001b[31mEVIL",
+                             {"unknown key '\\u001b[31mEVIL'"});
+    check_rejected_printable(scene_text("\"\x1b[31mEVIL\": 1,"), "line 1, column 3", {"control character"});
+    check_rejected_printable(scene_text("", R"({"S": [0, 0, 3.2], "r": 1.1, "\n\u009b2J": 1})"),
+                             "/spheres/0/\\n\\u009b2J", {"unknown key '\\n\\u009b2J'"});
+    check_rejected_printable(scene_text("", article_sphere, R"({"L": [1, 1, 1], "I\u007f": 1})"), "/lights/0/I\\u007f",
+                             {"unknown key 'I\\u007f'"});
+    check_rejected_printable(scene_text("\"\xC2\x85\": 1,"), "/\\u0085", {"unknown key '\\u0085'"});
+    check_rejected_printable(scene_text("\"\xE2\x80\xAEtxt\": 1,"), "/\\u202etxt", {"unknown key '\\u202etxt'"});
+    check_rejected_printable(scene_text(R"("\u0007": 1, "\u0007": 2,)"), "/\\u0007", {"duplicate key '\\u0007'"});
+    check_rejected_printable(scene_text(R"("comment": {"\u001b]0;title\u0007": 1e999},)"),
+                             "/comment/\\u001b]0;title\\u0007", {"1e999", "not finite"});
+    check_rejected_printable(
+        scene_text(R"("comment": {"\t": [)" + std::string(70, '[')),
+        "/comment/\\t/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0"
+        "/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0/0",
+        {"nested deeper than 64"});
+}
+
+namespace {
+
+// `count` distinct keys of 1 to 3 printable ASCII characters (none of the
+// format's keys, no '"' or '\\'), each with the value 0, after `first`.
+std::string many_members(std::size_t count, const std::string& first) {
+    std::string alphabet;
+    for (char c = '!'; c <= '~'; ++c)
+        if (c != '"' && c != '\\') alphabet += c;
+    std::string out = "\"" + first + "\":0";
+    std::size_t made = 1;
+    for (std::size_t length = 1; length <= 3 && made < count; ++length) {
+        std::size_t combinations = 1;
+        for (std::size_t k = 0; k < length; ++k) combinations *= alphabet.size();
+        for (std::size_t n = 0; n < combinations && made < count; ++n) {
+            std::string key;
+            for (std::size_t k = 0, rest = n; k < length; ++k, rest /= alphabet.size())
+                key += alphabet[rest % alphabet.size()];
+            if (key == "S" || key == "r" || key == "L" || key == "I" || key == "z_E" || key == first) continue;
+            out += ",\"" + key + "\":0";
+            ++made;
+        }
+    }
+    return out;
+}
+
+void check_rejected_in_time(const std::string& text, const std::string& where,
+                            std::initializer_list<const char*> words) {
+    REQUIRE(text.size() <= promyk::max_scene_file_bytes);
+    const auto start = std::chrono::steady_clock::now();
+    check_rejected(text, where, words);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    INFO("bytes: " << text.size() << ", seconds: " << seconds);
+    CHECK(seconds < 10);  // a bound for slow (sanitizer) builds, not a speed claim
+}
+
+}  // namespace
+
+TEST_CASE("a scene file of many keys is rejected in time, whatever its shape", "[scene][slow]") {
+    const std::size_t keys = 131567;  // a 1 MiB file of such keys took 39.5 s when objects kept file order
+    const std::string members = many_members(keys, "nmae");
+    check_rejected_in_time("{" + members + "}", "/nmae", {"unknown key 'nmae'; did you mean 'name'?"});
+    check_rejected_in_time("{" + members + ",\"!\":1}", "/!", {"duplicate key '!'"});
+    check_rejected_in_time("{\"name\":{" + members + "}}", "/name", {"name must be a string, got an object"});
+    check_rejected_in_time("{\"comment\":{" + members + "}}", "/comment", {"unknown key 'comment'"});
+    check_rejected_in_time("{\"spheres\":[{" + many_members(keys - 2, "radius") + ",\"S\":[0,0,3],\"r\":1}]}",
+                           "/spheres/0/radius", {"unknown key 'radius'; did you mean 'r'?"});
+    std::string empty_objects = "{}";
+    for (int k = 1; k < 200000; ++k) empty_objects += ",{}";
+    check_rejected_in_time("{\"spheres\":[" + empty_objects + "]}", "/spheres", {"exactly one sphere", "got 200000"});
+    std::string empty_arrays = "[]";
+    for (int k = 1; k < 200000; ++k) empty_arrays += ",[]";
+    check_rejected_in_time("{\"background\":[" + empty_arrays + "]}", "/background",
+                           {"background must be a number, got an array"});
+    std::string zeros = "0";
+    for (int k = 1; k < 300000; ++k) zeros += ",0";
+    check_rejected_in_time("{\"spheres\":[" + zeros + "]}", "/spheres", {"exactly one sphere", "got 300000"});
+    // The first unknown key in file order is reported, wherever the others sit.
+    check_rejected_in_time("{\"lights\":[{\"L\":[1,1,1],\"power\":1," + many_members(keys - 3, "~~~~") +
+                               "}],\"spheres\":[{\"S\":[0,0,3],\"r\":1}]}",
+                           "/lights/0/power", {"unknown key 'power'; did you mean 'I'?"});
+}
+
+TEST_CASE("the first unknown key in the file is the one reported", "[scene]") {
+    check_rejected(scene_text(R"("zzz": 1, "aaa": 1, "nmae": 1,)"), "/zzz", {"unknown key 'zzz'"});
+    check_rejected(scene_text("", R"({"x": 1, "S": [0, 0, 3.2], "r": 1.1, "a": 2})"), "/spheres/0/x",
+                   {"unknown key 'x'"});
+    check_rejected(scene_text("", article_sphere, R"({"q": 1, "L": [1, 1, 1], "b": 2})"), "/lights/0/q",
+                   {"unknown key 'q'"});
+    // Found after the file is read: a later syntax error is reported first ...
+    check_rejected(R"({"zzz": 1, "spheres": [}])", "line 1, column 24", {"syntax error"});
+    // ... and the top level's keys before a sphere's, a sphere's before its fields.
+    check_rejected(R"({"spheres": [{"x": 1, "S": [0, 0, 3], "r": -1}], "lights": [], "zzz": 1})", "/zzz",
+                   {"unknown key 'zzz'"});
+    check_rejected(R"({"z_E": -1, "spheres": [{"x": 1, "S": [0, 0, 3], "r": 1}], "lights": []})", "/z_E", {"> 0"});
+    check_rejected(R"({"spheres": [{"S": [0, 0, 3], "r": -1, "x": 1}], "lights": []})", "/spheres/0/x",
+                   {"unknown key 'x'"});
+    // In a second sphere (not read in this version), unknown keys do not matter before the count does.
+    check_rejected(scene_text("", article_sphere + R"(, {"x": 1})"), "/spheres", {"exactly one sphere"});
+}
+
+TEST_CASE("a scene file is read to its end through short reads and signals", "[scene]") {
+    const auto fifo =
+        std::filesystem::temp_directory_path() / ("promyk_scene_json_test_fifo_" + std::to_string(::getpid()));
+    std::filesystem::remove(fifo);
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    // A handler without SA_RESTART, as promyk's own: a blocked read fails with EINTR.
+    struct sigaction quiet {
+    }, old_usr1{}, old_pipe{};
+    quiet.sa_handler = [](int) {};
+    sigemptyset(&quiet.sa_mask);
+    sigaction(SIGUSR1, &quiet, &old_usr1);
+    struct sigaction ignore {};
+    ignore.sa_handler = SIG_IGN;
+    sigaction(SIGPIPE, &ignore, &old_pipe);  // if the reader gave up early, the writer must not die
+
+    std::ifstream article_file(article_path, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(article_file)), std::istreambuf_iterator<char>());
+    const pthread_t reader = pthread_self();
+    std::thread writer([&] {
+        const int fd = ::open(fifo.c_str(), O_WRONLY);
+        if (fd < 0) return;
+        const auto pause = [] { std::this_thread::sleep_for(std::chrono::milliseconds(150)); };
+        const auto send = [&](std::size_t from, std::size_t count) {
+            if (::write(fd, text.data() + from, count) < 0) return;
+        };
+        send(0, 20);  // a short read
+        pause();
+        send(20, 30);
+        pause();
+        pthread_kill(reader, SIGUSR1);  // the reader is blocked waiting for more
+        pause();
+        send(50, text.size() - 50);
+        ::close(fd);
+    });
+    Scene loaded;
+    std::string failure;
+    try {
+        loaded = promyk::load_scene_file(fifo.string());
+    } catch (const InputError& error) {
+        failure = error.what();
+    }
+    writer.join();
+    sigaction(SIGUSR1, &old_usr1, nullptr);
+    sigaction(SIGPIPE, &old_pipe, nullptr);
+    std::filesystem::remove(fifo);
+    INFO("error: " << failure);
+    REQUIRE(failure.empty());
+    check_same_scene(loaded, promyk::article_scene());
+}
+
+TEST_CASE("a scene file that cannot be opened or read carries errno", "[scene]") {
+    try {
+        promyk::load_scene_file(std::string(PROMYK_SOURCE_DIR) + "/lessons/scenes/no-such-scene.json");
+        FAIL("a missing file loaded");
+    } catch (const promyk::SceneFileError& error) {
+        CHECK(error.error_number == ENOENT);
+        CHECK(error.where.empty());
+    }
+    try {
+        promyk::load_scene_file(std::string(PROMYK_SOURCE_DIR) + "/lessons/scenes");
+        FAIL("a directory loaded");
+    } catch (const promyk::SceneFileError& error) {
+        CHECK(error.error_number == EISDIR);
+        CHECK_THAT(error.what(), Catch::Matchers::Contains("cannot read the scene file: Is a directory"));
+    }
 }

@@ -10,16 +10,30 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "scene/scene.hpp"
+#include "util/errors.hpp"
 
 namespace promyk {
 
 // Scene files larger than this are refused before parsing.
 inline constexpr std::size_t max_scene_file_bytes = std::size_t{1} << 20;  // 1 MiB
 
+// A scene file that could not be opened or read: an InputError (exit 3) with
+// an empty `where`, strerror's text in the message, and the errno of the
+// failing call (ENOENT, EACCES, EISDIR, EIO, ...).
+struct SceneFileError : InputError {
+    SceneFileError(std::string file_name, const std::string& what, int error)
+        : InputError(std::move(file_name), "", what), error_number(error) {}
+    int error_number;
+};
+
 // Reads and parses the scene file at `path`; the scene's `source` is `path`.
-// A missing or unreadable file is an InputError carrying strerror's text.
+// Reads to the end of the file, however it arrives (a FIFO, a pipe, a slow
+// device). A missing or unreadable file is a SceneFileError. A signal that
+// interrupts the reading is Interrupted if it is SIGINT or SIGTERM (see
+// util/interrupt.hpp) and is otherwise ignored.
 Scene load_scene_file(const std::string& path);
 
 // Parses scene text; `source` names it in errors and becomes the scene's
