@@ -17,11 +17,26 @@
 #include "app/commands.hpp"
 #include "util/edit_distance.hpp"
 #include "util/errors.hpp"
+#include "util/printable.hpp"
 #include "util/interrupt.hpp"
 
 namespace {
 
-void report(const std::string& what) { fmt::print(stderr, "promyk: {}\n", what); }
+// Messages carry input (paths, keys, values): printable() keeps terminal
+// control sequences out of them, and a very long one is cut to a screenful.
+std::string shown(const std::string& text) {
+    constexpr std::size_t most = 2000;
+    std::string safe = promyk::printable(text);
+    if (safe.size() > most) {
+        safe.resize(most);
+        while (!safe.empty() && (static_cast<unsigned char>(safe.back()) & 0xC0) == 0x80) safe.pop_back();
+        if (!safe.empty() && static_cast<unsigned char>(safe.back()) >= 0xC0) safe.pop_back();
+        safe += " … (cut)";
+    }
+    return safe;
+}
+
+void report(const std::string& what) { fmt::print(stderr, "promyk: {}\n", shown(what)); }
 
 // "unknown command 'Render'; did you mean 'render'? ..."
 std::string unknown_command_message(const std::string& typed, const std::vector<std::string>& commands) {
@@ -103,7 +118,7 @@ int main(int argc, char** argv) {
         fmt::print(stderr, "Run 'promyk {} --help' for the options.\n", name);
         return 2;
     } catch (const promyk::InputError& error) {
-        fmt::print(stderr, "promyk: {}: {}\n", where_of(error), error.what());
+        report(fmt::format("{}: {}", where_of(error), error.what()));
         return 3;
     } catch (const promyk::OutputError& error) {
         report(error.what());

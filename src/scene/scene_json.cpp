@@ -21,6 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include "math/vec3.hpp"
+#include "util/edit_distance.hpp"
 #include "util/errors.hpp"
 #include "util/interrupt.hpp"
 #include "util/printable.hpp"
@@ -78,22 +79,6 @@ std::string lowercase(std::string_view text) {
     std::string out(text);
     for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     return out;
-}
-
-// Levenshtein distance (insert, delete, substitute one byte).
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diagonal = row[0];
-        row[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            const std::size_t above = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0u : 1u)});
-            diagonal = above;
-        }
-    }
-    return row[b.size()];
 }
 
 // ---------------------------------------------------------------------------

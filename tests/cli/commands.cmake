@@ -37,3 +37,10 @@ promyk_cli_test(trace_far_centre ARGS trace --scene ${scenes}/far_centre.json --
 # Empty values are errors, not "none" (CMake lists cannot carry an empty argument).
 add_test(NAME cli.empty_values COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cli/empty_values_test.sh $<TARGET_FILE:promyk>
                                        ${CMAKE_CURRENT_BINARY_DIR}/cli/empty_values)
+
+# Input-derived text in messages is escaped (no raw control characters).
+add_test(NAME cli.escapes COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cli/escapes_test.sh $<TARGET_FILE:promyk>
+                                  ${CMAKE_CURRENT_BINARY_DIR}/cli/escapes)
+promyk_cli_test(scene_nul ARGS trace --scene ${scenes}/nul_after_scene.json EXIT 3 STDERR "nul_after_scene.json: line")
+promyk_cli_test(scene_two_boms ARGS trace --scene ${scenes}/two_byte_order_marks.json EXIT 3
+                STDERR "two_byte_order_marks.json: line 1")
