@@ -153,8 +153,11 @@ TEST_CASE("a hit whose N.K is exactly 0 is dark, and I scales a lit one", "[trac
 
 TEST_CASE("the article's three pixels at w = 8 take the three branches", "[tracer]") {
     const Scene scene = article_scene();
-    const std::vector<std::string> miss_keys = {"E", "EE", "SS", "C", "delta"};
-    const std::vector<std::string> hit_keys = {"E", "EE", "SS", "C", "delta", "t", "P", "N", "K", "KK", "D"};
+    // The program's 11 steps in its order, with the lessons' quantities
+    // where the derivation introduces them (Delta after delta, N_P after N, ...).
+    const std::vector<std::string> miss_keys = {"E", "EE", "SS", "C", "delta", "Delta"};
+    const std::vector<std::string> hit_keys = {"E",  "EE", "SS",    "C",   "delta", "Delta", "sqrt_Delta", "t", "P",
+                                               "N",  "N_P", "K",    "KK",  "K_len", "K_P",   "D",          "cos_alpha"};
 
     const PixelTrace miss = trace_pixel(scene, 8, 0, 0);
     CHECK(miss.branch == Branch::miss);

@@ -31,11 +31,17 @@ std::optional<Real> intersect_sphere_article(const Vec3<Real>& E, const Vec3<Rea
     // Compute the program's delta: a quarter of formula (2)'s discriminant.
     const Real delta = C * C - EE * (SS - r * r);
     record(Key::delta, delta);
+    using std::sqrt;
+    if constexpr (Recorder::records) {
+        // Formula (2)'s own discriminant, for the lessons: Delta = 4 delta, and
+        // sqrt(Delta) = 2 sqrt(delta) (both exact: 4 and 2 are powers of two).
+        record(Key::Delta, Real(4) * delta);
+        if (delta > 0) record(Key::sqrt_Delta, sqrt(Real(4) * delta));
+    }
     using std::isinf;
     if (delta <= 0 && !isinf(delta)) return std::nullopt;
 
     // Compute the nearer root: the minus sign, since |E|^2 > 0.
-    using std::sqrt;
     const Real t = (C - sqrt(delta)) / EE;
     record(Key::t, t);
     return t;

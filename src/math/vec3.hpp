@@ -18,6 +18,12 @@ constexpr Vec3<Real> operator-(const Vec3<Real>& P, const Vec3<Real>& Q) {
     return {P.x - Q.x, P.y - Q.y, P.z - Q.z};
 }
 
+// E / t = (x_E / t, y_E / t, z_E / t): used for unit vectors, N / r.
+template <class Real>
+constexpr Vec3<Real> operator/(const Vec3<Real>& E, Real t) {
+    return {E.x / t, E.y / t, E.z / t};
+}
+
 template <class Real>
 constexpr Vec3<Real> operator+(const Vec3<Real>& P, const Vec3<Real>& Q) {
     return {P.x + Q.x, P.y + Q.y, P.z + Q.z};

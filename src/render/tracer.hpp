@@ -46,7 +46,7 @@ PixelResult<Real> trace_ray(const ArticleWorld<Real>& world, const Vec3<Real>& E
     // A root that overflowed, or a delta that was not finite, decides nothing.
     using std::isfinite;
     if (!isfinite(*t)) return {std::numeric_limits<Real>::quiet_NaN(), Branch::non_finite};
-    const Hit<Real> hit = describe_sphere_hit(*t, E, world.S, record);
+    const Hit<Real> hit = describe_sphere_hit(*t, E, world.S, world.r, record);
     const Shade<Real> shade = shade_lambert(hit.P, hit.N, world.r, world.L, world.I, record);
     return {shade.I_P, shade.branch};
 }

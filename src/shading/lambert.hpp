@@ -26,9 +26,21 @@ Shade<Real> shade_lambert(const Vec3<Real>& P, const Vec3<Real>& N, Real r, cons
     record(Key::K, K);
     const Real KK = length_squared(K);  // the program's K = |K|^2
     record(Key::KK, KK);
+    if constexpr (Recorder::records) {
+        // |K| and the unit direction K_P = K / |K| of section 4, for the
+        // lessons; undefined when the light sits on P (|K| = 0).
+        const Real K_len = sqrt(KK);
+        record(Key::K_len, K_len);
+        if (K_len > 0) record(Key::K_P, K / K_len);
+    }
     // Compute D = N.K: |N||K| cos(alpha), negative on the dark side.
     const Real D = dot(N, K);
     record(Key::D, D);
+    if constexpr (Recorder::records) {
+        // cos(alpha) = N_P.K_P, as formula (1) gives it for unit vectors.
+        const Real K_len = sqrt(KK);
+        if (K_len > 0) record(Key::cos_alpha, dot(N / r, K / K_len));
+    }
     // An overflow anywhere since E shows in |K|^2 or D (each sums squares or
     // products of every earlier quantity); a NaN must not decide dark or lit.
     if (!isfinite(KK) || !isfinite(D)) return {std::numeric_limits<Real>::quiet_NaN(), Branch::non_finite};

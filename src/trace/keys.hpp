@@ -19,11 +19,23 @@ enum class Key {
     K,      // L - P (the unnormalised direction to the light)
     KK,     // |K|^2 (the program's K)
     D,      // N.K
+    // Quantities only the lessons need (formula (2) and section 4 of the
+    // article), recorded only by a recording recorder: rendering never pays.
+    Delta,       // formula (2)'s discriminant, 4 delta
+    sqrt_Delta,  // its square root, 2 sqrt(delta)
+    N_P,         // N / r: the unit normal
+    K_len,       // |K| = sqrt(|K|^2), the distance from P to the light
+    K_P,         // K / |K|: the unit direction to the light
+    cos_alpha,   // N_P.K_P, the cosine of the angle between them
 };
 
-inline constexpr std::array<std::string_view, 11> key_names = {
+inline constexpr std::array<std::string_view, 17> key_names = {
     "E", "EE", "SS", "C", "delta", "t", "P", "N", "K", "KK", "D",
+    "Delta", "sqrt_Delta", "N_P", "K_len", "K_P", "cos_alpha",
 };
+
+// The article's program's own steps, as opposed to the lessons' extra ones.
+constexpr bool is_program_key(Key key) { return key <= Key::D; }
 
 constexpr std::string_view key_name(Key key) { return key_names[static_cast<std::size_t>(key)]; }
 

@@ -146,11 +146,12 @@ std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary) {
     if (trace.first_non_finite && *trace.first_non_finite < trace.steps.size()) {
         const std::size_t k = *trace.first_non_finite;
         const std::string key(key_name(trace.steps[k].key));
+        const bool decides = trace.branch == Branch::non_finite;
         out += wrap("first non-finite value: ",
-                    fmt::format("step {}, {} = {}: the numbers left the range of a double (about ±1.8e308), "
-                                "so no comparison from here on can be trusted",
-                                k + 1, symbol_of(vocabulary, key),
-                                format_value(trace.steps[k].value, kind_of(vocabulary, key))),
+                    fmt::format("step {}, {} = {}: the numbers left the range of a double (about ±1.8e308){}", k + 1,
+                                symbol_of(vocabulary, key), format_value(trace.steps[k].value, kind_of(vocabulary, key)),
+                                decides ? ", so no comparison from here on can be trusted"
+                                        : "; only the lessons compute it, the program's own numbers stayed finite"),
                     2);
     }
     out += wrap("grey level: ", fmt::format("{} of 255 = round(255 · {}), {} clamped to [0, 1], halves up{}",
