@@ -14,5 +14,6 @@ namespace promyk::app {
 std::function<int()> setup_render(CLI::App& app);
 std::function<int()> setup_trace(CLI::App& app);
 std::function<int()> setup_bench(CLI::App& app);
+std::function<int()> setup_lesson(CLI::App& app);
 
 }  // namespace promyk::app

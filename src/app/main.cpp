@@ -77,7 +77,8 @@ int main(int argc, char** argv) {
     const auto render = promyk::app::setup_render(app);
     const auto trace = promyk::app::setup_trace(app);
     const auto bench = promyk::app::setup_bench(app);
-    const std::vector<std::string> commands = {"render", "trace", "bench"};
+    const auto lesson = promyk::app::setup_lesson(app);
+    const std::vector<std::string> commands = {"render", "trace", "lesson", "bench"};
 
     // The command is the first argument that is not an option; check it
     // here, so that a typo gets a suggestion and `promyk help` gets help.
@@ -94,7 +95,7 @@ int main(int argc, char** argv) {
     }
     if (args.empty()) {
         fmt::print(stderr, "{}", app.help());
-        report("a command is required: render, trace or bench");
+        report("a command is required: render, trace, lesson or bench");
         return 2;
     }
     const std::string name = !args[0].empty() && args[0][0] != '-' ? args[0] : "";
@@ -110,7 +111,10 @@ int main(int argc, char** argv) {
         return 2;
     }
 
-    const std::function<int()>& run = name == "render" ? render : name == "trace" ? trace : bench;
+    const std::function<int()>& run = name == "render"  ? render
+                                      : name == "trace"  ? trace
+                                      : name == "lesson" ? lesson
+                                                         : bench;
     try {
         return run();
     } catch (const promyk::UsageError& error) {

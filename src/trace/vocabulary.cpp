@@ -57,6 +57,10 @@ Vocabulary parse_vocabulary(std::string_view text, const std::string& source) {
         entry.formula_latex = required_string(item, "formula_latex", source, pointer);
         entry.pl = required_string(item, "pl", source, pointer);
         entry.en = required_string(item, "en", source, pointer);
+        if (const auto given = item.find("given"); given != item.end()) {
+            if (!given->is_boolean()) throw InputError(source, pointer + "/given", "given must be true or false");
+            entry.given = given->get<bool>();
+        }
         if (vocabulary.find(entry.key)) throw InputError(source, pointer + "/key", "duplicate key '" + entry.key + "'");
         vocabulary.keys.push_back(std::move(entry));
     }

@@ -17,6 +17,7 @@ struct VocabularyEntry {
     std::string formula;  // plain Unicode text
     std::string formula_latex;
     std::string pl, en;  // short descriptions
+    bool given = false;  // a value of the scene (S, r, ...), the same for every pixel
 };
 
 struct BranchEntry {

@@ -1,0 +1,83 @@
+// A lesson: a header (name, title, summary, scene, w, pixels) and steps, each
+// a sequence of parts: prose, value tables, blocks shown per pixel for some
+// branches, and answers. lessons/README.md describes the file format.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "trace/number_text.hpp"
+
+namespace promyk {
+
+struct LessonPixel {
+    int i = 0, j = 0;
+};
+
+struct LessonHeader {
+    std::string name, title, summary;
+    std::string scene = "article";  // "article" or a file name in lessons/scenes/
+    int w = 8;
+    std::vector<LessonPixel> pixels = {{0, 0}, {5, 1}, {3, 4}};
+    std::string columns = "double/article";
+};
+
+enum class PartKind {
+    prose,   // Markdown; placeholders only of the scene's values
+    values,  // "= key key ...": a table, one row a key, one column a pixel
+    block,   // "::: branch ...": shown once per pixel whose branch is listed
+    answer,  // "::: answer": revealed on request
+};
+
+struct LessonPart {
+    PartKind kind = PartKind::prose;
+    int line = 0;                       // the part's first line in the file (a block's ":::")
+    int text_line = 0;                  // the line where `text` starts
+    std::string text;                   // prose, block, answer: the lines, joined by '\n'
+    std::vector<std::string> keys;      // values
+    std::vector<std::string> branches;  // block: the branch names; empty for "pixel" (every pixel)
+};
+
+struct LessonStep {
+    std::string id, title;
+    int line = 0;
+    std::vector<LessonPart> parts;
+};
+
+struct Lesson {
+    std::string file;  // as shown in messages, e.g. "pl/03-sphere.md"
+    Language language = Language::en;
+    LessonHeader header;
+    std::vector<LessonStep> steps;
+};
+
+// A fault in a lesson file, with its line, worded in the lesson's language.
+struct LessonProblem {
+    std::string file;
+    int line = 0;
+    std::string message;
+};
+
+// Reads a lesson. Faults of form (header, blocks, headings) are appended to
+// `problems`; the lesson is returned as far as it could be read.
+Lesson parse_lesson(std::string_view text, const std::string& file, Language language,
+                    std::vector<LessonProblem>& problems);
+
+// A placeholder inside a part's text: {key}, {key:N}, {key.x}, {symbol:key},
+// {i}, {j}, {w}, {branch}.
+struct Placeholder {
+    std::size_t begin = 0, end = 0;  // the braces' span in the text
+    std::string name;                // the key, or i, j, w, branch
+    char component = 0;              // 'x', 'y', 'z' or 0
+    int decimals = -1;               // -1: the shortest round-trip text
+    bool symbol = false;             // {symbol:key}
+    bool valid = true;               // false: malformed (text kept in `name`)
+};
+
+// The placeholders of a text, in order. "{{" and "}}" stand for literal
+// braces, and a brace right after a letter, '\', '^', '_' or '}' is LaTeX's
+// ($\frac{a}{b}$, $x^{2}$), not a placeholder.
+std::vector<Placeholder> find_placeholders(std::string_view text);
+
+}  // namespace promyk

@@ -1,0 +1,116 @@
+#include "lesson/lesson_library.hpp"
+
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+#include <fmt/format.h>
+
+#include "lesson/embedded_files.hpp"
+#include "scene/scene_json.hpp"
+#include "util/atomic_file.hpp"
+#include "util/errors.hpp"
+
+namespace promyk {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A lesson file's language is its folder: "pl/..." or "en/...".
+std::optional<Language> language_of(const std::string& path) {
+    const auto slash = path.find('/');
+    if (slash == std::string::npos || path.size() < 3 || path.compare(path.size() - 3, 3, ".md") != 0) return std::nullopt;
+    return parse_language(path.substr(0, slash));
+}
+
+std::string read_text(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path.string(), "", "cannot read the file: " + std::generic_category().message(errno));
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+}  // namespace
+
+LessonLibrary::LessonLibrary(const std::string& folder) {
+    for (const embedded::EmbeddedFile& file : embedded::lesson_files())
+        files_.push_back({std::string(file.path), std::string(file.path) + " (built in)", std::string(file.text)});
+    if (!folder.empty()) {
+        std::error_code error;
+        if (!fs::is_directory(folder, error))
+            throw InputError(folder, "", "--lessons needs a folder of lessons (as promyk lesson --dump writes it)");
+        for (auto it = fs::recursive_directory_iterator(folder, error); !error && it != fs::recursive_directory_iterator();
+             it.increment(error)) {
+            if (!it->is_regular_file()) continue;
+            const std::string relative = fs::relative(it->path(), folder).generic_string();
+            if (!language_of(relative) && relative.rfind("scenes/", 0) != 0) continue;
+            LessonFile file{relative, it->path().string(), read_text(it->path())};
+            const auto same = std::find_if(files_.begin(), files_.end(), [&](const LessonFile& f) { return f.path == relative; });
+            if (same != files_.end())
+                *same = std::move(file);
+            else
+                files_.push_back(std::move(file));
+        }
+        if (error) throw InputError(folder, "", "cannot read the folder: " + error.message());
+    }
+    std::sort(files_.begin(), files_.end(), [](const LessonFile& a, const LessonFile& b) { return a.path < b.path; });
+}
+
+std::vector<Lesson> LessonLibrary::lessons(std::vector<LessonProblem>& problems) const {
+    std::vector<Lesson> out;
+    for (const LessonFile& file : files_) {
+        if (const auto language = language_of(file.path)) out.push_back(parse_lesson(file.text, file.shown, *language, problems));
+    }
+    return out;
+}
+
+std::optional<Lesson> LessonLibrary::find(const std::string& name, Language language) const {
+    for (const LessonFile& file : files_) {
+        if (language_of(file.path) != language) continue;
+        std::vector<LessonProblem> problems;
+        Lesson lesson = parse_lesson(file.text, file.shown, language, problems);
+        if (lesson.header.name != name) continue;
+        if (!problems.empty())
+            throw InputError(file.shown, fmt::format("line {}", problems.front().line), problems.front().message);
+        return lesson;
+    }
+    return std::nullopt;
+}
+
+Scene LessonLibrary::scene(const std::string& name) const {
+    if (name == "article") return article_scene();
+    for (const LessonFile& file : files_)
+        if (file.path == "scenes/" + name) return parse_scene(file.text, file.shown);
+    throw InputError(name, "", "no such scene in lessons/scenes/ (the lesson's header names it)");
+}
+
+void LessonLibrary::dump_builtin(const std::string& folder) {
+    // A teacher's edited lessons are never overwritten: every target is
+    // checked before the first file is written.
+    for (const embedded::EmbeddedFile& file : embedded::lesson_files()) {
+        const fs::path path = fs::path(folder) / std::string(file.path);
+        std::error_code error;
+        if (fs::exists(path, error))
+            throw UsageError(fmt::format("{} exists; --dump writes only into a new or empty folder, so that no "
+                                         "edited lesson is overwritten",
+                                         path.string()));
+    }
+    for (const embedded::EmbeddedFile& file : embedded::lesson_files()) {
+        const fs::path path = fs::path(folder) / std::string(file.path);
+        std::error_code error;
+        fs::create_directories(path.parent_path(), error);
+        if (error) throw OutputError(fmt::format("cannot create {}: {}", path.parent_path().string(), error.message()));
+        AtomicFile out(path.string());
+        out.write(file.text);
+        out.commit();
+    }
+}
+
+}  // namespace promyk

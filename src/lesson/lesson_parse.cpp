@@ -1,0 +1,291 @@
+// Reading lesson files: the header between two "---" lines, then steps
+// ("## [id] Title") made of prose, value tables ("= keys") and ":::" blocks.
+#include <algorithm>
+#include <cctype>
+#include <regex>
+
+#include "lesson/lesson.hpp"
+#include "lesson/messages.hpp"
+
+namespace promyk {
+
+namespace {
+
+const std::vector<std::string_view> header_fields = {"name", "title", "summary", "scene", "w", "pixels", "columns"};
+
+std::string trim(std::string_view text) {
+    const auto first = text.find_first_not_of(" \t\r");
+    if (first == std::string_view::npos) return "";
+    const auto last = text.find_last_not_of(" \t\r");
+    return std::string(text.substr(first, last - first + 1));
+}
+
+std::vector<std::string> split_lines(std::string_view text) {
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // a UTF-8 byte order mark
+    std::vector<std::string> lines;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t end = text.find('\n', start);
+        std::string line(text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start));
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        lines.push_back(std::move(line));
+        if (end == std::string_view::npos) break;
+        start = end + 1;
+    }
+    if (!lines.empty() && lines.back().empty()) lines.pop_back();
+    return lines;
+}
+
+std::vector<std::string> words(std::string_view text) {
+    std::vector<std::string> out;
+    std::size_t k = 0;
+    while (k < text.size()) {
+        while (k < text.size() && std::isspace(static_cast<unsigned char>(text[k]))) ++k;
+        const std::size_t start = k;
+        while (k < text.size() && !std::isspace(static_cast<unsigned char>(text[k]))) ++k;
+        if (k > start) out.emplace_back(text.substr(start, k - start));
+    }
+    return out;
+}
+
+std::string joined(const std::vector<std::string_view>& items) {
+    std::string out;
+    for (const std::string_view item : items) out += (out.empty() ? "" : ", ") + std::string(item);
+    return out;
+}
+
+// Whole numbers as a person writes them (no sign games, no leading zeros).
+bool plain_whole(const std::string& text, long min, long max, int& value) {
+    if (text.empty() || text.size() > 9 || !std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; }) ||
+        (text.size() > 1 && text[0] == '0'))
+        return false;
+    const long number = std::stol(text);
+    if (number < min || number > max) return false;
+    value = static_cast<int>(number);
+    return true;
+}
+
+class Parser {
+public:
+    Parser(const std::string& file, Language language, std::vector<LessonProblem>& problems)
+        : file_(file), language_(language), problems_(problems) {}
+
+    Lesson parse(std::string_view text) {
+        Lesson lesson;
+        lesson.file = file_;
+        lesson.language = language_;
+        const std::vector<std::string> lines = split_lines(text);
+        std::size_t k = read_header(lines, lesson.header);
+        read_body(lines, k, lesson);
+        return lesson;
+    }
+
+private:
+    void problem(int line, std::string_view id, const MessageArgs& args = {}) {
+        problems_.push_back({file_, line, message(language_, id, args)});
+    }
+
+    // Returns the index of the first body line.
+    std::size_t read_header(const std::vector<std::string>& lines, LessonHeader& header) {
+        if (lines.empty() || trim(lines[0]) != "---") {
+            problem(1, "error_header_missing");
+            return 0;
+        }
+        bool seen[7] = {};
+        std::size_t k = 1;
+        for (; k < lines.size(); ++k) {
+            const std::string line = trim(lines[k]);
+            const int number = static_cast<int>(k + 1);
+            if (line == "---") break;
+            if (line.empty() || line[0] == '#') continue;
+            const std::size_t colon = line.find(':');
+            const std::string field = trim(line.substr(0, colon));
+            const auto known = std::find(header_fields.begin(), header_fields.end(), field);
+            if (colon == std::string::npos || known == header_fields.end()) {
+                problem(number, "error_header_field", {{"field", field}, {"fields", joined(header_fields)}});
+                continue;
+            }
+            seen[known - header_fields.begin()] = true;
+            read_field(field, trim(line.substr(colon + 1)), number, header);
+        }
+        if (k == lines.size()) {
+            problem(1, "error_header_unclosed");
+            return k;
+        }
+        for (std::size_t f = 0; f < 3; ++f)
+            if (!seen[f]) problem(static_cast<int>(k + 1), "error_header_required", {{"field", std::string(header_fields[f])}});
+        return k + 1;
+    }
+
+    void read_field(const std::string& field, const std::string& value, int line, LessonHeader& header) {
+        if (field == "name") {
+            static const std::regex name("[a-z0-9][a-z0-9-]*");
+            if (!std::regex_match(value, name))
+                problem(line, "error_header_value", {{"field", field}, {"problem", "a-z, 0-9, -"}});
+            header.name = value;
+        } else if (field == "title") {
+            header.title = value;
+        } else if (field == "summary") {
+            header.summary = value;
+        } else if (field == "scene") {
+            if (value.empty() || value.find('/') != std::string::npos)
+                problem(line, "error_header_value", {{"field", field}, {"problem", "article, or a file of lessons/scenes/"}});
+            header.scene = value;
+        } else if (field == "w") {
+            if (!plain_whole(value, 1, 32768, header.w))
+                problem(line, "error_header_value", {{"field", field}, {"problem", "1 … 32768"}});
+        } else if (field == "pixels") {
+            header.pixels.clear();
+            static const std::regex pixel(R"(\(?\s*(\d+)\s*,\s*(\d+)\s*\)?)");
+            const std::string rest = std::regex_replace(value, pixel, "");
+            for (auto it = std::sregex_iterator(value.begin(), value.end(), pixel); it != std::sregex_iterator(); ++it)
+                header.pixels.push_back({std::stoi((*it)[1].str()), std::stoi((*it)[2].str())});
+            if (header.pixels.empty() || !trim(rest).empty())
+                problem(line, "error_header_value", {{"field", field}, {"problem", "I,J I,J …"}});
+        } else if (field == "columns") {
+            header.columns = value;
+        }
+    }
+
+    void read_body(const std::vector<std::string>& lines, std::size_t k, Lesson& lesson) {
+        LessonStep* step = nullptr;
+        LessonPart* block = nullptr;  // the open ::: block
+        LessonPart prose;
+        bool complained_before_step = false;
+        const auto flush_prose = [&] {
+            // Blank lines around a part carry no meaning.
+            while (!prose.text.empty() && prose.text.back() == '\n') prose.text.pop_back();
+            if (step != nullptr && !trim(prose.text).empty()) step->parts.push_back(prose);
+            prose = LessonPart{};
+        };
+        for (; k < lines.size(); ++k) {
+            const std::string& line = lines[k];
+            const int number = static_cast<int>(k + 1);
+            const std::string trimmed = trim(line);
+            if (block != nullptr) {
+                if (trimmed == ":::") {
+                    block = nullptr;
+                } else if (trimmed.rfind(":::", 0) == 0) {
+                    problem(number, "error_nested_block");
+                } else {
+                    if (block->text.empty() && !trimmed.empty()) block->text_line = number;
+                    if (!block->text.empty() || !trimmed.empty()) block->text += (block->text.empty() ? "" : "\n") + line;
+                }
+                continue;
+            }
+            if (line.rfind("## ", 0) == 0) {
+                flush_prose();
+                static const std::regex heading(R"(##\s+\[([A-Za-z0-9-]+)\]\s*(.*))");
+                std::smatch match;
+                LessonStep next;
+                next.line = number;
+                if (std::regex_match(trimmed, match, heading)) {
+                    next.id = match[1];
+                    next.title = trim(match[2].str());
+                } else {
+                    problem(number, "error_step_heading");
+                }
+                for (const LessonStep& other : lesson.steps)
+                    if (!next.id.empty() && other.id == next.id) problem(number, "error_duplicate_step", {{"id", next.id}});
+                lesson.steps.push_back(next);
+                step = &lesson.steps.back();
+                continue;
+            }
+            if (step == nullptr) {
+                if (!trimmed.empty() && !complained_before_step) {
+                    problem(number, "error_text_before_step");
+                    complained_before_step = true;
+                }
+                continue;
+            }
+            if (trimmed.rfind(":::", 0) == 0) {
+                flush_prose();
+                const std::vector<std::string> names = words(trimmed.substr(3));
+                if (names.empty()) {
+                    problem(number, "error_stray_close");
+                    continue;
+                }
+                LessonPart part;
+                part.line = number;
+                if (names.size() == 1 && names[0] == "answer") {
+                    part.kind = PartKind::answer;
+                } else {
+                    part.kind = PartKind::block;
+                    if (std::find(names.begin(), names.end(), "pixel") == names.end()) part.branches = names;
+                }
+                step->parts.push_back(part);
+                block = &step->parts.back();
+                continue;
+            }
+            if (line.rfind("= ", 0) == 0) {  // at the start of the line: an indented "= " is prose
+                flush_prose();
+                LessonPart part;
+                part.kind = PartKind::values;
+                part.line = number;
+                part.keys = words(trimmed.substr(2));
+                step->parts.push_back(part);
+                continue;
+            }
+            if (prose.text.empty()) {
+                if (trimmed.empty()) continue;
+                prose.line = number;
+                prose.text_line = number;
+            }
+            prose.text += line + "\n";
+        }
+        flush_prose();
+        if (block != nullptr) problem(block->line, "error_unclosed_block");
+        if (lesson.steps.empty()) problem(static_cast<int>(lines.size()), "error_no_steps");
+    }
+
+    const std::string& file_;
+    Language language_;
+    std::vector<LessonProblem>& problems_;
+};
+
+bool latex_brace(std::string_view text, std::size_t at) {
+    if (at == 0) return false;
+    const unsigned char before = static_cast<unsigned char>(text[at - 1]);
+    return std::isalpha(before) || before == '\\' || before == '^' || before == '_' || before == '}';
+}
+
+}  // namespace
+
+Lesson parse_lesson(std::string_view text, const std::string& file, Language language,
+                    std::vector<LessonProblem>& problems) {
+    return Parser(file, language, problems).parse(text);
+}
+
+std::vector<Placeholder> find_placeholders(std::string_view text) {
+    static const std::regex form(R"((symbol:)?([A-Za-z_][A-Za-z0-9_]*(?:\[[0-9]+\]\.[A-Za-z_][A-Za-z0-9_]*)?)(?:\.([xyz]))?(?::([0-9]|1[0-7]))?)");
+    std::vector<Placeholder> found;
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        if (text[k] != '{') continue;
+        if (k + 1 < text.size() && text[k + 1] == '{') {  // "{{": a literal brace
+            ++k;
+            continue;
+        }
+        if (latex_brace(text, k)) continue;
+        const std::size_t close = text.find('}', k);
+        Placeholder placeholder;
+        placeholder.begin = k;
+        placeholder.end = close == std::string_view::npos ? text.size() : close + 1;
+        const std::string inside(text.substr(k + 1, placeholder.end - k - 1 - (close == std::string_view::npos ? 0 : 1)));
+        std::smatch match;
+        if (close == std::string_view::npos || !std::regex_match(inside, match, form) ||
+            (match[1].matched && (match[3].matched || match[4].matched))) {
+            placeholder.valid = false;
+            placeholder.name = std::string(text.substr(k, placeholder.end - k));
+        } else {
+            placeholder.symbol = match[1].matched;
+            placeholder.name = match[2];
+            if (match[3].matched) placeholder.component = match[3].str()[0];
+            if (match[4].matched) placeholder.decimals = std::stoi(match[4].str());
+        }
+        found.push_back(placeholder);
+        k = placeholder.end - 1;
+    }
+    return found;
+}
+
+}  // namespace promyk

@@ -1,0 +1,339 @@
+#include "lesson/lesson_render.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "lesson/messages.hpp"
+#include "trace/keys.hpp"
+#include "trace/trace_text.hpp"
+
+namespace promyk {
+
+namespace {
+
+constexpr std::size_t columns = 80;
+
+std::size_t width_of(std::string_view text) {
+    return static_cast<std::size_t>(
+        std::count_if(text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
+}
+
+std::string kind_of(const Vocabulary& vocabulary, const std::string& key) {
+    const VocabularyEntry* entry = vocabulary.find(key);
+    return entry ? entry->kind : "scalar";
+}
+
+std::string branch_text(const Vocabulary& vocabulary, Branch branch, Language language) {
+    const BranchEntry* entry = vocabulary.find_branch(branch_name(branch));
+    if (entry == nullptr) return std::string(branch_name(branch));
+    return language == Language::pl ? entry->pl : entry->en;
+}
+
+// The text with its placeholders filled for one pixel (or for none: prose).
+std::string fill(const LessonView& view, const std::string& text, const PixelTrace* trace) {
+    const Language language = view.lesson.language;
+    std::string out;
+    std::size_t at = 0;
+    const auto copy_literal = [&](std::size_t end) {
+        for (std::size_t k = at; k < end; ++k) {
+            out += text[k];
+            if ((text[k] == '{' || text[k] == '}') && k + 1 < end && text[k + 1] == text[k]) ++k;  // "{{" -> "{"
+        }
+    };
+    for (const Placeholder& p : find_placeholders(text)) {
+        copy_literal(p.begin);
+        at = p.end;
+        const VocabularyEntry* entry = view.vocabulary.find(p.name);
+        if (!p.valid) {
+            out += p.name;
+        } else if (p.symbol) {
+            out += entry ? entry->symbol : p.name;
+        } else if (p.name == "w") {
+            out += std::to_string(view.w);
+        } else if (trace == nullptr && (p.name == "i" || p.name == "j" || p.name == "branch")) {
+            out += message(language, "not_reached");
+        } else if (p.name == "i" || p.name == "j") {
+            out += std::to_string(p.name == "i" ? trace->header.i : trace->header.j);
+        } else if (p.name == "branch") {
+            out += branch_text(view.vocabulary, trace->branch, language);
+        } else {
+            // Prose may name only the scene's values, the same in every trace.
+            const PixelTrace& source = trace != nullptr ? *trace : view.traces.front();
+            const std::optional<StepValue> value = lesson_value(source, p.name);
+            if (!value) {
+                out += message(language, "not_reached");
+            } else if (p.component != 0 && std::holds_alternative<Vec3d>(*value)) {
+                const Vec3d& v = std::get<Vec3d>(*value);
+                out += number_text(p.component == 'x' ? v.x : p.component == 'y' ? v.y : v.z, language, p.decimals);
+            } else {
+                out += value_text(*value, kind_of(view.vocabulary, p.name), language, p.decimals);
+            }
+        }
+    }
+    copy_literal(text.size());
+    return out;
+}
+
+std::string pixel_label(const LessonView& view, const PixelTrace& trace) {
+    return message(view.lesson.language, "pixel_label",
+                   {{"i", std::to_string(trace.header.i)}, {"j", std::to_string(trace.header.j)}});
+}
+
+bool shown_for(const LessonPart& part, const PixelTrace& trace) {
+    if (part.branches.empty()) return true;
+    return std::find(part.branches.begin(), part.branches.end(), branch_name(trace.branch)) != part.branches.end();
+}
+
+// --- terminal text -------------------------------------------------------
+
+// Markdown markup that means nothing on a terminal.
+std::string plain(std::string text) {
+    std::string out;
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        if (text.compare(k, 2, "**") == 0 || text.compare(k, 2, "__") == 0) {
+            ++k;
+            continue;
+        }
+        if (text[k] == '$' || text[k] == '`') continue;
+        out += text[k];
+    }
+    return out;
+}
+
+std::string wrap(const std::string& text, std::size_t indent, std::size_t first_used = 0) {
+    std::string out;
+    std::size_t used = first_used;
+    std::size_t k = 0;
+    bool first_word = true;
+    while (k < text.size()) {
+        const std::size_t space = text.find(' ', k);
+        const std::string word = text.substr(k, space == std::string::npos ? std::string::npos : space - k);
+        k = space == std::string::npos ? text.size() : space + 1;
+        if (word.empty()) continue;
+        if (!first_word && used + 1 + width_of(word) > columns) {
+            out += '\n' + std::string(indent, ' ');
+            used = indent;
+        } else if (!first_word) {
+            out += ' ';
+            ++used;
+        }
+        out += word;
+        used += width_of(word);
+        first_word = false;
+    }
+    return out;
+}
+
+bool verbatim_line(const std::string& line) {
+    if (line.rfind("    ", 0) == 0 || line.rfind("- ", 0) == 0 || line.rfind("* ", 0) == 0 || line.rfind("|", 0) == 0)
+        return true;
+    std::size_t k = 0;
+    while (k < line.size() && std::isdigit(static_cast<unsigned char>(line[k]))) ++k;
+    return k > 0 && line.compare(k, 2, ". ") == 0;
+}
+
+// Paragraphs reflowed to 80 columns; lists, tables and code kept as written.
+std::string text_paragraphs(const std::string& text, std::size_t indent, std::size_t first_used = 0) {
+    std::string out, paragraph;
+    bool code = false;
+    const std::string pad(indent, ' ');
+    const auto flush = [&] {
+        if (paragraph.empty()) return;
+        out += (out.empty() && first_used > 0 ? "" : pad) + wrap(plain(paragraph), indent, out.empty() ? first_used : indent) + "\n";
+        paragraph.clear();
+    };
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t end = text.find('\n', start);
+        const std::string line = text.substr(start, end == std::string::npos ? std::string::npos : end - start);
+        start = end == std::string::npos ? text.size() + 1 : end + 1;
+        if (line.rfind("```", 0) == 0) {
+            flush();
+            code = !code;
+            continue;
+        }
+        if (code) {
+            out += pad + "    " + line + "\n";
+        } else if (line.find_first_not_of(' ') == std::string::npos) {
+            flush();
+            if (!out.empty() && out.compare(out.size() - 2, 2, "\n\n") != 0) out += "\n";
+        } else if (verbatim_line(line)) {
+            flush();
+            out += pad + plain(line) + "\n";
+        } else {
+            paragraph += (paragraph.empty() ? "" : " ") + line.substr(line.find_first_not_of(' '));
+        }
+    }
+    flush();
+    while (out.size() > 1 && out.compare(out.size() - 2, 2, "\n\n") == 0) out.pop_back();
+    return out;
+}
+
+std::string bold(const LessonView& view, const std::string& text) {
+    return view.color ? "\x1b[1m" + text + "\x1b[0m" : text;
+}
+
+std::string text_values(const LessonView& view, const LessonPart& part) {
+    const Language language = view.lesson.language;
+    std::string out;
+    for (const std::string& key : part.keys) {
+        const VocabularyEntry* entry = view.vocabulary.find(key);
+        const std::string symbol = entry ? entry->symbol : key;
+        out += "  " + symbol + (entry && !entry->formula.empty() ? " = " + entry->formula : "") + "\n";
+        std::vector<std::string> cells;
+        for (const PixelTrace& trace : view.traces) {
+            const std::optional<StepValue> value = lesson_value(trace, key);
+            cells.push_back(fmt::format("({}, {}): {}", trace.header.i, trace.header.j,
+                                        value ? value_text(*value, kind_of(view.vocabulary, key), language)
+                                              : message(language, "not_reached")));
+        }
+        std::size_t total = 4;
+        for (const std::string& cell : cells) total += width_of(cell) + 4;
+        if (total <= columns) {
+            std::string line = "    ";
+            for (std::size_t c = 0; c < cells.size(); ++c) line += (c ? "    " : "") + cells[c];
+            out += line + "\n";
+        } else {
+            for (const std::string& cell : cells) out += "    " + cell + "\n";
+        }
+    }
+    return out;
+}
+
+std::string text_part(const LessonView& view, const LessonPart& part) {
+    switch (part.kind) {
+        case PartKind::prose:
+            return text_paragraphs(fill(view, part.text, nullptr), 0);
+        case PartKind::values:
+            return text_values(view, part);
+        case PartKind::block: {
+            std::string out;
+            for (const PixelTrace& trace : view.traces) {
+                if (!shown_for(part, trace)) continue;
+                const std::string label = "▸ " + pixel_label(view, trace) + ": ";
+                out += label + text_paragraphs(fill(view, part.text, &trace), 2, width_of(label));
+            }
+            return out;
+        }
+        case PartKind::answer:
+            return "";
+    }
+    return "";
+}
+
+// --- Markdown -------------------------------------------------------------
+
+std::string markdown_values(const LessonView& view, const LessonPart& part) {
+    const Language language = view.lesson.language;
+    std::string out = "| |";
+    for (const PixelTrace& trace : view.traces) out += " " + pixel_label(view, trace) + " |";
+    out += "\n|---|";
+    for (std::size_t c = 0; c < view.traces.size(); ++c) out += "---|";
+    out += "\n";
+    for (const std::string& key : part.keys) {
+        const VocabularyEntry* entry = view.vocabulary.find(key);
+        std::string math = entry ? (entry->formula_latex.empty() ? entry->latex : entry->formula_latex) : key;
+        // A | would end the table's cell: LaTeX's \vert draws the same bar.
+        for (std::size_t bar = math.find('|'); bar != std::string::npos; bar = math.find('|', bar))
+            math.replace(bar, 1, "\\vert ");
+        out += "| $" + math + "$ |";
+        for (const PixelTrace& trace : view.traces) {
+            const std::optional<StepValue> value = lesson_value(trace, key);
+            out += " " + (value ? value_text(*value, kind_of(view.vocabulary, key), language) : message(language, "not_reached")) + " |";
+        }
+        out += "\n";
+    }
+    return out;
+}
+
+std::string markdown_part(const LessonView& view, const LessonPart& part) {
+    switch (part.kind) {
+        case PartKind::prose:
+            return fill(view, part.text, nullptr) + "\n";
+        case PartKind::values:
+            return markdown_values(view, part);
+        case PartKind::block: {
+            std::string out;
+            for (const PixelTrace& trace : view.traces) {
+                if (!shown_for(part, trace)) continue;
+                if (!out.empty()) out += "\n";
+                out += "**" + pixel_label(view, trace) + ":** " + fill(view, part.text, &trace) + "\n";
+            }
+            return out;
+        }
+        case PartKind::answer:
+            return "";
+    }
+    return "";
+}
+
+}  // namespace
+
+std::optional<StepValue> lesson_value(const PixelTrace& trace, const std::string& key) {
+    for (const Step& step : trace.steps)
+        if (key_name(step.key) == key) return step.value;
+    for (const GivenValue& given : trace.header.given)
+        if (given.key == key) return given.value;
+    if (key == "I_P") return StepValue{trace.result};
+    return std::nullopt;
+}
+
+bool has_answers(const LessonStep& step) {
+    return std::any_of(step.parts.begin(), step.parts.end(), [](const LessonPart& p) { return p.kind == PartKind::answer; });
+}
+
+std::string render_lesson_title(const LessonView& view) {
+    const Language language = view.lesson.language;
+    std::string pixels;
+    for (const PixelTrace& trace : view.traces)
+        pixels += fmt::format("{}({}, {})", pixels.empty() ? "" : ", ", trace.header.i, trace.header.j);
+    const std::string heading = message(language, "lesson_heading", {{"title", view.lesson.header.title}});
+    const std::string setup = message(language, "lesson_setup",
+                                      {{"scene", view.scene_name},
+                                       {"w", std::to_string(view.w)},
+                                       {"pane", pane_phrase(view.w)},
+                                       {"pixels", pixels}});
+    if (view.format == LessonFormat::markdown)
+        return "# " + heading + "\n\n*" + view.lesson.header.summary + "*\n\n" + setup + "\n";
+    return bold(view, heading) + "\n" + wrap(view.lesson.header.summary, 0) + "\n" + wrap(setup, 0) + "\n";
+}
+
+std::string render_step(const LessonView& view, std::size_t k) {
+    const LessonStep& step = view.lesson.steps.at(k);
+    const std::string heading =
+        message(view.lesson.language, "step_heading",
+                {{"k", std::to_string(k + 1)}, {"n", std::to_string(view.lesson.steps.size())}, {"title", step.title}});
+    std::string out;
+    if (view.format == LessonFormat::markdown) {
+        out = "## " + heading + "\n";
+        for (const LessonPart& part : step.parts) {
+            const std::string text = markdown_part(view, part);
+            if (!text.empty()) out += "\n" + text;
+        }
+        return out;
+    }
+    out = bold(view, "── " + heading + " ──") + "\n";
+    for (const LessonPart& part : step.parts) {
+        const std::string text = text_part(view, part);
+        if (!text.empty()) out += "\n" + text;
+    }
+    return out;
+}
+
+std::string render_answers(const LessonView& view, std::size_t k) {
+    const LessonStep& step = view.lesson.steps.at(k);
+    const std::string title = message(view.lesson.language, "answer");
+    std::string out;
+    for (const LessonPart& part : step.parts) {
+        if (part.kind != PartKind::answer) continue;
+        const std::string text = fill(view, part.text, &view.traces.front());
+        if (view.format == LessonFormat::markdown)
+            out += "\n<details><summary>" + title + "</summary>\n\n" + text + "\n\n</details>\n";
+        else
+            out += "\n" + bold(view, title + ":") + "\n" + text_paragraphs(text, 0);
+    }
+    return out;
+}
+
+}  // namespace promyk

@@ -1,0 +1,24 @@
+// The words promyk prints around lessons (headings, prompts, the checker's
+// messages) in each language, from lessons/messages.json (embedded). Text is
+// data: a translation is an edit of that file, not of the C++.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "trace/number_text.hpp"
+
+namespace promyk {
+
+using MessageArgs = std::vector<std::pair<std::string_view, std::string>>;
+
+// The message `id` in `language`, each {name} replaced by its argument.
+// Throws std::logic_error for an id messages.json lacks (a bug, caught by tests).
+std::string message(Language language, std::string_view id, const MessageArgs& args = {});
+
+// Every message id, for tests: each must exist in every language.
+std::vector<std::string> message_ids(Language language);
+
+}  // namespace promyk
