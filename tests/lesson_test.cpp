@@ -7,7 +7,7 @@
 #include "lesson/lesson_check.hpp"
 #include "lesson/lesson_library.hpp"
 #include "lesson/lesson_render.hpp"
-#include "lesson/messages.hpp"
+#include "trace/messages.hpp"
 #include "render/trace_pixel.hpp"
 
 using namespace promyk;

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <map>
 
-#include "lesson/messages.hpp"
+#include "trace/messages.hpp"
 
 namespace promyk {
 

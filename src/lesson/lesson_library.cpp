@@ -11,7 +11,7 @@
 
 #include <fmt/format.h>
 
-#include "lesson/embedded_files.hpp"
+#include "util/embedded_files.hpp"
 #include "scene/scene_json.hpp"
 #include "util/atomic_file.hpp"
 #include "util/errors.hpp"

@@ -5,7 +5,7 @@
 #include <regex>
 
 #include "lesson/lesson.hpp"
-#include "lesson/messages.hpp"
+#include "trace/messages.hpp"
 
 namespace promyk {
 

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "lesson/messages.hpp"
+#include "trace/messages.hpp"
 #include "trace/keys.hpp"
 #include "trace/trace_text.hpp"
 

@@ -1,11 +1,11 @@
-#include "lesson/messages.hpp"
+#include "trace/messages.hpp"
 
 #include <map>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
-#include "lesson/embedded_files.hpp"
+#include "util/embedded_files.hpp"
 
 namespace promyk {
 
