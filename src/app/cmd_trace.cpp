@@ -21,6 +21,8 @@ struct TraceOptions {
     std::string scene_file;
     std::string format = "text";
     bool wide = false;
+    bool explain = false;
+    std::string lang;  // empty: from LANG
 };
 
 int run_trace(const TraceOptions& options) {
@@ -32,7 +34,11 @@ int run_trace(const TraceOptions& options) {
         append_trace_json(out, trace);
         out += '\n';
     } else {
-        out = format_trace_text(trace, builtin_vocabulary(), options.wide ? TraceLayout::wide : TraceLayout::narrow);
+        TraceTextOptions text;
+        text.layout = options.wide ? TraceLayout::wide : TraceLayout::narrow;
+        text.language = options.lang.empty() ? language_from_environment() : *parse_language(options.lang);
+        text.explain = options.explain;
+        out = format_trace_text(trace, builtin_vocabulary(), text);
     }
     std::fputs(out.c_str(), stdout);
     return 0;
@@ -54,6 +60,10 @@ std::function<int()> setup_trace(CLI::App& app) {
     cmd->add_flag("--wide", options->wide,
                   "text: one row a step (symbol, formula, value side by side; about 140 columns)\n"
                   "instead of the default layout that fits 80 columns");
+    cmd->add_option("--lang", options->lang, "text: pl or en (default: Polish when LANG starts with pl)")
+        ->type_name("pl|en")
+        ->check(CLI::IsMember({"pl", "en"}));
+    cmd->add_flag("--explain", options->explain, "text: under each formula, what the quantity means");
     cmd->footer(
         "Example: promyk trace --pixel 3,4 --w 8   (at w = 8, (0,0) misses, (5,1) is on the dark side, (3,4) is lit)");
     return [options] { return run_trace(*options); };

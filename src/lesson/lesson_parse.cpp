@@ -152,6 +152,7 @@ private:
         LessonPart* block = nullptr;  // the open ::: block
         LessonPart prose;
         bool complained_before_step = false;
+        bool fence = false;  // inside ``` … ```: lines are text, never structure
         const auto flush_prose = [&] {
             // Blank lines around a part carry no meaning.
             while (!prose.text.empty() && prose.text.back() == '\n') prose.text.pop_back();
@@ -162,6 +163,20 @@ private:
             const std::string& line = lines[k];
             const int number = static_cast<int>(k + 1);
             const std::string trimmed = trim(line);
+            if (trimmed.rfind("```", 0) == 0) fence = !fence;
+            const bool in_fence = fence || trimmed.rfind("```", 0) == 0;
+            if (in_fence && step != nullptr) {
+                LessonPart& target = block != nullptr ? *block : prose;
+                if (target.text.empty() && target.kind == PartKind::prose) {
+                    target.line = number;
+                }
+                if (target.text_line == 0) target.text_line = number;
+                if (block != nullptr)
+                    target.text += (target.text.empty() ? "" : "\n") + line;
+                else
+                    target.text += line + "\n";
+                continue;
+            }
             if (block != nullptr) {
                 if (trimmed == ":::") {
                     block = nullptr;

@@ -327,7 +327,19 @@ std::string render_answers(const LessonView& view, std::size_t k) {
     std::string out;
     for (const LessonPart& part : step.parts) {
         if (part.kind != PartKind::answer) continue;
-        const std::string text = fill(view, part.text, &view.traces.front());
+        // The first pixel column whose computation reached every value the
+        // answer names (an answer about t needs a pixel that hit).
+        const PixelTrace* pixel = &view.traces.front();
+        for (const PixelTrace& trace : view.traces) {
+            const std::vector<Placeholder> placeholders = find_placeholders(part.text);
+            if (std::all_of(placeholders.begin(), placeholders.end(), [&](const Placeholder& p) {
+                    return !p.valid || p.symbol || view.vocabulary.find(p.name) == nullptr || lesson_value(trace, p.name);
+                })) {
+                pixel = &trace;
+                break;
+            }
+        }
+        const std::string text = fill(view, part.text, pixel);
         if (view.format == LessonFormat::markdown)
             out += "\n<details><summary>" + title + "</summary>\n\n" + text + "\n\n</details>\n";
         else

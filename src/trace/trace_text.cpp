@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "trace/messages.hpp"
+
 namespace promyk {
 
 namespace {
@@ -23,20 +25,8 @@ std::string pad(const std::string& text, std::size_t width) {
     return text + std::string(width - std::min(width, display_width(text)), ' ');
 }
 
-// The shortest text that reads back to the same double; "nan", "inf" and
-// "-inf" as the JSON trace spells them (a NaN's sign means nothing).
-std::string number_text(double value) {
-    if (value != value) return "nan";
-    return fmt::format("{}", value);
-}
-
-// Points in parentheses, vectors in square brackets, as the article writes them.
-std::string format_value(const StepValue& value, const std::string& kind) {
-    if (const double* number = std::get_if<double>(&value)) return number_text(*number);
-    const Vec3d& v = std::get<Vec3d>(value);
-    const char* open = kind == "vector" ? "[" : "(";
-    const char* close = kind == "vector" ? "]" : ")";
-    return fmt::format("{}{}, {}, {}{}", open, number_text(v.x), number_text(v.y), number_text(v.z), close);
+std::string pad_left(const std::string& text, std::size_t width) {
+    return std::string(width - std::min(width, display_width(text)), ' ') + text;
 }
 
 // `first` + `text`, broken after a separator (a space, or ", " to keep
@@ -63,6 +53,8 @@ std::string wrap(const std::string& first, const std::string& text, std::size_t 
     return out + '\n';
 }
 
+std::string value_of(const StepValue& value, const Vocabulary& vocabulary, const std::string& key, Language language);
+
 std::string symbol_of(const Vocabulary& vocabulary, const std::string& key) {
     const VocabularyEntry* entry = vocabulary.find(key);
     return entry ? entry->symbol : key;
@@ -73,21 +65,31 @@ std::string kind_of(const Vocabulary& vocabulary, const std::string& key) {
     return entry ? entry->kind : "point";
 }
 
-std::string header_text(const PixelTrace& trace, const Vocabulary& vocabulary) {
+std::string header_text(const PixelTrace& trace, const Vocabulary& vocabulary, Language language) {
     const TraceHeader& h = trace.header;
-    std::string out = fmt::format("pixel (i, j) = ({}, {}) of {}; scene \"{}\" ({})\n", h.i, h.j, pane_phrase(h.w),
-                                  h.scene_name, h.scene_file);
-    out += fmt::format("numbers: {}, formula: {}, samples per pixel: {}\n", h.real, h.formula, h.spp);
+    const std::string file = h.scene_file == "built-in" ? message(language, "trace_builtin") : h.scene_file;
+    std::string out = message(language, "trace_pixel",
+                              {{"i", std::to_string(h.i)},
+                               {"j", std::to_string(h.j)},
+                               {"w", std::to_string(h.w)},
+                               {"pane", pane_phrase(h.w)},
+                               {"scene", h.scene_name},
+                               {"file", file}}) +
+                      "\n";
+    out += message(language, "trace_numbers", {{"real", h.real}, {"formula", h.formula}, {"spp", std::to_string(h.spp)}}) +
+           "\n";
+    const std::string separator = language == Language::pl ? "; " : ", ";
     std::string given;
     for (const GivenValue& value : h.given) {
-        given += fmt::format("{}{} = {}", given.empty() ? "" : ", ", symbol_of(vocabulary, value.key),
-                             format_value(value.value, kind_of(vocabulary, value.key)));
+        given += (given.empty() ? "" : separator) + symbol_of(vocabulary, value.key) + " = " +
+                 value_of(value.value, vocabulary, value.key, language);
     }
-    if (!given.empty()) out += wrap("given: ", given, 7, ", ");
+    const std::string lead = message(language, "trace_given");
+    if (!given.empty()) out += wrap(lead, given, display_width(lead), separator);
     return out + '\n';
 }
 
-std::string narrow_steps(const PixelTrace& trace, const Vocabulary& vocabulary) {
+std::string narrow_steps(const PixelTrace& trace, const Vocabulary& vocabulary, const TraceTextOptions& options) {
     std::size_t key_width = 0;
     for (const Step& step : trace.steps) key_width = std::max(key_width, key_name(step.key).size());
     const std::size_t number_width = std::to_string(trace.steps.size()).size();
@@ -100,23 +102,28 @@ std::string narrow_steps(const PixelTrace& trace, const Vocabulary& vocabulary) 
         const std::string symbol = entry ? entry->symbol : key;
         const std::string lead = fmt::format("{:>{}}  {}", k + 1, number_width, pad(key, key_width + 2));
         out += wrap(lead, entry && !entry->formula.empty() ? symbol + " = " + entry->formula : symbol, indent);
-        out += wrap(std::string(indent, ' ') + "= ", format_value(step.value, entry ? entry->kind : "point"),
-                    indent + 2);
+        if (options.explain && entry)
+            out += wrap(std::string(indent, ' '), options.language == Language::pl ? entry->pl : entry->en, indent);
+        out += wrap(std::string(indent, ' ') + "= ", value_of(step.value, vocabulary, key, options.language),
+                    indent + 2, options.language == Language::pl ? "; " : " ");
     }
     return out;
 }
 
-std::string wide_steps(const PixelTrace& trace, const Vocabulary& vocabulary) {
+std::string wide_steps(const PixelTrace& trace, const Vocabulary& vocabulary, const TraceTextOptions& options) {
     struct Row {
         std::string step, key, symbol, formula, value;
     };
-    std::vector<Row> rows = {{"step", "key", "symbol", "formula", "value"}};
+    const Language language = options.language;
+    std::vector<Row> rows = {{message(language, "trace_column_step"), message(language, "trace_column_key"),
+                              message(language, "trace_column_symbol"), message(language, "trace_column_formula"),
+                              message(language, "trace_column_value")}};
     for (std::size_t k = 0; k < trace.steps.size(); ++k) {
         const Step& step = trace.steps[k];
         const std::string key(key_name(step.key));
         const VocabularyEntry* entry = vocabulary.find(key);
         rows.push_back({std::to_string(k + 1), key, entry ? entry->symbol : key, entry ? entry->formula : "",
-                        format_value(step.value, entry ? entry->kind : "point")});
+                        value_of(step.value, vocabulary, key, language)});
     }
     std::size_t widths[4] = {0, 0, 0, 0};
     for (const Row& row : rows) {
@@ -127,41 +134,43 @@ std::string wide_steps(const PixelTrace& trace, const Vocabulary& vocabulary) {
     }
     std::string out;
     for (const Row& row : rows) {
-        out += fmt::format("{:>{}}  {}  {}  {}  {}\n", row.step, widths[0], pad(row.key, widths[1]),
+        out += fmt::format("{}  {}  {}  {}  {}\n", pad_left(row.step, widths[0]), pad(row.key, widths[1]),
                            pad(row.symbol, widths[2]), pad(row.formula, widths[3]), row.value);
     }
     return out;
 }
 
-std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary) {
+std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, Language language) {
     const std::string branch(branch_name(trace.branch));
     const BranchEntry* about = vocabulary.find_branch(branch);
-    std::string out = wrap("\nbranch: ", branch + (about ? " — " + about->en : ""), 8);
+    const std::string about_text = about ? (language == Language::pl ? about->pl : about->en) : "";
+    const std::string branch_lead = message(language, "trace_branch");
+    std::string out = "\n" + wrap(branch_lead, branch + (about ? " — " + about_text : ""), display_width(branch_lead));
     const VocabularyEntry* result = vocabulary.find("I_P");
     const std::string I_P = result ? result->symbol : "I_P";
-    if (trace.branch == Branch::lit && result)
-        out += fmt::format("result: {} = {} = {}\n", I_P, result->formula, number_text(trace.result));
-    else
-        out += fmt::format("result: {} = {}\n", I_P, number_text(trace.result));
+    const std::string value = number_text(trace.result, language);
+    out += message(language, "trace_result") + I_P + " = " +
+           (trace.branch == Branch::lit && result ? result->formula + " = " : "") + value + "\n";
     if (trace.first_non_finite && *trace.first_non_finite < trace.steps.size()) {
         const std::size_t k = *trace.first_non_finite;
         const std::string key(key_name(trace.steps[k].key));
         const bool decides = trace.branch == Branch::non_finite;
-        out += wrap("first non-finite value: ",
-                    fmt::format("step {}, {} = {}: the numbers left the range of a double (about ±1.8e308){}", k + 1,
-                                symbol_of(vocabulary, key), format_value(trace.steps[k].value, kind_of(vocabulary, key)),
-                                decides ? ", so no comparison from here on can be trusted"
-                                        : "; only the lessons compute it, the program's own numbers stayed finite"),
+        out += wrap(message(language, "trace_first_non_finite"),
+                    message(language, decides ? "trace_non_finite_decides" : "trace_non_finite_lesson",
+                            {{"k", std::to_string(k + 1)},
+                             {"symbol", symbol_of(vocabulary, key)},
+                             {"value", value_of(trace.steps[k].value, vocabulary, key, language)}}),
                     2);
     }
-    out += wrap("grey level: ", fmt::format("{} of 255 = round(255 · {}), {} clamped to [0, 1], halves up{}",
-                                            trace.grey, I_P, I_P, trace.result != trace.result ? "; NaN gives 0" : ""),
+    out += wrap(message(language, "trace_grey"),
+                message(language, "trace_grey_rule", {{"grey", std::to_string(trace.grey)}, {"I_P", I_P}}) +
+                    (trace.result != trace.result ? message(language, "trace_grey_nan") : ""),
                 2);
-    out +=
-        "\n(…) is a point, […] a vector. Each number is the shortest decimal that reads\n"
-        "back as the same double. Most decimals have no exact binary form: 3.2 is\n"
-        "stored as 3.2000000000000001776…, so 3.2² gives 10.240000000000002, not 10.24.\n";
-    return out;
+    return out + "\n" + message(language, "trace_note") + "\n";
+}
+
+std::string value_of(const StepValue& value, const Vocabulary& vocabulary, const std::string& key, Language language) {
+    return value_text(value, kind_of(vocabulary, key), language);
 }
 
 }  // namespace
@@ -174,10 +183,10 @@ std::string pane_phrase(int w) {
     return fmt::format("{} {} × {} pane", vowel ? "an" : "a", w, w);
 }
 
-std::string format_trace_text(const PixelTrace& trace, const Vocabulary& vocabulary, TraceLayout layout) {
-    std::string out = header_text(trace, vocabulary);
-    out += layout == TraceLayout::wide ? wide_steps(trace, vocabulary) : narrow_steps(trace, vocabulary);
-    return out + footer_text(trace, vocabulary);
+std::string format_trace_text(const PixelTrace& trace, const Vocabulary& vocabulary, const TraceTextOptions& options) {
+    std::string out = header_text(trace, vocabulary, options.language);
+    out += options.layout == TraceLayout::wide ? wide_steps(trace, vocabulary, options) : narrow_steps(trace, vocabulary, options);
+    return out + footer_text(trace, vocabulary, options.language);
 }
 
 }  // namespace promyk

@@ -44,3 +44,24 @@ add_test(NAME cli.escapes COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cli/escapes_test.s
 promyk_cli_test(scene_nul ARGS trace --scene ${scenes}/nul_after_scene.json EXIT 3 STDERR "nul_after_scene.json: line")
 promyk_cli_test(scene_two_boms ARGS trace --scene ${scenes}/two_byte_order_marks.json EXIT 3
                 STDERR "two_byte_order_marks.json: line 1")
+
+# The trace speaks the lesson's languages.
+promyk_cli_test(trace_polish ARGS trace --lang pl EXIT 0
+                STDOUT "^piksel \\(i, j\\) = \\(3, 4\\) szyby 8 × 8; scena „article” \\(wbudowana\\).*dane: z_E = 2; S = \\(0; 0; 3,2\\).*= 4,557812500000004\n.*gałąź: lit — strona oświetlona.*poziom szarości: 177 z 255")
+promyk_cli_test(trace_explain ARGS trace --explain --lang en --pixel 0,0 EXIT 0
+                STDOUT "delta +Δ/4 = C² − \\|E\\|²·\\(\\|S\\|² − r²\\)\n +the quadratic's discriminant divided by 4")
+promyk_cli_test(trace_bad_lang ARGS trace --lang de EXIT 2 STDERR "--lang")
+
+# Lessons
+promyk_cli_test(lesson_list ARGS lesson --lang en EXIT 0 STDOUT "^Lessons \\(promyk lesson NAME\\):\n +vectors .*pane .*sphere .*lambert .*program ")
+promyk_cli_test(lesson_list_polish ARGS lesson --list --lang pl EXIT 0 STDOUT "^Lekcje \\(promyk lesson NAZWA\\):")
+promyk_cli_test(lesson_check ARGS lesson --check --lang en EXIT 0 STDOUT "10 lessons checked: all is well")
+promyk_cli_test(lesson_unknown ARGS lesson nosuch EXIT 2 STDERR "no lesson 'nosuch'; the lessons are vectors, pane, sphere, lambert, program")
+promyk_cli_test(lesson_sphere ARGS lesson sphere --lang en --pixel 3,4 --pixel 0,0 EXIT 0
+                STDOUT "^Lesson: .*pixels: \\(3, 4\\), \\(0, 0\\).*Step 1 of 7: .*Step 7 of 7")
+promyk_cli_test(lesson_markdown ARGS lesson program --lang pl --format markdown EXIT 0
+                STDOUT "^# Lekcja: .*\\| \\| piksel \\(0, 0\\) \\| piksel \\(5, 1\\) \\| piksel \\(3, 4\\) \\|.*<details><summary>Odpowiedź</summary>")
+promyk_cli_test(lesson_pixel_outside ARGS lesson pane --pixel 8,0 EXIT 2 STDERR "outside the 8 × 8 pane")
+promyk_cli_test(lesson_small_w ARGS lesson pane --w 4 EXIT 2 STDERR "the lesson's pixel \\(5, 1\\) is outside the 4 × 4 pane")
+add_test(NAME cli.lesson_files COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cli/lesson_files_test.sh $<TARGET_FILE:promyk>
+                                       ${CMAKE_CURRENT_BINARY_DIR}/cli/lesson_files)
