@@ -86,9 +86,10 @@ check "/dev/full is still a device" [ -c /dev/full ]
 
 # 4. A FIFO is written as produced, and stays a FIFO.
 fresh; mkfifo f
-cat f >got.txt &
+# Timeouts, so that a promyk that replaced the FIFO cannot hang the test.
+timeout 10 cat f >got.txt &
 reader=$!
-"$promyk" render --w 8 -o a.png --traces f --trace-pixel 1,1 --trace-pixel 2,2 >out.txt 2>err.txt
+timeout 10 "$promyk" render --w 8 -o a.png --traces f --trace-pixel 1,1 --trace-pixel 2,2 >out.txt 2>err.txt
 check "FIFO: exit 0" [ $? = 0 ]
 wait $reader
 check "FIFO: the reader got 2 traces" [ "$(wc -l <got.txt)" = 2 ]
