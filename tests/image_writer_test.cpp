@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -21,6 +22,7 @@
 #include "render/image_writer.hpp"
 #include "util/atomic_file.hpp"
 #include "util/errors.hpp"
+#include "util/output_file.hpp"
 
 namespace fs = std::filesystem;
 using namespace promyk;
@@ -167,7 +169,7 @@ TEST_CASE("PNG and PGM read back byte for byte", "[image]") {
     CHECK(grey.pixels == pixels);
 }
 
-TEST_CASE("the PNG is 8-bit greyscale and the PGM header is plain", "[image]") {
+TEST_CASE("the PNG is 8-bit greyscale and .pgm is binary PGM (P5)", "[image]") {
     TempDir dir;
     const auto pixels = gradient(5, 2);
     for (const std::string name : {"g.png", "g.pgm"}) {
@@ -265,19 +267,27 @@ TEST_CASE("a file that cannot be created throws OutputError and leaves nothing",
     CHECK(dir.entries() == std::set<std::string>{"regular"});
 }
 
-TEST_CASE("a rename that fails throws OutputError and removes the temporary", "[image]") {
+TEST_CASE("a directory as the output is refused before any file is created", "[image]") {
     const std::string name = GENERATE(std::string("d.png"), std::string("d.pgm"));
     TempDir dir;
     const std::string path = dir.file(name);
     fs::create_directory(path);  // the final path is a directory
-    const auto pixels = gradient(3, 3);
-    {
-        auto writer = open_image_writer(path, 3, 3);
-        writer->write_rows(pixels.data(), 3);
-        CHECK_THROWS_MATCHES(writer->commit(), OutputError,
-                             Catch::Message("cannot write " + path + ": Is a directory"));
-    }
+    CHECK_THROWS_MATCHES(open_image_writer(path, 3, 3), OutputError,
+                         Catch::Message("cannot write " + path + ": Is a directory"));
     CHECK(dir.entries() == std::set<std::string>{name});
+    CHECK(fs::is_empty(path));
+}
+
+TEST_CASE("a rename that fails throws OutputError and removes the temporary", "[image]") {
+    TempDir dir;
+    const std::string path = dir.file("d.txt");
+    {
+        AtomicFile file(path);
+        file.write("text");
+        fs::create_directory(path);  // the final path became a directory meanwhile
+        CHECK_THROWS_MATCHES(file.commit(), OutputError, Catch::Message("cannot write " + path + ": Is a directory"));
+    }
+    CHECK(dir.entries() == std::set<std::string>{"d.txt"});
     CHECK(fs::is_empty(path));
 }
 
@@ -350,4 +360,104 @@ TEST_CASE("AtomicFile move assignment discards the file it replaces", "[image]")
     CHECK(dir.entries().size() == 1);
     a.commit();
     CHECK(dir.entries() == std::set<std::string>{"b"});
+}
+
+namespace {
+
+// Parses a plain PGM (P2): whitespace-separated numbers after the magic.
+Grey read_plain_pgm(const std::string& text) {
+    std::istringstream in(text);
+    std::string magic;
+    int maxval = 0;
+    Grey grey;
+    in >> magic >> grey.width >> grey.height >> maxval;
+    REQUIRE(magic == "P2");
+    REQUIRE(maxval == 255);
+    int value = 0;
+    while (in >> value) {
+        REQUIRE(value >= 0);
+        REQUIRE(value <= 255);
+        grey.pixels.push_back(static_cast<std::uint8_t>(value));
+    }
+    return grey;
+}
+
+}  // namespace
+
+TEST_CASE("plain PGM is P2 text with lines of at most 70 characters", "[image]") {
+    const auto size = GENERATE(std::make_pair(1, 1), std::make_pair(3, 2), std::make_pair(17, 13),
+                               std::make_pair(100, 3));
+    CAPTURE(size.first, size.second);
+    TempDir dir;
+    const std::string path = dir.file("plain.pgm");
+    auto pixels = gradient(size.first, size.second);
+    pixels[0] = 255;  // the widest number
+    {
+        OutputFile file(path);
+        auto writer = open_image_writer(file, ImageFormat::pgm_plain, size.first, size.second);
+        write_image(*writer, pixels);
+        writer->finish();
+        file.commit();
+    }
+    const std::string text = read_bytes(path);
+    CHECK(text.rfind(fmt::format("P2\n{} {}\n255\n", size.first, size.second), 0) == 0);
+    std::istringstream lines(text);
+    std::string line;
+    while (std::getline(lines, line)) CHECK(line.size() <= 70);
+    const Grey grey = read_plain_pgm(text);
+    CHECK(grey.width == size.first);
+    CHECK(grey.height == size.second);
+    CHECK(grey.pixels == pixels);
+}
+
+TEST_CASE("plain PGM: each image row starts a line", "[image]") {
+    TempDir dir;
+    const std::string path = dir.file("p.pgm");
+    const std::vector<std::uint8_t> pixels = {0, 128, 255, 7, 8, 9};
+    OutputFile file(path);
+    auto writer = open_image_writer(file, ImageFormat::pgm_plain, 3, 2);
+    writer->write_rows(pixels.data(), 2);
+    writer->finish();
+    file.commit();
+    CHECK(read_bytes(path) == "P2\n3 2\n255\n0 128 255\n7 8 9\n");
+}
+
+TEST_CASE("a scaled writer draws each pixel as a block, with grid lines between", "[image]") {
+    const bool grid = GENERATE(false, true);
+    const int scale = GENERATE(1, 2, 3);
+    CAPTURE(grid, scale);
+    TempDir dir;
+    const std::string path = dir.file("s.pgm");
+    const int w = 3;
+    const auto pixels = gradient(w, w);
+    const int side = static_cast<int>(scaled_side(w, scale, grid));
+    CHECK(side == w * scale + (grid ? w - 1 : 0));
+    {
+        OutputFile file(path);
+        auto writer = scale_image_writer(open_image_writer(file, ImageFormat::pgm, side, side), w, scale, grid);
+        CHECK(writer->width() == w);
+        write_image(*writer, pixels);
+        writer->finish();
+        file.commit();
+    }
+    const Grey grey = read_pgm(path);
+    REQUIRE(grey.width == side);
+    REQUIRE(grey.height == side);
+    const int step = scale + (grid ? 1 : 0);
+    for (int y = 0; y < side; ++y) {
+        for (int x = 0; x < side; ++x) {
+            const bool on_grid = grid && (y % step == scale || x % step == scale);
+            const std::uint8_t expected =
+                on_grid ? grid_grey : pixels[static_cast<std::size_t>((y / step) * w + x / step)];
+            CAPTURE(x, y);
+            REQUIRE(int(grey.pixels[static_cast<std::size_t>(y * side + x)]) == int(expected));
+        }
+    }
+}
+
+TEST_CASE("a scaled writer refuses an inner image of the wrong size", "[image]") {
+    TempDir dir;
+    OutputFile file(dir.file("s.pgm"));
+    CHECK_THROWS_AS(scale_image_writer(open_image_writer(file, ImageFormat::pgm, 8, 8), 3, 3, false),
+                    std::invalid_argument);
 }

@@ -1,8 +1,18 @@
 // promyk render: the whole image, and optionally JSON Lines traces beside it.
+//
+// Every output is checked and opened before anything is computed (a
+// directory, a missing folder, two outputs that are one file: nothing is
+// rendered and nothing is created), and the outputs are committed together
+// at the end, so a failed run leaves none of its new files.
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
@@ -13,73 +23,201 @@
 #include "app/progress.hpp"
 #include "render/image_writer.hpp"
 #include "render/renderer.hpp"
-#include "util/atomic_file.hpp"
+#include "render/trace_size.hpp"
 #include "util/errors.hpp"
+#include "util/output_file.hpp"
 
 namespace promyk::app {
 
 namespace {
+
+// Above this a trace file needs --force: a full trace at w = 512 is already
+// ~150 MB, at w = 2048 ~2.5 GB.
+constexpr double trace_file_limit = 1e9;
 
 struct RenderOptions {
     std::string scene_file;
     std::string output = "promyk.png";
     int w = 512;
     int threads = 0;
+    bool plain = false;
+    int scale = 1;
+    bool grid = false;
     std::string traces_file;
     std::vector<std::string> trace_pixels;
     std::vector<std::string> trace_regions;
+    bool force = false;
 };
 
-// Streams rows into the image and trace lines into the traces file; both
-// are temporary files until commit, so a failed render leaves nothing.
+// Streams rows into the image and trace lines into the traces file; regular
+// files are temporaries until commit, so a failed render leaves nothing.
 class FileSink final : public RenderSink {
 public:
-    FileSink(ImageWriter& image, AtomicFile* traces, Progress& progress)
+    FileSink(ImageWriter& image, OutputFile* traces, Progress& progress)
         : image_(image), traces_(traces), progress_(progress) {}
     void image_rows(const std::uint8_t* rows, int count) override { image_.write_rows(rows, count); }
-    void trace_lines(std::string_view lines) override { traces_->write(lines); }
+    void trace_lines(std::string_view lines) override {
+        traces_->write(lines);
+        for (const char c : lines) lines_ += c == '\n';
+    }
     void progress(int rows_done, int rows_total) override { progress_.update(rows_done, rows_total); }
+    std::int64_t trace_count() const { return lines_; }
 
 private:
     ImageWriter& image_;
-    AtomicFile* traces_;
+    OutputFile* traces_;
     Progress& progress_;
+    std::int64_t lines_ = 0;
 };
 
-PixelSelection traced_pixels(const RenderOptions& options) {
+// The pixels to trace, as the renderer wants them and as typed (for the size estimate).
+struct Traced {
     PixelSelection selection;
+    TracedPixels pixels;
+};
+
+Traced traced_pixels(const RenderOptions& options) {
+    Traced traced;
     for (const std::string& text : options.trace_pixels) {
         const cli::Pixel pixel = cli::parse_pixel(text, "--trace-pixel", options.w);
-        selection.add_pixel(pixel.i, pixel.j);
+        traced.selection.add_pixel(pixel.i, pixel.j);
+        traced.pixels.pixels.emplace_back(pixel.i, pixel.j);
     }
-    for (const std::string& text : options.trace_regions)
-        selection.add_region(cli::parse_region(text, "--trace-region", options.w));
+    for (const std::string& text : options.trace_regions) {
+        const PixelRegion region = cli::parse_region(text, "--trace-region", options.w);
+        traced.selection.add_region(region);
+        traced.pixels.regions.push_back(region);
+    }
     if (options.traces_file.empty()) {
-        if (!selection.empty()) throw UsageError("--trace-pixel and --trace-region choose pixels for --traces FILE");
-        return selection;
+        if (!traced.selection.empty())
+            throw UsageError("--trace-pixel and --trace-region choose pixels for --traces FILE");
+        return traced;
     }
-    return selection.empty() ? PixelSelection::all() : selection;
+    if (traced.selection.empty()) {
+        traced.selection = PixelSelection::all();
+        traced.pixels.all = true;
+    }
+    return traced;
+}
+
+// 1.2 kB, 150 MB, 2.5 GB: SI units, as disk sizes are sold.
+std::string byte_size(double bytes) {
+    if (bytes < 1000) return fmt::format("{:.0f} bytes", bytes);
+    const char* units[] = {"kB", "MB", "GB", "TB", "PB"};
+    int unit = 0;
+    bytes /= 1000;
+    while (bytes >= 999.5 && unit < 4) {
+        bytes /= 1000;
+        ++unit;
+    }
+    return bytes < 9.95 ? fmt::format("{:.1f} {}", bytes, units[unit]) : fmt::format("{:.0f} {}", bytes, units[unit]);
+}
+
+// A device or a FIFO named without an extension (-o /dev/null) gets PNG,
+// as does standard output; a file needs .png or .pgm.
+ImageFormat image_format(const RenderOptions& options, const OutputTarget& target) {
+    ImageFormat format = ImageFormat::png;
+    if (target.kind == OutputKind::file) {
+        format = image_format_for_path(options.output);
+    } else {
+        try {
+            format = image_format_for_path(options.output);
+        } catch (const UsageError&) {
+            format = ImageFormat::png;
+        }
+    }
+    if (options.plain) {
+        if (format != ImageFormat::pgm)
+            throw UsageError(fmt::format("--plain writes plain PGM (P2); it needs an -o FILE ending in .pgm, not '{}'",
+                                         options.output));
+        format = ImageFormat::pgm_plain;
+    }
+    return format;
+}
+
+void check_scale(const RenderOptions& options) {
+    // w blocks of `scale` pixels, and with --grid the w − 1 lines between them.
+    const int lines = options.grid ? options.w - 1 : 0;
+    const int largest = (max_image_side - lines) / options.w;
+    if (largest < 1)
+        throw UsageError(fmt::format("--grid at --w {} would make an image wider than {} pixels", options.w,
+                                     max_image_side));
+    if (options.scale < 1 || options.scale > largest)
+        throw UsageError(fmt::format("--scale must be between 1 and {} at --w {}{} (the image may be at most {} "
+                                     "pixels wide), not {}",
+                                     largest, options.w, options.grid ? " with --grid" : "", max_image_side,
+                                     options.scale));
+}
+
+std::string image_description(const RenderOptions& options, const Scene& scene) {
+    if (options.scale == 1 && !options.grid)
+        return fmt::format("{} × {} pixels, scene \"{}\"", options.w, options.w, scene.name);
+    const long side = scaled_side(options.w, options.scale, options.grid);
+    return fmt::format("{} × {} pixels: the {} × {} pane at scale {}{}, scene \"{}\"", side, side, options.w,
+                       options.w, options.scale, options.grid ? " with a grid" : "", scene.name);
 }
 
 int run_render(const RenderOptions& options) {
-    if (!options.traces_file.empty() && options.traces_file == options.output)
-        throw UsageError("--traces and -o name the same file");
-    const PixelSelection traced = traced_pixels(options);
+    check_scale(options);
+    const Traced traced = traced_pixels(options);
+
+    // Every output is looked at before anything is computed or created.
+    const OutputTarget image_target = inspect_output(options.output);
+    const ImageFormat format = image_format(options, image_target);
+    if (image_target.kind == OutputKind::standard_output && ::isatty(STDOUT_FILENO))
+        throw UsageError("-o - would write a PNG to the terminal: redirect standard output to a file or a pipe");
+    std::optional<OutputTarget> traces_target;
+    if (!options.traces_file.empty()) {
+        traces_target = inspect_output(options.traces_file);
+        require_distinct_outputs({{"-o", image_target}, {"--traces", *traces_target}});
+    }
+
     const Scene scene = cli::load_scene_option(options.scene_file);
     article_world(scene);  // reject a scene the engine cannot trace before creating any file
 
-    std::unique_ptr<ImageWriter> image = open_image_writer(options.output, options.w, options.w);
-    std::optional<AtomicFile> traces;
-    if (!options.traces_file.empty()) traces.emplace(options.traces_file);
+    // The size guard protects disks: it applies where the traces land in a
+    // regular file (a path, or standard output redirected to one), not to a
+    // pipe, a terminal or /dev/null.
+    if (traces_target && traces_target->lands_in_regular_file && !options.force) {
+        const TraceSizeEstimate estimate = estimate_trace_size(scene, options.w, traced.pixels);
+        if (estimate.bytes() > trace_file_limit) {
+            throw UsageError(fmt::format(
+                "--traces {} would be about {} ({} traces of about {} each); add --force to write it anyway, "
+                "or choose fewer pixels with --trace-pixel or --trace-region",
+                traces_target->display_name(), byte_size(estimate.bytes()), estimate.pixels,
+                byte_size(estimate.bytes_per_trace)));
+        }
+    }
+
+    // Open every output (create the temporaries) before computing.
+    OutputFile image_file(image_target);
+    std::optional<OutputFile> traces;
+    if (traces_target) traces.emplace(*traces_target);
+    const int side = static_cast<int>(scaled_side(options.w, options.scale, options.grid));
+    std::unique_ptr<ImageWriter> image = open_image_writer(image_file, format, side, side);
+    if (side != options.w) image = scale_image_writer(std::move(image), options.w, options.scale, options.grid);
+
+    std::int64_t trace_count = 0;
     {
         Progress progress("promyk render", "rows");
         FileSink sink(*image, traces ? &*traces : nullptr, progress);
-        render(scene, {options.w, options.threads}, traced, sink);
+        render(scene, {options.w, options.threads}, traced.selection, sink);
+        trace_count = sink.trace_count();
     }
-    image->commit();
-    if (traces) traces->commit();
-    fmt::print("wrote {} ({} x {} pixels, scene \"{}\")\n", options.output, options.w, options.w, scene.name);
-    if (traces) fmt::print("wrote {} (JSON Lines, one trace per pixel)\n", options.traces_file);
+    image->finish();
+    commit_together({&image_file, traces ? &*traces : nullptr});
+
+    // Status on stderr: standard output carries only the product (-o -, --traces -).
+    const std::string image_name =
+        image_target.kind == OutputKind::standard_output ? "PNG to standard output" : options.output;
+    fmt::print(stderr, "wrote {} ({})\n", image_name, image_description(options, scene));
+    if (traces) {
+        fmt::print(stderr, "wrote {} ({} {}, {})\n",
+                   traces->target().kind == OutputKind::standard_output ? "traces to standard output"
+                                                                        : options.traces_file,
+                   trace_count, trace_count == 1 ? "trace" : "traces",
+                   byte_size(static_cast<double>(traces->bytes_written())));
+    }
     return 0;
 }
 
@@ -89,15 +227,25 @@ std::function<int()> setup_render(CLI::App& app) {
     auto options = std::make_shared<RenderOptions>();
     CLI::App* cmd = app.add_subcommand("render", "Render the scene to an image (PNG or PGM), optionally with traces");
     add_scene_option(*cmd, options->scene_file);
-    cmd->add_option("-o,--output", options->output, "Image file: .png, or .pgm for the plain format")
+    cmd->add_option("-o,--output", options->output,
+                    "Image file: .png for PNG, .pgm for binary PGM (P5, add --plain for plain PGM, P2),\n"
+                    "or - for PNG on standard output")
         ->type_name("FILE")
         ->check(non_empty())
         ->capture_default_str();
+    cmd->add_flag("--plain", options->plain,
+                  "With a .pgm output: write plain PGM (P2, grey levels as text) instead of binary PGM (P5)");
     add_w_option(*cmd, options->w);
+    cmd->add_option("--scale", options->scale,
+                    "Draw each pixel as an N × N block, to show a small pane (w · N at most 32768)")
+        ->type_name("N")
+        ->check(whole_number(1, cli::max_w))
+        ->capture_default_str();
+    cmd->add_flag("--grid", options->grid, "Draw 1-pixel grey lines between the pixels' blocks (see --scale)");
     add_threads_option(*cmd, options->threads);
     cmd->add_option("--traces", options->traces_file,
-                    "Also write one JSON trace per pixel to FILE (JSON Lines, rows in order);\n"
-                    "all pixels unless --trace-pixel or --trace-region choose some")
+                    "Also write one JSON trace per pixel to FILE, or to standard output with -\n"
+                    "(JSON Lines, rows in order); all pixels unless --trace-pixel or --trace-region choose some")
         ->type_name("FILE")
         ->check(non_empty());
     cmd->add_option("--trace-pixel", options->trace_pixels, "Trace pixel I,J (repeatable)")
@@ -107,6 +255,7 @@ std::function<int()> setup_render(CLI::App& app) {
                     "Trace the pixels of rectangle I0,J0,I1,J1, corners included (repeatable)")
         ->type_name("I0,J0,I1,J1")
         ->allow_extra_args(false);
+    cmd->add_flag("--force", options->force, "Write a trace file even if it would be larger than about 1 GB");
     cmd->footer("Intensity maps to 8-bit grey as round(clamp(v, 0, 1) * 255).");
     return [options] { return run_render(*options); };
 }

@@ -1,15 +1,19 @@
 // promyk: an educational ray tracer that shows its work.
 // main only wires the subcommands and maps errors to exit codes:
 // 0 success, 2 bad command line, 3 bad input file, 4 output not written,
-// 128 + signal after SIGINT or SIGTERM; 70 an internal error (a bug).
+// 128 + signal after SIGHUP, SIGINT or SIGTERM, 141 when the reader of
+// standard output quits; 70 an internal error (a bug).
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <string>
 #include <vector>
 #include <exception>
 #include <functional>
 #include <new>
+#include <system_error>
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
@@ -19,6 +23,7 @@
 #include "util/errors.hpp"
 #include "util/printable.hpp"
 #include "util/interrupt.hpp"
+#include "util/output_file.hpp"
 
 namespace {
 
@@ -58,6 +63,59 @@ std::string where_of(const promyk::InputError& error) {
     return fmt::format("{}: {}", error.file, error.where);
 }
 
+const char* signal_name(int signal_number) {
+    switch (signal_number) {
+        case SIGHUP:
+            return "SIGHUP";
+        case SIGINT:
+            return "SIGINT";
+        case SIGTERM:
+            return "SIGTERM";
+        default:
+            return "a signal";
+    }
+}
+
+// Reports the exception being handled and returns the exit code for it.
+int exit_code_for_failure(const std::string& name) {
+    // A signal that arrives while promyk is blocked (reading a scene from a
+    // FIFO, opening a FIFO for output) makes the call fail with EINTR, which
+    // surfaces as an input or output error: the signal is what happened.
+    if (const int signal_number = promyk::interrupt_signal()) {
+        report(fmt::format("interrupted by {}; no output file was written", signal_name(signal_number)));
+        return 128 + signal_number;
+    }
+    try {
+        throw;
+    } catch (const promyk::UsageError& error) {
+        report(error.what());
+        fmt::print(stderr, "Run 'promyk {} --help' for the options.\n", name);
+        return 2;
+    } catch (const promyk::InputError& error) {
+        report(fmt::format("{}: {}", where_of(error), error.what()));
+        return 3;
+    } catch (const promyk::OutputError& error) {
+        report(error.what());
+        return 4;
+    } catch (const promyk::BrokenPipe&) {
+        return 128 + SIGPIPE;  // the reader quit: quietly, as if SIGPIPE had ended us
+    } catch (const promyk::Interrupted& error) {
+        report(fmt::format("interrupted by {}; no output file was written", signal_name(error.signal_number)));
+        return 128 + error.signal_number;
+    } catch (const std::bad_alloc&) {
+        report("out of memory");
+        return 70;
+    } catch (const std::system_error& error) {
+        // fmt::print to standard output when its reader has quit.
+        if (error.code().value() == EPIPE) return 128 + SIGPIPE;
+        report(fmt::format("internal error (a bug in promyk, please report it): {}", error.what()));
+        return 70;
+    } catch (const std::exception& error) {
+        report(fmt::format("internal error (a bug in promyk, please report it): {}", error.what()));
+        return 70;
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -72,7 +130,8 @@ int main(int argc, char** argv) {
     app.footer(
         "Run 'promyk COMMAND --help' for a command's options.\n"
         "Exit codes: 0 success, 2 bad command line, 3 bad input file, 4 output not written,\n"
-        "130/143 interrupted (nothing half-written), 70 internal error.");
+        "129/130/143 interrupted (nothing half-written), 141 reader of standard output quit,\n"
+        "70 internal error.");
 
     const auto render = promyk::app::setup_render(app);
     const auto trace = promyk::app::setup_trace(app);
@@ -116,25 +175,12 @@ int main(int argc, char** argv) {
                                       : name == "lesson" ? lesson
                                                          : bench;
     try {
-        return run();
-    } catch (const promyk::UsageError& error) {
-        report(error.what());
-        fmt::print(stderr, "Run 'promyk {} --help' for the options.\n", name);
-        return 2;
-    } catch (const promyk::InputError& error) {
-        report(fmt::format("{}: {}", where_of(error), error.what()));
-        return 3;
-    } catch (const promyk::OutputError& error) {
-        report(error.what());
-        return 4;
-    } catch (const promyk::Interrupted& error) {
-        report("interrupted; no output was written");
-        return 128 + error.signal_number;
-    } catch (const std::bad_alloc&) {
-        report("out of memory");
-        return 70;
-    } catch (const std::exception& error) {
-        report(fmt::format("internal error (a bug in promyk, please report it): {}", error.what()));
-        return 70;
+        const int code = run();
+        // Standard output is flushed here, not at exit, so that a failure
+        // (a reader that quit, a full disk) changes the exit code.
+        if (std::fflush(stdout) != 0) promyk::throw_write_error("standard output", errno);
+        return code;
+    } catch (...) {
+        return exit_code_for_failure(name);
     }
 }

@@ -2,10 +2,12 @@
 #include "render/image_writer.hpp"
 
 #include <stdexcept>
+#include <utility>
 
 #include <fmt/format.h>
 
 #include "util/errors.hpp"
+#include "util/output_file.hpp"
 
 namespace promyk {
 namespace {
@@ -16,6 +18,12 @@ std::string lowercase(std::string text) {
         if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
     }
     return text;
+}
+
+void check_size(int width, int height) {
+    if (width <= 0 || height <= 0) {
+        throw std::invalid_argument(fmt::format("image size {}x{} is not positive", width, height));
+    }
 }
 
 }  // namespace
@@ -31,21 +39,38 @@ ImageFormat image_format_for_path(const std::string& path) {
     throw UsageError(fmt::format("unsupported image extension '{}': use .png or .pgm", path));
 }
 
-std::unique_ptr<ImageWriter> open_image_writer(const std::string& path, int width, int height) {
-    switch (image_format_for_path(path)) {
+std::unique_ptr<ImageWriter> open_image_writer(OutputFile& file, ImageFormat format, int width, int height) {
+    switch (format) {
         case ImageFormat::png:
-            return open_png_writer(path, width, height);
+            return open_png_writer(file, width, height);
         case ImageFormat::pgm:
-            return open_pgm_writer(path, width, height);
+            return open_pgm_writer(file, width, height, false);
+        case ImageFormat::pgm_plain:
+            return open_pgm_writer(file, width, height, true);
     }
     throw std::logic_error("unknown ImageFormat");
 }
 
-ImageWriter::ImageWriter(int width, int height) : width_(width), height_(height) {
-    // Checked here, before a derived writer creates its temporary file.
-    if (width <= 0 || height <= 0) {
-        throw std::invalid_argument(fmt::format("image size {}x{} is not positive", width, height));
-    }
+std::unique_ptr<ImageWriter> open_image_writer(const std::string& path, int width, int height) {
+    // Both checked before the file (its temporary) is created.
+    const ImageFormat format = image_format_for_path(path);
+    check_size(width, height);
+    auto file = std::make_unique<OutputFile>(path);
+    std::unique_ptr<ImageWriter> writer = open_image_writer(*file, format, width, height);
+    writer->adopt(std::move(file));
+    return writer;
+}
+
+ImageWriter::ImageWriter(int width, int height) : width_(width), height_(height) { check_size(width, height); }
+
+ImageWriter::~ImageWriter() = default;
+
+void ImageWriter::adopt(std::unique_ptr<OutputFile> file) { owned_file_ = std::move(file); }
+
+void ImageWriter::commit() {
+    if (!owned_file_) throw std::logic_error("image writer: commit() on a writer that does not own its file");
+    finish();
+    owned_file_->commit();
 }
 
 void ImageWriter::take_rows(int count) {

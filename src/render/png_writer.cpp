@@ -16,16 +16,16 @@
 #include <fmt/format.h>
 
 #include "render/image_writer.hpp"
-#include "util/atomic_file.hpp"
 #include "util/errors.hpp"
+#include "util/output_file.hpp"
 
 namespace promyk {
 namespace {
 
 // What libpng's callbacks share with us. Plain data: longjmp may skip it.
 struct PngContext {
-    std::FILE* file = nullptr;
-    int write_errno = 0;     // errno of a failed fwrite, else 0
+    OutputFile* file = nullptr;
+    int write_errno = 0;     // errno of a failed write, else 0
     char message[256] = {};  // libpng's message for any other error
 };
 
@@ -39,17 +39,17 @@ void on_png_error(png_structp png, png_const_charp message) {
 void on_png_warning(png_structp, png_const_charp) {}
 
 // Our own output function, so that a failed write keeps its errno ("No space
-// left on device") instead of libpng's generic "Write Error".
+// left on device", or EPIPE when a reader quits) instead of libpng's generic
+// "Write Error".
 void on_png_write(png_structp png, png_bytep data, std::size_t length) {
     auto* context = static_cast<PngContext*>(png_get_io_ptr(png));
-    errno = 0;
-    if (std::fwrite(data, 1, length, context->file) != length) {
-        context->write_errno = errno != 0 ? errno : EIO;
+    if (const int err = context->file->write_noexcept(data, length)) {
+        context->write_errno = err;
         png_error(png, "write failed");
     }
 }
 
-void on_png_flush(png_structp) {}  // AtomicFile::commit flushes and syncs
+void on_png_flush(png_structp) {}  // OutputFile::finish flushes and syncs
 
 // The libpng calls, each behind its own setjmp: false if libpng failed.
 bool png_begin(png_structp png, png_infop info, png_uint_32 width, png_uint_32 height) {
@@ -91,12 +91,12 @@ struct PngHandles {
 
 class PngWriter final : public ImageWriter {
 public:
-    PngWriter(const std::string& path, int width, int height) : ImageWriter(width, height), file_(path) {
-        context_.file = file_.stream();
+    PngWriter(OutputFile& file, int width, int height) : ImageWriter(width, height), file_(file) {
+        context_.file = &file_;
         handles_.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &context_, on_png_error, on_png_warning);
         if (handles_.png != nullptr) handles_.info = png_create_info_struct(handles_.png);
         if (handles_.info == nullptr) {
-            throw OutputError(fmt::format("cannot write {}: libpng could not start", file_.path()));
+            throw OutputError(fmt::format("cannot write {}: libpng could not start", file_.display_name()));
         }
         png_set_write_fn(handles_.png, &context_, on_png_write, on_png_flush);
         check(
@@ -109,11 +109,10 @@ public:
         check(png_rows(handles_.png, rows, static_cast<std::size_t>(width()), count));
     }
 
-    void commit() override {
+    void finish() override {
         require_usable();
         require_complete();
         check(png_end(handles_.png, handles_.info));
-        file_.commit();
     }
 
 private:
@@ -125,13 +124,11 @@ private:
     void check(bool ok) {
         if (ok) return;
         failed_ = true;
-        const std::string reason = context_.write_errno != 0 ? std::generic_category().message(context_.write_errno)
-                                                             : fmt::format("libpng: {}", context_.message);
-        throw OutputError(fmt::format("cannot write {}: {}", file_.path(), reason));
+        if (context_.write_errno != 0) throw_write_error(file_.display_name(), context_.write_errno);
+        throw OutputError(fmt::format("cannot write {}: libpng: {}", file_.display_name(), context_.message));
     }
 
-    // Declared in this order so libpng is destroyed before the file.
-    AtomicFile file_;
+    OutputFile& file_;
     PngContext context_;
     PngHandles handles_;
     bool failed_ = false;
@@ -139,8 +136,8 @@ private:
 
 }  // namespace
 
-std::unique_ptr<ImageWriter> open_png_writer(const std::string& path, int width, int height) {
-    return std::make_unique<PngWriter>(path, width, height);
+std::unique_ptr<ImageWriter> open_png_writer(OutputFile& file, int width, int height) {
+    return std::make_unique<PngWriter>(file, width, height);
 }
 
 }  // namespace promyk

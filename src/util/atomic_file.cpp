@@ -58,17 +58,18 @@ std::string temporary_template(const std::string& final_path) {
 
 }  // namespace
 
-AtomicFile::AtomicFile(std::string final_path) : final_path_(std::move(final_path)) {
-    if (final_path_.empty()) fail(final_path_, ENOENT);
+AtomicFile::AtomicFile(std::string final_path, std::string name_in_errors)
+    : final_path_(std::move(final_path)), name_(name_in_errors.empty() ? final_path_ : std::move(name_in_errors)) {
+    if (final_path_.empty()) fail(name_, ENOENT);
     std::string name = temporary_template(final_path_);
     const int fd = ::mkostemp(name.data(), O_CLOEXEC);
-    if (fd < 0) fail(final_path_, errno);
+    if (fd < 0) fail(name_, errno);
     std::FILE* stream = ::fdopen(fd, "wb");
     if (stream == nullptr) {
         const int err = errno;
         ::close(fd);
         ::unlink(name.c_str());
-        fail(final_path_, err);
+        fail(name_, err);
     }
     temp_path_ = std::move(name);
     stream_ = stream;
@@ -78,15 +79,19 @@ AtomicFile::~AtomicFile() { discard(); }
 
 AtomicFile::AtomicFile(AtomicFile&& other) noexcept
     : final_path_(std::move(other.final_path_)),
+      name_(std::move(other.name_)),
       temp_path_(std::exchange(other.temp_path_, std::string())),
-      stream_(std::exchange(other.stream_, nullptr)) {}
+      stream_(std::exchange(other.stream_, nullptr)),
+      finished_(std::exchange(other.finished_, false)) {}
 
 AtomicFile& AtomicFile::operator=(AtomicFile&& other) noexcept {
     if (this != &other) {
         discard();
         final_path_ = std::move(other.final_path_);
+        name_ = std::move(other.name_);
         temp_path_ = std::exchange(other.temp_path_, std::string());
         stream_ = std::exchange(other.stream_, nullptr);
+        finished_ = std::exchange(other.finished_, false);
     }
     return *this;
 }
@@ -95,24 +100,35 @@ void AtomicFile::write(std::string_view bytes) {
     require_open();
     if (bytes.empty()) return;
     errno = 0;
-    if (std::fwrite(bytes.data(), 1, bytes.size(), stream_) != bytes.size()) fail(final_path_, errno_or_eio());
+    if (std::fwrite(bytes.data(), 1, bytes.size(), stream_) != bytes.size()) fail(name_, errno_or_eio());
 }
 
 void AtomicFile::commit() {
+    finish();
+    publish();
+}
+
+void AtomicFile::finish() {
     require_open();
     // A full disk often shows only here, when the last buffer is written;
     // ferror catches failures of writes made through stream() and unchecked.
     errno = 0;
-    if (std::fflush(stream_) != 0 || std::ferror(stream_)) fail(final_path_, errno_or_eio());
+    if (std::fflush(stream_) != 0 || std::ferror(stream_)) fail(name_, errno_or_eio());
     const int fd = ::fileno(stream_);
-    if (::fchmod(fd, 0666 & ~current_umask()) != 0) fail(final_path_, errno);
+    if (::fchmod(fd, 0666 & ~current_umask()) != 0) fail(name_, errno);
     // The data must be on disk before the rename makes it the file: otherwise
     // a crash could leave the new name pointing at an empty file.
-    if (::fsync(fd) != 0) fail(final_path_, errno);
+    if (::fsync(fd) != 0) fail(name_, errno);
     errno = 0;
-    if (std::fclose(std::exchange(stream_, nullptr)) != 0) fail(final_path_, errno_or_eio());
-    if (std::rename(temp_path_.c_str(), final_path_.c_str()) != 0) fail(final_path_, errno);
+    if (std::fclose(std::exchange(stream_, nullptr)) != 0) fail(name_, errno_or_eio());
+    finished_ = true;
+}
+
+void AtomicFile::publish() {
+    if (!finished_ || temp_path_.empty()) throw std::logic_error("AtomicFile published before finish()");
+    if (std::rename(temp_path_.c_str(), final_path_.c_str()) != 0) fail(name_, errno);
     temp_path_.clear();
+    finished_ = false;
 }
 
 void AtomicFile::require_open() const {
@@ -123,6 +139,7 @@ void AtomicFile::discard() noexcept {
     if (stream_ != nullptr) std::fclose(std::exchange(stream_, nullptr));
     if (!temp_path_.empty()) ::unlink(temp_path_.c_str());
     temp_path_.clear();
+    finished_ = false;
 }
 
 }  // namespace promyk

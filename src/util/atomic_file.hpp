@@ -16,7 +16,9 @@ public:
     // Creates the temporary `.<basename>.promyk-XXXXXX` in the final path's
     // directory (same file system, so the rename is atomic). OutputError if
     // it cannot be created, e.g. the directory does not exist.
-    explicit AtomicFile(std::string final_path);
+    // Errors name `name_in_errors` if given (the path the user typed, when
+    // final_path is that path with its symbolic links resolved).
+    explicit AtomicFile(std::string final_path, std::string name_in_errors = "");
     // Removes the temporary unless commit() succeeded.
     ~AtomicFile();
 
@@ -32,11 +34,19 @@ public:
     // Appends bytes; OutputError on failure.
     void write(std::string_view bytes);
 
-    // Flushes, syncs and closes the temporary, gives it the mode a new file
-    // would get (0666 & ~umask; mkstemp makes 0600) and renames it onto the
-    // final path. OutputError on any failure; the temporary is then removed
-    // by the destructor.
+    // finish(), then publish().
     void commit();
+
+    // Flushes, syncs and closes the temporary and gives it the mode a new
+    // file would get (0666 & ~umask; mkstemp makes 0600). OutputError on any
+    // failure; the temporary is then removed by the destructor. Split from
+    // publish() so that several files can all be finished before any of
+    // them is renamed.
+    void finish();
+
+    // Renames the finished temporary onto the final path. OutputError if
+    // that fails; std::logic_error unless finish() succeeded first.
+    void publish();
 
     const std::string& path() const noexcept { return final_path_; }
     // The temporary's path while it exists (empty after commit or a move).
@@ -47,8 +57,10 @@ private:
     void discard() noexcept;
 
     std::string final_path_;
+    std::string name_;       // for error messages
     std::string temp_path_;  // non-empty while a temporary exists
     std::FILE* stream_ = nullptr;
+    bool finished_ = false;  // closed by finish(), not yet renamed
 };
 
 }  // namespace promyk

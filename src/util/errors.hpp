@@ -26,7 +26,15 @@ struct OutputError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// The user interrupted the work (SIGINT, SIGTERM): exit 128 + signal.
+// The reader of standard output (or of a FIFO) went away: a write failed
+// with EPIPE. Not an OutputError: main exits quietly with 141, as a process
+// that SIGPIPE ended would (SIGPIPE itself is ignored so that unwinding can
+// remove temporary files).
+struct BrokenPipe : std::runtime_error {
+    explicit BrokenPipe(const std::string& path) : std::runtime_error("broken pipe writing " + path) {}
+};
+
+// The user interrupted the work (SIGINT, SIGTERM, SIGHUP): exit 128 + signal.
 struct Interrupted : std::runtime_error {
     explicit Interrupted(int signal) : std::runtime_error("interrupted"), signal_number(signal) {}
     int signal_number;
