@@ -25,6 +25,7 @@
 #include "render/renderer.hpp"
 #include "render/trace_size.hpp"
 #include "util/errors.hpp"
+#include "util/printable.hpp"
 #include "util/output_file.hpp"
 
 namespace promyk::app {
@@ -41,6 +42,7 @@ struct RenderOptions {
     int w = 512;
     int threads = 0;
     bool plain = false;
+    bool stats = false;
     int scale = 1;
     bool grid = false;
     std::string traces_file;
@@ -157,6 +159,15 @@ std::string image_description(const RenderOptions& options, const Scene& scene) 
                        options.w, options.scale, options.grid ? " with a grid" : "", scene.name);
 }
 
+// What the engine did, on stderr: rays by kind, intersection tests, pixels by branch.
+void print_stats(const RenderStats& stats) {
+    fmt::print(stderr, "statistics:\n");
+    fmt::print(stderr, "  rays cast: {} primary (one a pixel), 0 shadow\n", stats.primary_rays);
+    fmt::print(stderr, "  ray-sphere intersection tests: {}\n", stats.sphere_tests);
+    fmt::print(stderr, "  pixels: {} miss, {} dark, {} lit, {} non-finite\n", stats.count(Branch::miss),
+               stats.count(Branch::dark), stats.count(Branch::lit), stats.count(Branch::non_finite));
+}
+
 int run_render(const RenderOptions& options) {
     check_scale(options);
     const Traced traced = traced_pixels(options);
@@ -198,10 +209,11 @@ int run_render(const RenderOptions& options) {
     if (side != options.w) image = scale_image_writer(std::move(image), options.w, options.scale, options.grid);
 
     std::int64_t trace_count = 0;
+    RenderStats stats;
     {
         Progress progress("promyk render", "rows");
         FileSink sink(*image, traces ? &*traces : nullptr, progress);
-        render(scene, {options.w, options.threads}, traced.selection, sink);
+        render(scene, {options.w, options.threads}, traced.selection, sink, &stats);
         trace_count = sink.trace_count();
     }
     image->finish();
@@ -210,14 +222,25 @@ int run_render(const RenderOptions& options) {
     // Status on stderr: standard output carries only the product (-o -, --traces -).
     const std::string image_name =
         image_target.kind == OutputKind::standard_output ? "PNG to standard output" : options.output;
-    fmt::print(stderr, "wrote {} ({})\n", image_name, image_description(options, scene));
+    fmt::print(stderr, "wrote {} ({})\n", printable(image_name), printable(image_description(options, scene)));
     if (traces) {
         fmt::print(stderr, "wrote {} ({} {}, {})\n",
                    traces->target().kind == OutputKind::standard_output ? "traces to standard output"
-                                                                        : options.traces_file,
+                                                                        : printable(options.traces_file),
                    trace_count, trace_count == 1 ? "trace" : "traces",
                    byte_size(static_cast<double>(traces->bytes_written())));
     }
+    if (const long long non_finite = stats.count(Branch::non_finite)) {
+        // The render finished; these pixels' numbers overflowed (PRODUCT.md §9).
+        fmt::print(stderr,
+                   "promyk: warning: {} of {} pixels are non-finite: their numbers left the range of a double, so "
+                   "no branch could be decided (drawn as grey 0, or 255 for an intensity of inf); the first is ({}, "
+                   "{}): see promyk trace --pixel {},{} --w {}{}\n",
+                   non_finite, stats.primary_rays, stats.first_non_finite_i, stats.first_non_finite_j,
+                   stats.first_non_finite_i, stats.first_non_finite_j, options.w,
+                   options.scene_file.empty() ? "" : " --scene " + printable(options.scene_file));
+    }
+    if (options.stats) print_stats(stats);
     return 0;
 }
 
@@ -233,6 +256,8 @@ std::function<int()> setup_render(CLI::App& app) {
         ->type_name("FILE")
         ->check(non_empty())
         ->capture_default_str();
+    cmd->add_flag("--stats", options->stats,
+                  "Print what the engine did on stderr: rays cast, intersection tests, pixels by branch");
     cmd->add_flag("--plain", options->plain,
                   "With a .pgm output: write plain PGM (P2, grey levels as text) instead of binary PGM (P5)");
     add_w_option(*cmd, options->w);

@@ -65,3 +65,9 @@ promyk_cli_test(lesson_pixel_outside ARGS lesson pane --pixel 8,0 EXIT 2 STDERR 
 promyk_cli_test(lesson_small_w ARGS lesson pane --w 4 EXIT 2 STDERR "the lesson's pixel \\(5, 1\\) is outside the 4 × 4 pane")
 add_test(NAME cli.lesson_files COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cli/lesson_files_test.sh $<TARGET_FILE:promyk>
                                        ${CMAKE_CURRENT_BINARY_DIR}/cli/lesson_files)
+
+# render finishes an overflowing scene, exits 0, and says how many pixels and which first.
+promyk_cli_test(render_non_finite ARGS render --scene ${scenes}/far_pane.json --w 16 -o far.png EXIT 0 FILES far.png
+                STDERR "warning: 256 of 256 pixels are non-finite.*the first is \\(0, 0\\): see promyk trace --pixel 0,0 --w 16 --scene")
+promyk_cli_test(render_stats ARGS render --w 64 -o a.png --stats EXIT 0
+                STDERR "rays cast: 4096 primary.*intersection tests: 4096\n.*pixels: 2380 miss, 342 dark, 1374 lit, 0 non-finite")
