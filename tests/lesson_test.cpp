@@ -2,6 +2,8 @@
 #include <catch2/catch.hpp>
 
 #include <regex>
+
+#include <fmt/format.h>
 #include <set>
 
 #include "lesson/lesson_check.hpp"
@@ -215,6 +217,67 @@ TEST_CASE("the built-in lessons pass the check and run for a miss, a dark and a 
             INFO(lesson.file);
             // No placeholder is left unresolved (LaTeX braces follow a letter, ^, _ or \).
             for (const Placeholder& placeholder : find_placeholders(out)) FAIL_CHECK("left in the output: " << placeholder.name);
+        }
+    }
+}
+
+TEST_CASE("the built-in lessons name every quantity of the vocabulary, and each explains its pixels' branches",
+          "[lesson]") {
+    const LessonLibrary library;
+    std::vector<LessonProblem> problems;
+    for (const Language language : {Language::pl, Language::en}) {
+        std::set<std::string> named;
+        for (const Lesson& lesson : library.lessons(problems)) {
+            if (lesson.language != language) continue;
+            std::set<std::string> branches;
+            bool every_pixel = false;
+            for (const LessonStep& step : lesson.steps) {
+                for (const LessonPart& part : step.parts) {
+                    for (const std::string& key : part.keys) named.insert(key);
+                    for (const Placeholder& placeholder : find_placeholders(part.text)) named.insert(placeholder.name);
+                    if (part.kind == PartKind::block && part.branches.empty()) every_pixel = true;
+                    branches.insert(part.branches.begin(), part.branches.end());
+                }
+            }
+            // A lesson that tells pixels apart tells every branch its pixels take.
+            if (branches.empty() && !every_pixel) continue;
+            const Scene scene = library.scene(lesson.header.scene);
+            for (const LessonPixel& pixel : lesson.header.pixels) {
+                const std::string branch(branch_name(trace_pixel(scene, lesson.header.w, pixel.i, pixel.j).branch));
+                INFO(lesson.file << ": pixel (" << pixel.i << ", " << pixel.j << ") is " << branch);
+                CHECK((every_pixel || branches.count(branch) == 1));
+            }
+        }
+        for (const VocabularyEntry& entry : builtin_vocabulary().keys) {
+            INFO("language " << language_code(language) << ", key " << entry.key);
+            CHECK(named.count(entry.key) == 1);
+        }
+    }
+}
+
+TEST_CASE("a lesson's value tables show the trace's values", "[lesson]") {
+    const LessonLibrary library;
+    std::vector<LessonProblem> problems;
+    for (const Lesson& lesson : library.lessons(problems)) {
+        const Scene scene = library.scene(lesson.header.scene);
+        LessonView view{lesson, builtin_vocabulary(), {}, scene.name, 8};
+        for (const auto& [i, j] : std::vector<std::pair<int, int>>{{0, 0}, {5, 1}, {3, 4}})
+            view.traces.push_back(trace_pixel(scene, 8, i, j));
+        for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
+            const std::string text = render_step(view, k);
+            for (const LessonPart& part : lesson.steps[k].parts) {
+                for (const std::string& key : part.keys) {
+                    for (const PixelTrace& trace : view.traces) {
+                        const auto value = lesson_value(trace, key);
+                        if (!value) continue;
+                        const std::string shown = fmt::format("({}, {}): {}", trace.header.i, trace.header.j,
+                                                              value_text(*value, builtin_vocabulary().find(key)->kind,
+                                                                         lesson.language));
+                        INFO(lesson.file << " step " << k + 1 << ": " << shown);
+                        CHECK(text.find(shown) != std::string::npos);
+                    }
+                }
+            }
         }
     }
 }

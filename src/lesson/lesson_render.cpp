@@ -125,23 +125,27 @@ std::string wrap(const std::string& text, std::size_t indent, std::size_t first_
     return out;
 }
 
-bool verbatim_line(const std::string& line) {
-    if (line.rfind("    ", 0) == 0 || line.rfind("- ", 0) == 0 || line.rfind("* ", 0) == 0 || line.rfind("|", 0) == 0)
-        return true;
+// The width of a list item's marker ("- ", "* ", "12. "), or 0.
+std::size_t list_marker(const std::string& line) {
+    if (line.rfind("- ", 0) == 0 || line.rfind("* ", 0) == 0) return 2;
     std::size_t k = 0;
     while (k < line.size() && std::isdigit(static_cast<unsigned char>(line[k]))) ++k;
-    return k > 0 && line.compare(k, 2, ". ") == 0;
+    return k > 0 && line.compare(k, 2, ". ") == 0 ? k + 2 : 0;
 }
 
-// Paragraphs reflowed to 80 columns; lists, tables and code kept as written.
+// Paragraphs and list items reflowed to 80 columns (an item's lines hang
+// under its text); tables, indented and fenced code kept as written.
 std::string text_paragraphs(const std::string& text, std::size_t indent, std::size_t first_used = 0) {
     std::string out, paragraph;
+    std::size_t hang = 0;  // the open list item's marker width, 0 for a paragraph
     bool code = false;
     const std::string pad(indent, ' ');
     const auto flush = [&] {
         if (paragraph.empty()) return;
-        out += (out.empty() && first_used > 0 ? "" : pad) + wrap(plain(paragraph), indent, out.empty() ? first_used : indent) + "\n";
+        const bool first = out.empty() && first_used > 0;
+        out += (first ? "" : pad) + wrap(plain(paragraph), indent + hang, first ? first_used : indent) + "\n";
         paragraph.clear();
+        hang = 0;
     };
     std::size_t start = 0;
     while (start <= text.size()) {
@@ -153,16 +157,23 @@ std::string text_paragraphs(const std::string& text, std::size_t indent, std::si
             code = !code;
             continue;
         }
+        const std::size_t first_char = line.find_first_not_of(' ');
         if (code) {
             out += pad + "    " + line + "\n";
-        } else if (line.find_first_not_of(' ') == std::string::npos) {
+        } else if (first_char == std::string::npos) {
             flush();
             if (!out.empty() && out.compare(out.size() - 2, 2, "\n\n") != 0) out += "\n";
-        } else if (verbatim_line(line)) {
+        } else if (line.rfind("    ", 0) == 0 && hang == 0 && paragraph.empty()) {
+            out += pad + line + "\n";  // indented code
+        } else if (line.rfind("|", 0) == 0) {
             flush();
             out += pad + plain(line) + "\n";
+        } else if (const std::size_t marker = list_marker(line)) {
+            flush();
+            paragraph = line;
+            hang = marker;
         } else {
-            paragraph += (paragraph.empty() ? "" : " ") + line.substr(line.find_first_not_of(' '));
+            paragraph += (paragraph.empty() ? "" : " ") + line.substr(first_char);
         }
     }
     flush();
