@@ -92,7 +92,7 @@ TEST_CASE("numbers are read as typed, in either language's style", "[answers]") 
     CHECK(parse_typed_number("-0.5")->negative);
     CHECK(parse_typed_number("1e3")->scale == -3);
     CHECK(parse_typed_number(",5")->scale == 1);
-    for (const char* bad : {"", "-", "abc", "1,2,3", "1.", "--1", "1 000", "1e", "6,4x", "0x10", "inf"}) {
+    for (const char* bad : {"", "-", "abc", "1,2,3", "1.", "--1", "1 000", "1e", "6,4x", "0x10", "inf", "1e-9999"}) {
         INFO(bad);
         CHECK_FALSE(parse_typed_number(bad));
     }
@@ -224,6 +224,7 @@ TEST_CASE("a malformed answer file is refused with its line", "[answers]") {
     CHECK(fault_of("# nothing\n\n") == "(no line)");                        // no answer at all
     CHECK(fault_of("C = \nEE =\n") == "(no line)");
     CHECK(fault_of("{\"C\": 6.4,\n \"EE\": }\n") == "line 2");              // JSON syntax
+    CHECK(fault_of("C.x = 6,4\n") == "line 1");                            // C is one number: no component
     CHECK(fault_of("{\"C\": true}") == "/C");
     CHECK(fault_of("{\"Cee\": 6.4}") == "/Cee");
     CHECK(fault_of("[3,4]\nC = 6,4\r\nEE = (1; 2; 3)\n# comment\n").empty());  // CRLF, and EE's shape is checked later

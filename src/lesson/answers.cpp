@@ -15,6 +15,8 @@ namespace promyk {
 
 namespace {
 
+constexpr int max_typed_scale = 1100;
+
 // --- exact decimals ---------------------------------------------------------
 
 // |value| = digits × 10^-scale exactly (a double is a finite binary fraction,
@@ -151,7 +153,7 @@ std::string keys_list(const Vocabulary& vocabulary) {
     return keys;
 }
 
-// "P.x" -> ("P", 'x'); the key must be in the vocabulary.
+// "P.x" -> ("P", 'x'); the key must be in the vocabulary, a component only of a point or vector.
 std::optional<std::pair<std::string, char>> split_key(const std::string& text, const Vocabulary& vocabulary) {
     std::string key = text;
     char component = 0;
@@ -159,7 +161,8 @@ std::optional<std::pair<std::string, char>> split_key(const std::string& text, c
         component = key.back();
         key.resize(key.size() - 2);
     }
-    if (vocabulary.find(key) == nullptr) return std::nullopt;
+    const VocabularyEntry* entry = vocabulary.find(key);
+    if (entry == nullptr || (component != 0 && entry->kind != "point" && entry->kind != "vector")) return std::nullopt;
     return std::make_pair(key, component);
 }
 
@@ -438,6 +441,9 @@ std::optional<TypedNumber> parse_typed_number(std::string_view text) {
     }
     if (at != text.size()) return std::nullopt;
     number.scale = after_point - exponent;
+    // A double's exact decimal expansion has at most 1074 decimals; beyond some
+    // such bound a "precision" is a typo (1e-9999), not a claim worth expanding.
+    if (number.scale > max_typed_scale || number.scale < -max_typed_scale) return std::nullopt;
     return number;
 }
 
