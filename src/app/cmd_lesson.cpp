@@ -1,12 +1,20 @@
 // promyk lesson: the article's derivation replayed with the real numbers of
-// chosen pixels, in Polish or English; also --list, --check and --dump.
+// chosen pixels, in Polish or English; also --list, --check and --dump, a
+// worksheet with blanks (--worksheet, --key) and a check of a student's
+// numbers (--answers FILE).
 #include <unistd.h>
 
+#include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include <fmt/format.h>
@@ -14,10 +22,13 @@
 #include "app/cli_values.hpp"
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
+#include "lesson/answers.hpp"
 #include "lesson/lesson_check.hpp"
 #include "lesson/lesson_library.hpp"
 #include "lesson/lesson_render.hpp"
+#include "lesson/worksheet.hpp"
 #include "trace/messages.hpp"
+#include "trace/trace_text.hpp"
 #include "render/trace_pixel.hpp"
 #include "scene/scene_json.hpp"
 #include "util/errors.hpp"
@@ -39,6 +50,9 @@ struct LessonOptions {
     bool step = false;
     std::string dump;
     std::string lessons;
+    bool worksheet = false;
+    bool key = false;
+    std::string answers;
 };
 
 void print(const std::string& text) {
@@ -92,6 +106,39 @@ std::vector<std::string> lesson_names(const LessonLibrary& library, Language lan
     return names;
 }
 
+std::string read_answer_file(const std::string& path) {
+    std::ostringstream text;
+    if (path == "-") {
+        text << std::cin.rdbuf();
+        return text.str();
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path, "", "cannot read the file: " + std::generic_category().message(errno));
+    text << in.rdbuf();
+    return text.str();
+}
+
+// --answers FILE: the student's numbers against the traces; exit 1 when any is wrong.
+int run_answers(const LessonOptions& options, LessonView& view, const ArticleWorld<double>& world, const TraceHeader& header) {
+    const std::string shown = options.answers == "-" ? "(stdin)" : options.answers;
+    const LessonPixel first{view.traces.front().header.i, view.traces.front().header.j};
+    const std::vector<PixelAnswers> answers = parse_answers(read_answer_file(options.answers), shown, view.vocabulary,
+                                                            view.lesson.language, first, view.w);
+    // A heading may name a pixel the lesson did not choose: it is traced too.
+    for (const PixelAnswers& pixel : answers) {
+        const bool traced = std::any_of(view.traces.begin(), view.traces.end(), [&](const PixelTrace& trace) {
+            return trace.header.i == pixel.pixel.i && trace.header.j == pixel.pixel.j;
+        });
+        if (!traced) view.traces.push_back(trace_pixel(world, header, pixel.pixel.i, pixel.pixel.j));
+    }
+    const std::vector<AnswerCheck> checks = check_answers(answers, view.traces);
+    print(message(view.lesson.language, "answers_heading",
+                  {{"file", shown}, {"lesson", view.lesson.header.name}, {"scene", view.scene_name}, {"w", std::to_string(view.w)},
+                   {"pane", pane_phrase(view.w)}}) +
+          "\n\n" + answers_report(checks, view.traces, view.vocabulary, view.lesson.language));
+    return all_right(checks) ? 0 : 1;
+}
+
 int run_lesson(const LessonOptions& options) {
     const Language language = options.lang.empty() ? language_from_environment() : *parse_language(options.lang);
     if (!options.dump.empty()) {
@@ -133,16 +180,23 @@ int run_lesson(const LessonOptions& options) {
     const ArticleWorld<double> world = article_world(scene);
     const TraceHeader header = trace_header(scene, w);
     for (const LessonPixel& pixel : pixels) view.traces.push_back(trace_pixel(world, header, pixel.i, pixel.j));
+    if (!options.answers.empty()) return run_answers(options, view, world, header);
 
+    // A worksheet shows blanks for the pixels' numbers and leaves the answers out (they are the teacher's).
+    std::optional<Worksheet> worksheet;
+    if (options.worksheet) worksheet.emplace(view);
     print(render_lesson_title(view));
+    if (worksheet) print(worksheet->intro());
     for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
         if (options.step && k > 0) wait_for_enter(language, "press_enter_next");
         print("\n" + render_step(view, k));
-        if (has_answers(lesson.steps[k])) {
+        if (has_answers(lesson.steps[k]) && !worksheet) {
             if (options.step) wait_for_enter(language, "press_enter_answer");
             print(render_answers(view, k));
         }
     }
+    if (worksheet) print(worksheet->answer_template());
+    if (worksheet && options.key) print(worksheet->answer_key());
     return 0;
 }
 
@@ -175,7 +229,20 @@ std::function<int()> setup_lesson(CLI::App& app) {
                     "Read lessons from DIR (as --dump writes it); the built-in ones fill in what DIR lacks")
         ->type_name("DIR")
         ->check(non_empty());
-    cmd->footer("Example: promyk lesson sphere --pixel 0,0 --pixel 3,4 --lang en");
+    CLI::Option* worksheet = cmd->add_flag(
+        "--worksheet", options->worksheet,
+        "Print a worksheet: numbered blanks where the pixels' numbers go, no answers, and a form for --answers");
+    cmd->add_flag("--key", options->key, "With --worksheet: add the answer key (each blank's number and value) at the end")
+        ->needs(worksheet);
+    cmd->add_option("--answers", options->answers,
+                    "Check a student's numbers in FILE (key = value lines, [i,j] headings, or JSON; - reads standard "
+                    "input); exit 1 when any is wrong")
+        ->type_name("FILE")
+        ->check(non_empty())
+        ->excludes(worksheet);
+    cmd->footer("Examples: promyk lesson sphere --pixel 0,0 --pixel 3,4 --lang en\n"
+                "          promyk lesson sphere --worksheet --key > worksheet.txt\n"
+                "          promyk lesson sphere --pixel 3,4 --answers answers.txt");
     return [options, cmd] {
         options->w_given = cmd->get_option("--w")->count() > 0;
         return run_lesson(*options);

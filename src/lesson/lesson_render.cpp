@@ -61,8 +61,12 @@ std::string fill(const LessonView& view, const std::string& text, const PixelTra
             // Prose may name only the scene's values, the same in every trace.
             const PixelTrace& source = trace != nullptr ? *trace : view.traces.front();
             const std::optional<StepValue> value = lesson_value(source, p.name);
+            std::optional<std::string> shown;
+            if (value && trace != nullptr && view.shown_value) shown = view.shown_value(*trace, p.name, p.component);
             if (!value) {
                 out += message(language, "not_reached");
+            } else if (shown) {
+                out += *shown;
             } else if (p.component != 0 && std::holds_alternative<Vec3d>(*value)) {
                 const Vec3d& v = std::get<Vec3d>(*value);
                 out += number_text(p.component == 'x' ? v.x : p.component == 'y' ? v.y : v.z, language, p.decimals);
@@ -73,6 +77,13 @@ std::string fill(const LessonView& view, const std::string& text, const PixelTra
     }
     copy_literal(text.size());
     return out;
+}
+
+// A value table's cell: the value, or what a worksheet shows in its place.
+std::string cell_text(const LessonView& view, const PixelTrace& trace, const std::string& key, const StepValue& value) {
+    if (view.shown_value)
+        if (std::optional<std::string> shown = view.shown_value(trace, key, 0)) return *shown;
+    return value_text(value, kind_of(view.vocabulary, key), view.lesson.language);
 }
 
 std::string pixel_label(const LessonView& view, const PixelTrace& trace) {
@@ -196,8 +207,7 @@ std::string text_values(const LessonView& view, const LessonPart& part) {
         for (const PixelTrace& trace : view.traces) {
             const std::optional<StepValue> value = lesson_value(trace, key);
             cells.push_back(fmt::format("({}, {}): {}", trace.header.i, trace.header.j,
-                                        value ? value_text(*value, kind_of(view.vocabulary, key), language)
-                                              : message(language, "not_reached")));
+                                        value ? cell_text(view, trace, key, *value) : message(language, "not_reached")));
         }
         std::size_t total = 4;
         for (const std::string& cell : cells) total += width_of(cell) + 4;
@@ -251,7 +261,7 @@ std::string markdown_values(const LessonView& view, const LessonPart& part) {
         out += "| $" + math + "$ |";
         for (const PixelTrace& trace : view.traces) {
             const std::optional<StepValue> value = lesson_value(trace, key);
-            out += " " + (value ? value_text(*value, kind_of(view.vocabulary, key), language) : message(language, "not_reached")) + " |";
+            out += " " + (value ? cell_text(view, trace, key, *value) : message(language, "not_reached")) + " |";
         }
         out += "\n";
     }

@@ -2,6 +2,8 @@
 // Markdown ($…$ math, tables, <details> for answers).
 #pragma once
 
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +23,10 @@ struct LessonView {
     int w = 8;
     LessonFormat format = LessonFormat::text;
     bool color = false;  // terminal text only: bold headings
+    // Worksheets (lesson/worksheet.hpp): when set, each value of a pixel that
+    // a table or a block shows is asked for here first; a text returned takes
+    // the number's place (a blank), nothing keeps the number.
+    std::function<std::optional<std::string>(const PixelTrace& trace, const std::string& key, char component)> shown_value{};
 };
 
 // The lesson's title, summary and setup (scene, pane, pixels).

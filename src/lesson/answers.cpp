@@ -1,0 +1,610 @@
+#include "lesson/answers.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "lesson/lesson_render.hpp"
+#include "trace/messages.hpp"
+#include "util/errors.hpp"
+
+namespace promyk {
+
+namespace {
+
+constexpr int max_typed_scale = 1100;
+
+// --- exact decimals ---------------------------------------------------------
+
+// |value| = digits × 10^-scale exactly (a double is a finite binary fraction,
+// so its decimal expansion ends). Digits big-endian, no leading zeros.
+std::pair<std::string, int> exact_decimal(double value) {
+    int exponent = 0;
+    const double mantissa = std::frexp(std::fabs(value), &exponent);
+    std::uint64_t m = static_cast<std::uint64_t>(std::ldexp(mantissa, 53));
+    int e2 = exponent - 53;
+    if (m == 0) return {"0", 0};
+    while ((m & 1U) == 0) {
+        m >>= 1U;
+        ++e2;
+    }
+    std::vector<int> little;  // little-endian decimal digits
+    for (; m != 0; m /= 10) little.push_back(static_cast<int>(m % 10));
+    const auto multiply = [&little](int factor) {
+        int carry = 0;
+        for (int& digit : little) {
+            const int product = digit * factor + carry;
+            digit = product % 10;
+            carry = product / 10;
+        }
+        for (; carry != 0; carry /= 10) little.push_back(carry % 10);
+    };
+    int scale = 0;
+    if (e2 >= 0) {
+        for (int k = 0; k < e2; ++k) multiply(2);
+    } else {
+        // m × 2^e2 = m × 5^-e2 / 10^-e2
+        for (int k = 0; k < -e2; ++k) multiply(5);
+        scale = -e2;
+    }
+    std::string digits;
+    for (auto it = little.rbegin(); it != little.rend(); ++it) digits += static_cast<char>('0' + *it);
+    return {digits, scale};
+}
+
+std::string strip_zeros(const std::string& digits) {
+    const std::size_t first = digits.find_first_not_of('0');
+    return first == std::string::npos ? "0" : digits.substr(first);
+}
+
+std::string plus_one(std::string digits) {
+    for (std::size_t k = digits.size(); k-- > 0;) {
+        if (digits[k] != '9') {
+            ++digits[k];
+            return digits;
+        }
+        digits[k] = '0';
+    }
+    return "1" + digits;
+}
+
+struct Rounded {
+    TypedNumber nearest;               // halves away from zero
+    std::optional<TypedNumber> other;  // the other neighbour, when the value is not exact at this scale
+};
+
+Rounded round_to(double value, int scale) {
+    auto [digits, exact_scale] = exact_decimal(value);
+    Rounded out;
+    out.nearest.negative = std::signbit(value);
+    out.nearest.scale = scale;
+    if (scale >= exact_scale) {
+        out.nearest.digits = digits + std::string(static_cast<std::size_t>(scale - exact_scale), '0');
+        return out;
+    }
+    const std::size_t drop = static_cast<std::size_t>(exact_scale - scale);
+    if (digits.size() < drop + 1) digits.insert(0, drop + 1 - digits.size(), '0');
+    const std::string kept = digits.substr(0, digits.size() - drop);
+    const std::string rest = digits.substr(digits.size() - drop);
+    const bool up = rest[0] >= '5';
+    out.nearest.digits = up ? plus_one(kept) : kept;
+    if (rest.find_first_not_of('0') != std::string::npos) {
+        out.other = out.nearest;
+        out.other->digits = up ? kept : plus_one(kept);
+    }
+    return out;
+}
+
+bool same_number(const TypedNumber& a, const TypedNumber& b) {
+    const std::string x = strip_zeros(a.digits), y = strip_zeros(b.digits);
+    return x == y && (x == "0" || a.negative == b.negative);
+}
+
+// --- reading what a student typed -----------------------------------------
+
+std::string trim(std::string_view text) {
+    const std::size_t begin = text.find_first_not_of(" \t\r");
+    if (begin == std::string_view::npos) return "";
+    const std::size_t end = text.find_last_not_of(" \t\r");
+    return std::string(text.substr(begin, end - begin + 1));
+}
+
+[[noreturn]] void fail(const std::string& file, Language language, int line, const std::string& what) {
+    throw InputError(file, line > 0 ? message(language, "answers_line", {{"line", std::to_string(line)}}) : "", what);
+}
+
+[[noreturn]] void fail_at(const std::string& file, const std::string& pointer, const std::string& what) {
+    throw InputError(file, pointer, what);
+}
+
+// "6,4" -> one number; "(0,1; 0,2; 3)", "[0.1, 0.2, 3]" -> three. Nothing if malformed.
+std::optional<std::vector<TypedNumber>> parse_value(const std::string& text) {
+    if (text.empty()) return std::vector<TypedNumber>{};
+    if (text.front() == '(' || text.front() == '[') {
+        if (text.size() < 2 || (text.back() != ')' && text.back() != ']')) return std::nullopt;
+        const std::string inner = text.substr(1, text.size() - 2);
+        // With a semicolon the commas are decimal commas; without one, commas separate.
+        const char separator = inner.find(';') != std::string::npos ? ';' : ',';
+        std::vector<TypedNumber> numbers;
+        std::size_t at = 0;
+        while (true) {
+            const std::size_t end = inner.find(separator, at);
+            const std::optional<TypedNumber> number =
+                parse_typed_number(trim(inner.substr(at, end == std::string::npos ? std::string::npos : end - at)));
+            if (!number) return std::nullopt;
+            numbers.push_back(*number);
+            if (end == std::string::npos) break;
+            at = end + 1;
+        }
+        if (numbers.size() != 3) return std::nullopt;
+        return numbers;
+    }
+    const std::optional<TypedNumber> number = parse_typed_number(text);
+    if (!number) return std::nullopt;
+    return std::vector<TypedNumber>{*number};
+}
+
+std::string keys_list(const Vocabulary& vocabulary) {
+    std::string keys;
+    for (const VocabularyEntry& entry : vocabulary.keys) keys += (keys.empty() ? "" : ", ") + entry.key;
+    return keys;
+}
+
+// "P.x" -> ("P", 'x'); the key must be in the vocabulary, a component only of a point or vector.
+std::optional<std::pair<std::string, char>> split_key(const std::string& text, const Vocabulary& vocabulary) {
+    std::string key = text;
+    char component = 0;
+    if (key.size() > 2 && key[key.size() - 2] == '.' && std::string_view("xyz").find(key.back()) != std::string_view::npos) {
+        component = key.back();
+        key.resize(key.size() - 2);
+    }
+    const VocabularyEntry* entry = vocabulary.find(key);
+    if (entry == nullptr || (component != 0 && entry->kind != "point" && entry->kind != "vector")) return std::nullopt;
+    return std::make_pair(key, component);
+}
+
+PixelAnswers& section(std::vector<PixelAnswers>& sections, LessonPixel pixel) {
+    for (PixelAnswers& s : sections)
+        if (s.pixel.i == pixel.i && s.pixel.j == pixel.j) return s;
+    sections.push_back({pixel, {}});
+    return sections.back();
+}
+
+// "[3,4]", "[ 3, 4 ]" -> the pixel.
+std::optional<LessonPixel> parse_heading(const std::string& line) {
+    if (line.size() < 5 || line.front() != '[' || line.back() != ']') return std::nullopt;
+    const std::string inner = line.substr(1, line.size() - 2);
+    const std::size_t comma = inner.find(',');
+    if (comma == std::string::npos) return std::nullopt;
+    const auto whole = [](const std::string& text) -> std::optional<int> {
+        if (text.empty() || text.size() > 6 || text.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
+        return std::stoi(text);
+    };
+    const std::optional<int> i = whole(trim(inner.substr(0, comma))), j = whole(trim(inner.substr(comma + 1)));
+    if (!i || !j) return std::nullopt;
+    return LessonPixel{*i, *j};
+}
+
+std::vector<PixelAnswers> parse_lines(std::string_view text, const std::string& file, const Vocabulary& vocabulary,
+                                      Language language, LessonPixel first, int w) {
+    std::vector<PixelAnswers> sections;
+    LessonPixel pixel = first;
+    int line_number = 0;
+    std::size_t at = 0;
+    while (at < text.size()) {
+        const std::size_t end = text.find('\n', at);
+        std::string_view raw = text.substr(at, end == std::string_view::npos ? std::string_view::npos : end - at);
+        at = end == std::string_view::npos ? text.size() : end + 1;
+        ++line_number;
+        if (const std::size_t hash = raw.find('#'); hash != std::string_view::npos) raw = raw.substr(0, hash);
+        const std::string line = trim(raw);
+        if (line.empty()) continue;
+        const std::size_t equals = line.find('=');
+        if (equals == std::string::npos) {
+            if (line.front() != '[') fail(file, language, line_number, message(language, "answers_error_line"));
+            const std::optional<LessonPixel> heading = parse_heading(line);
+            if (!heading) fail(file, language, line_number, message(language, "answers_error_heading", {{"text", line}}));
+            if (heading->i >= w || heading->j >= w)
+                fail(file, language, line_number,
+                     message(language, "answers_error_outside",
+                             {{"i", std::to_string(heading->i)}, {"j", std::to_string(heading->j)}, {"w", std::to_string(w)}}));
+            pixel = *heading;
+            section(sections, pixel);
+            continue;
+        }
+        const std::string key_text = trim(line.substr(0, equals));
+        const std::optional<std::pair<std::string, char>> key = split_key(key_text, vocabulary);
+        if (!key)
+            fail(file, language, line_number,
+                 message(language, "answers_error_key", {{"key", key_text}, {"keys", keys_list(vocabulary)}}));
+        Answer answer;
+        answer.line = line_number;
+        answer.key = key->first;
+        answer.component = key->second;
+        answer.text = trim(line.substr(equals + 1));
+        const std::optional<std::vector<TypedNumber>> numbers = parse_value(answer.text);
+        if (!numbers) fail(file, language, line_number, message(language, "answers_error_number", {{"text", answer.text}}));
+        answer.numbers = *numbers;
+        PixelAnswers& mine = section(sections, pixel);
+        for (const Answer& earlier : mine.answers)
+            if (earlier.key == answer.key && earlier.component == answer.component)
+                fail(file, language, line_number,
+                     message(language, "answers_error_twice",
+                             {{"key", key_text}, {"line", std::to_string(earlier.line)},
+                              {"i", std::to_string(pixel.i)}, {"j", std::to_string(pixel.j)}}));
+        mine.answers.push_back(std::move(answer));
+    }
+    return sections;
+}
+
+// --- JSON, with numbers kept as typed ------------------------------------
+
+using json = nlohmann::json;
+
+// Builds the document with every number as the string it was written as
+// (nlohmann's SAX hands over a float's raw text), so 6.40 stays 6.40.
+struct RawNumbers {
+    json root;
+    std::vector<json*> stack;
+    std::string pending_key;
+    std::size_t error_position = 0;
+
+    json* add(json value) {
+        if (stack.empty()) {
+            root = std::move(value);
+            return &root;
+        }
+        json& top = *stack.back();
+        if (top.is_array()) {
+            top.push_back(std::move(value));
+            return &top.back();
+        }
+        json& slot = top[pending_key];
+        slot = std::move(value);
+        return &slot;
+    }
+    bool null() { return add(nullptr), true; }
+    bool boolean(bool value) { return add(value), true; }
+    bool number_integer(json::number_integer_t value) { return add(std::to_string(value)), true; }
+    bool number_unsigned(json::number_unsigned_t value) { return add(std::to_string(value)), true; }
+    bool number_float(json::number_float_t, const std::string& raw) { return add(raw), true; }
+    bool string(std::string& value) { return add(value), true; }
+    bool binary(json::binary_t&) { return add(nullptr), true; }
+    bool start_object(std::size_t) { return stack.push_back(add(json::object())), true; }
+    bool key(std::string& key) { return pending_key = key, true; }
+    bool end_object() { return stack.pop_back(), true; }
+    bool start_array(std::size_t) { return stack.push_back(add(json::array())), true; }
+    bool end_array() { return stack.pop_back(), true; }
+    bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception&) {
+        error_position = position;
+        return false;
+    }
+};
+
+std::string pointer_of(const std::string& key) { return (json::json_pointer() / key).to_string(); }
+
+std::optional<std::vector<TypedNumber>> json_value(const json& value) {
+    if (value.is_string()) {
+        const std::optional<std::vector<TypedNumber>> numbers = parse_value(trim(value.get<std::string>()));
+        if (numbers && numbers->empty()) return std::nullopt;
+        return numbers;
+    }
+    if (value.is_array() && value.size() == 3) {
+        std::vector<TypedNumber> numbers;
+        for (const json& component : value) {
+            if (!component.is_string()) return std::nullopt;
+            const std::optional<TypedNumber> number = parse_typed_number(trim(component.get<std::string>()));
+            if (!number) return std::nullopt;
+            numbers.push_back(*number);
+        }
+        return numbers;
+    }
+    return std::nullopt;
+}
+
+std::string json_text_of(const json& value) {
+    if (value.is_string()) return value.get<std::string>();
+    if (value.is_array()) {
+        std::string out = "[";
+        for (const json& component : value) out += (out.size() > 1 ? ", " : "") + json_text_of(component);
+        return out + "]";
+    }
+    return value.dump();
+}
+
+std::vector<PixelAnswers> parse_json(std::string_view text, const std::string& file, const Vocabulary& vocabulary,
+                                     Language language, LessonPixel first, int w) {
+    RawNumbers builder;
+    if (!json::sax_parse(text, &builder)) {
+        const std::size_t end = std::min(builder.error_position, text.size());
+        const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
+        fail(file, language, line, message(language, "answers_error_json"));
+    }
+    const json& root = builder.root;
+    PixelAnswers answers{first, {}};
+    const auto add = [&](const std::string& key_text, const json& value, const std::string& pointer) {
+        const std::optional<std::pair<std::string, char>> key = split_key(key_text, vocabulary);
+        if (!key) fail_at(file, pointer, message(language, "answers_error_key", {{"key", key_text}, {"keys", keys_list(vocabulary)}}));
+        const std::optional<std::vector<TypedNumber>> numbers = json_value(value);
+        if (!numbers) fail_at(file, pointer, message(language, "answers_error_number", {{"text", json_text_of(value)}}));
+        Answer answer;
+        answer.key = key->first;
+        answer.component = key->second;
+        answer.text = json_text_of(value);
+        answer.numbers = *numbers;
+        answers.answers.push_back(std::move(answer));
+    };
+    if (root.contains("steps") && root.at("steps").is_array()) {
+        // A whole trace, as promyk trace --format json prints it.
+        const auto whole = [](const json& value) -> std::optional<int> {
+            if (!value.is_string()) return std::nullopt;
+            const std::string& digits = value.get_ref<const std::string&>();
+            if (digits.empty() || digits.size() > 6 || digits.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
+            return std::stoi(digits);
+        };
+        const json pixel = root.value("pixel", json::object());
+        const std::optional<int> i = whole(pixel.value("i", json())), j = whole(pixel.value("j", json()));
+        if (!i || !j) fail_at(file, "/pixel", message(language, "answers_error_trace"));
+        const std::optional<int> trace_w = whole(root.value("w", json()));
+        if (trace_w && *trace_w != w)
+            fail_at(file, "/w", message(language, "answers_error_trace_w", {{"w", std::to_string(*trace_w)}, {"lesson_w", std::to_string(w)}}));
+        if (*i >= w || *j >= w)
+            fail_at(file, "/pixel", message(language, "answers_error_outside",
+                                            {{"i", std::to_string(*i)}, {"j", std::to_string(*j)}, {"w", std::to_string(w)}}));
+        answers.pixel = {*i, *j};
+        const json& steps = root.at("steps");
+        for (std::size_t k = 0; k < steps.size(); ++k) {
+            const json& step = steps[k];
+            if (!step.is_object() || step.contains("group") || !step.contains("key") || !step.at("key").is_string()) continue;
+            if (!step.contains("value") || step.at("value").is_null()) continue;  // non-finite: no number to check
+            add(step.at("key").get<std::string>(), step.at("value"), fmt::format("/steps/{}/value", k));
+        }
+        if (root.contains("result") && root.at("result").is_string()) add("I_P", root.at("result"), "/result");
+    } else if (root.is_object()) {
+        for (const auto& [key, value] : root.items()) add(key, value, pointer_of(key));
+    } else {
+        fail(file, language, 1, message(language, "answers_error_json"));
+    }
+    return {answers};
+}
+
+std::string symbol_of(const Vocabulary& vocabulary, const Answer& answer) {
+    const VocabularyEntry* entry = vocabulary.find(answer.key);
+    std::string symbol = entry ? entry->symbol : answer.key;
+    std::string key = answer.key;
+    if (answer.component != 0) {
+        symbol += std::string(".") + answer.component;
+        key += std::string(".") + answer.component;
+    }
+    return symbol == key ? symbol : symbol + " (" + key + ")";
+}
+
+std::string kind_of(const Vocabulary& vocabulary, const Answer& answer) {
+    if (answer.component != 0) return "scalar";
+    const VocabularyEntry* entry = vocabulary.find(answer.key);
+    return entry ? entry->kind : "scalar";
+}
+
+std::string numbers_text(const std::vector<TypedNumber>& numbers, const std::string& kind, Language language) {
+    if (numbers.size() == 1) return typed_number_text(numbers[0], language);
+    std::string out = kind == "vector" ? "[" : "(";
+    for (std::size_t k = 0; k < numbers.size(); ++k)
+        out += (k ? (language == Language::pl ? "; " : ", ") : "") + typed_number_text(numbers[k], language);
+    return out + (kind == "vector" ? "]" : ")");
+}
+
+const PixelTrace* trace_of(const std::vector<PixelTrace>& traces, LessonPixel pixel) {
+    for (const PixelTrace& trace : traces)
+        if (trace.header.i == pixel.i && trace.header.j == pixel.j) return &trace;
+    return nullptr;
+}
+
+}  // namespace
+
+std::optional<TypedNumber> parse_typed_number(std::string_view text) {
+    TypedNumber number;
+    std::size_t at = 0;
+    for (const std::string_view sign : {"-", "\u2212", "\u2013", "+"}) {
+        if (text.substr(0, sign.size()) == sign) {
+            number.negative = sign != "+";
+            at = sign.size();
+            break;
+        }
+    }
+    bool point = false;
+    int after_point = 0;
+    for (; at < text.size(); ++at) {
+        const char c = text[at];
+        if (c >= '0' && c <= '9') {
+            number.digits += c;
+            if (point) ++after_point;
+        } else if ((c == '.' || c == ',') && !point) {
+            point = true;
+        } else {
+            break;
+        }
+    }
+    if (number.digits.empty() || (point && after_point == 0)) return std::nullopt;
+    int exponent = 0;
+    if (at < text.size() && (text[at] == 'e' || text[at] == 'E')) {
+        ++at;
+        bool negative = false;
+        if (at < text.size() && (text[at] == '-' || text[at] == '+')) negative = text[at++] == '-';
+        const std::size_t start = at;
+        for (; at < text.size() && text[at] >= '0' && text[at] <= '9'; ++at)
+            if (at - start < 6) exponent = exponent * 10 + (text[at] - '0');
+        if (at == start || at - start > 4) return std::nullopt;
+        if (negative) exponent = -exponent;
+    }
+    if (at != text.size()) return std::nullopt;
+    number.scale = after_point - exponent;
+    // A double's exact decimal expansion has at most 1074 decimals; beyond some
+    // such bound a "precision" is a typo (1e-9999), not a claim worth expanding.
+    if (number.scale > max_typed_scale || number.scale < -max_typed_scale) return std::nullopt;
+    return number;
+}
+
+TypedNumber round_exactly(double value, int scale) { return round_to(value, scale).nearest; }
+
+std::string typed_number_text(const TypedNumber& number, Language language) {
+    std::string digits = strip_zeros(number.digits);
+    std::string text;
+    if (number.scale <= 0) {
+        text = digits == "0" ? digits : digits + std::string(static_cast<std::size_t>(-number.scale), '0');
+    } else {
+        const std::size_t scale = static_cast<std::size_t>(number.scale);
+        if (digits.size() < scale + 1) digits.insert(0, scale + 1 - digits.size(), '0');
+        text = digits.substr(0, digits.size() - scale) + (language == Language::pl ? "," : ".") + digits.substr(digits.size() - scale);
+    }
+    if (number.negative && strip_zeros(number.digits) != "0") text = (language == Language::pl ? "\u2212" : "-") + text;
+    return text;
+}
+
+Verdict compare_number(double reference, const TypedNumber& typed, TypedNumber& expected) {
+    if (!std::isfinite(reference)) {
+        expected = TypedNumber{};
+        return Verdict::wrong;
+    }
+    const Rounded rounded = round_to(reference, typed.scale);
+    expected = rounded.nearest;
+    if (same_number(typed, rounded.nearest)) return Verdict::right;
+    if (rounded.other && same_number(typed, *rounded.other)) return Verdict::wrong_way;
+    return Verdict::wrong;
+}
+
+std::vector<PixelAnswers> parse_answers(std::string_view text, const std::string& file, const Vocabulary& vocabulary,
+                                        Language language, LessonPixel first, int w) {
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // a byte order mark some editors write
+    const std::size_t start = text.find_first_not_of(" \t\r\n");
+    std::vector<PixelAnswers> answers = start != std::string_view::npos && text[start] == '{'
+                                            ? parse_json(text, file, vocabulary, language, first, w)
+                                            : parse_lines(text, file, vocabulary, language, first, w);
+    const bool any = std::any_of(answers.begin(), answers.end(), [](const PixelAnswers& pixel) {
+        return std::any_of(pixel.answers.begin(), pixel.answers.end(), [](const Answer& a) { return !a.numbers.empty(); });
+    });
+    if (!any) fail(file, language, 0, message(language, "answers_error_empty"));
+    return answers;
+}
+
+std::vector<AnswerCheck> check_answers(const std::vector<PixelAnswers>& answers, const std::vector<PixelTrace>& traces) {
+    const Vocabulary& vocabulary = builtin_vocabulary();
+    const auto order = [&vocabulary](const std::string& key) {
+        for (std::size_t k = 0; k < vocabulary.keys.size(); ++k)
+            if (vocabulary.keys[k].key == key) return k;
+        return vocabulary.keys.size();
+    };
+    std::vector<AnswerCheck> checks;
+    for (const PixelAnswers& pixel : answers) {
+        const PixelTrace* trace = trace_of(traces, pixel.pixel);
+        if (trace == nullptr) throw std::logic_error("check_answers: no trace for an answered pixel");
+        std::vector<Answer> sorted = pixel.answers;
+        std::stable_sort(sorted.begin(), sorted.end(), [&](const Answer& a, const Answer& b) { return order(a.key) < order(b.key); });
+        for (const Answer& answer : sorted) {
+            AnswerCheck check{pixel.pixel, answer, Verdict::right, {}};
+            const VocabularyEntry* entry = vocabulary.find(answer.key);
+            const bool vector_key = entry != nullptr && (entry->kind == "point" || entry->kind == "vector");
+            const std::size_t wanted = vector_key && answer.component == 0 ? 3 : 1;
+            const std::optional<StepValue> value = lesson_value(*trace, answer.key);
+            if (answer.numbers.empty()) {
+                check.verdict = Verdict::blank;
+            } else if (!value) {
+                check.verdict = Verdict::not_reached;
+            } else if (answer.numbers.size() != wanted || (answer.component != 0 && !vector_key)) {
+                check.verdict = Verdict::wrong_shape;
+            } else {
+                std::vector<double> reference;
+                if (const Vec3d* v = std::get_if<Vec3d>(&*value)) {
+                    if (answer.component == 0)
+                        reference = {v->x, v->y, v->z};
+                    else
+                        reference = {answer.component == 'x' ? v->x : answer.component == 'y' ? v->y : v->z};
+                } else {
+                    reference = {std::get<double>(*value)};
+                }
+                bool any_wrong = false, any_wrong_way = false;
+                for (std::size_t k = 0; k < reference.size(); ++k) {
+                    TypedNumber expected;
+                    const Verdict verdict = compare_number(reference[k], answer.numbers[k], expected);
+                    any_wrong = any_wrong || verdict == Verdict::wrong;
+                    any_wrong_way = any_wrong_way || verdict == Verdict::wrong_way;
+                    check.expected.push_back(expected);
+                }
+                check.verdict = any_wrong ? Verdict::wrong : any_wrong_way ? Verdict::wrong_way : Verdict::right;
+            }
+            checks.push_back(std::move(check));
+        }
+    }
+    return checks;
+}
+
+bool all_right(const std::vector<AnswerCheck>& checks) {
+    return std::all_of(checks.begin(), checks.end(),
+                       [](const AnswerCheck& c) { return c.verdict == Verdict::right || c.verdict == Verdict::blank; });
+}
+
+std::string answers_report(const std::vector<AnswerCheck>& checks, const std::vector<PixelTrace>& traces,
+                           const Vocabulary& vocabulary, Language language) {
+    std::string out;
+    int right = 0, wrong = 0, blank = 0;
+    std::optional<LessonPixel> current;
+    for (const AnswerCheck& check : checks) {
+        const PixelTrace* trace = trace_of(traces, check.pixel);
+        const std::string pixel = message(language, "pixel_label", {{"i", std::to_string(check.pixel.i)}, {"j", std::to_string(check.pixel.j)}});
+        if (!current || current->i != check.pixel.i || current->j != check.pixel.j) {
+            current = check.pixel;
+            const BranchEntry* branch = vocabulary.find_branch(branch_name(trace->branch));
+            out += (out.empty() ? "" : "\n") +
+                   message(language, "answers_pixel",
+                           {{"pixel", pixel},
+                            {"branch", branch ? (language == Language::pl ? branch->pl : branch->en) : std::string(branch_name(trace->branch))}}) +
+                   "\n";
+        }
+        const std::string kind = kind_of(vocabulary, check.answer);
+        MessageArgs args = {{"symbol", symbol_of(vocabulary, check.answer)}, {"typed", check.answer.text}, {"pixel", pixel}};
+        std::string id;
+        switch (check.verdict) {
+            case Verdict::right:
+                id = "answers_right";
+                ++right;
+                break;
+            case Verdict::blank:
+                id = "answers_blank";
+                ++blank;
+                break;
+            case Verdict::not_reached:
+                id = "answers_not_reached";
+                ++wrong;
+                break;
+            case Verdict::wrong_shape:
+                id = kind == "scalar" ? "answers_shape_one" : "answers_shape_three";
+                ++wrong;
+                break;
+            case Verdict::wrong:
+            case Verdict::wrong_way: {
+                id = check.verdict == Verdict::wrong ? "answers_wrong" : "answers_wrong_way";
+                ++wrong;
+                const std::optional<StepValue> value = lesson_value(*trace, check.answer.key);
+                StepValue exact = *value;
+                if (check.answer.component != 0) {
+                    const Vec3d& v = std::get<Vec3d>(*value);
+                    exact = check.answer.component == 'x' ? v.x : check.answer.component == 'y' ? v.y : v.z;
+                }
+                const bool finite = std::all_of(check.expected.begin(), check.expected.end(),
+                                                [](const TypedNumber& n) { return !n.digits.empty(); });
+                args.emplace_back("expected", finite ? numbers_text(check.expected, kind, language) : value_text(exact, kind, language));
+                args.emplace_back("exact", value_text(exact, kind, language));
+                break;
+            }
+        }
+        out += "  " + message(language, id, args) + "\n";
+    }
+    out += "\n" + message(language, "answers_summary",
+                          {{"right", std::to_string(right)}, {"count", std::to_string(right + wrong)},
+                           {"wrong", std::to_string(wrong)}, {"blank", std::to_string(blank)}}) + "\n";
+    return out;
+}
+
+}  // namespace promyk

@@ -1,0 +1,138 @@
+#include "lesson/worksheet.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "trace/messages.hpp"
+
+namespace promyk {
+
+namespace {
+
+const std::string dots = "..........";  // a place to write on paper; no Markdown markup
+const std::string short_dots = "......";
+
+}  // namespace
+
+Worksheet::Worksheet(LessonView& view) : view_(view) {
+    view_.shown_value = [this](const PixelTrace& trace, const std::string& key, char component) -> std::optional<std::string> {
+        const VocabularyEntry* entry = view_.vocabulary.find(key);
+        if (entry != nullptr && entry->given) return std::nullopt;  // the scene's values are given
+        return blank_for(trace, key, component);
+    };
+}
+
+std::string Worksheet::blank_text(int number, const std::string& kind, Language language) {
+    if (kind != "point" && kind != "vector") return fmt::format("{}({})", dots, number);
+    // No-break spaces: a point's blank is not split across two lines.
+    const char* separator = language == Language::pl ? ";\u00a0" : ",\u00a0";
+    const char* open = kind == "vector" ? "[" : "(";
+    const char* close = kind == "vector" ? "]" : ")";
+    return fmt::format("{}{}{}{}{}{}{}({})", open, short_dots, separator, short_dots, separator, short_dots, close, number);
+}
+
+std::string Worksheet::blank_for(const PixelTrace& trace, const std::string& key, char component) {
+    const VocabularyEntry* entry = view_.vocabulary.find(key);
+    const std::string kind = component != 0 ? "scalar" : entry ? entry->kind : "scalar";
+    for (const WorksheetBlank& blank : blanks_)
+        if (blank.i == trace.header.i && blank.j == trace.header.j && blank.key == key && blank.component == component)
+            return blank_text(blank.number, kind, view_.lesson.language);
+    WorksheetBlank blank;
+    blank.number = static_cast<int>(blanks_.size()) + 1;
+    blank.i = trace.header.i;
+    blank.j = trace.header.j;
+    blank.key = key;
+    blank.component = component;
+    blank.value = lesson_value(trace, key).value_or(StepValue{0.0});
+    if (component != 0 && std::holds_alternative<Vec3d>(blank.value)) {
+        const Vec3d& v = std::get<Vec3d>(blank.value);
+        blank.value = component == 'x' ? v.x : component == 'y' ? v.y : v.z;
+    }
+    blanks_.push_back(blank);
+    return blank_text(blank.number, kind, view_.lesson.language);
+}
+
+std::string Worksheet::intro() const {
+    const Language language = view_.lesson.language;
+    std::string pixels;
+    for (const PixelTrace& trace : view_.traces) pixels += fmt::format(" --pixel {},{}", trace.header.i, trace.header.j);
+    const std::string command =
+        fmt::format("promyk lesson {}{} --lang {} --answers {}", view_.lesson.header.name, pixels,
+                    language_code(language), message(language, "worksheet_file"));
+    return "\n" + message(language, "worksheet_intro", {{"command", command}}) + "\n";
+}
+
+std::string Worksheet::answer_template() const {
+    const Language language = view_.lesson.language;
+    const bool markdown = view_.format == LessonFormat::markdown;
+    const std::string heading = message(language, "worksheet_template_heading", {{"file", message(language, "worksheet_file")}});
+    std::string out = markdown ? "\n## " + heading + "\n\n" : "\n── " + heading + " ──\n\n";
+    out += message(language, "worksheet_template_intro") + "\n\n";
+    std::vector<std::pair<int, int>> pixels;
+    for (const PixelTrace& trace : view_.traces)
+        if (std::find(pixels.begin(), pixels.end(), std::make_pair(trace.header.i, trace.header.j)) == pixels.end())
+            pixels.emplace_back(trace.header.i, trace.header.j);
+    std::vector<std::string> lines;
+    std::size_t width = 0;
+    for (const auto& [i, j] : pixels) {
+        std::vector<const WorksheetBlank*> mine;
+        for (const WorksheetBlank& blank : blanks_)
+            if (blank.i == i && blank.j == j) mine.push_back(&blank);
+        // In derivation order (the vocabulary's), as the answers are checked.
+        const auto order = [this](const WorksheetBlank* blank) {
+            for (std::size_t k = 0; k < view_.vocabulary.keys.size(); ++k)
+                if (view_.vocabulary.keys[k].key == blank->key) return k;
+            return view_.vocabulary.keys.size();
+        };
+        std::stable_sort(mine.begin(), mine.end(), [&](const WorksheetBlank* a, const WorksheetBlank* b) { return order(a) < order(b); });
+        if (mine.empty()) continue;
+        lines.push_back(fmt::format("[{},{}]", i, j));
+        for (const WorksheetBlank* blank : mine) {
+            std::string key = blank->key;
+            if (blank->component != 0) key += std::string(".") + blank->component;
+            lines.push_back(key + " = ");
+            width = std::max(width, lines.back().size());
+            lines.back() += "\t" + std::to_string(blank->number);
+        }
+    }
+    // "key = " then a comment naming the blank, aligned.
+    for (const std::string& line : lines) {
+        const std::size_t tab = line.find('\t');
+        if (tab == std::string::npos) {
+            out += "    " + line + "\n";
+        } else {
+            const std::string start = line.substr(0, tab);
+            out += "    " + start + std::string(width - start.size() + 8, ' ') + "# (" + line.substr(tab + 1) + ")\n";
+        }
+    }
+    return out;
+}
+
+std::string Worksheet::answer_key() const {
+    const Language language = view_.lesson.language;
+    const bool markdown = view_.format == LessonFormat::markdown;
+    const std::string heading = message(language, "worksheet_key_heading");
+    std::string out = markdown ? "\n## " + heading + "\n\n" : "\n── " + heading + " ──\n\n";
+    for (const WorksheetBlank& blank : blanks_) {
+        const VocabularyEntry* entry = view_.vocabulary.find(blank.key);
+        std::string symbol = entry ? entry->symbol : blank.key;
+        std::string key = blank.key;
+        if (blank.component != 0) {
+            symbol += std::string(".") + blank.component;
+            key += std::string(".") + blank.component;
+        }
+        const std::string kind = blank.component != 0 ? "scalar" : entry ? entry->kind : "scalar";
+        const std::string line = message(
+            language, "worksheet_key_line",
+            {{"n", std::to_string(blank.number)},
+             {"pixel", message(language, "pixel_label", {{"i", std::to_string(blank.i)}, {"j", std::to_string(blank.j)}})},
+             {"symbol", symbol},
+             {"key", key},
+             {"value", value_text(blank.value, kind, language)}});
+        out += (markdown ? "- " : "  ") + line + "\n";
+    }
+    return out;
+}
+
+}  // namespace promyk

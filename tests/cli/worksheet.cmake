@@ -1,0 +1,16 @@
+# promyk lesson --worksheet [--key] and --answers FILE, as a teacher and a
+# student meet them. Included from tests/CMakeLists.txt.
+
+promyk_cli_test(lesson_worksheet ARGS lesson sphere --worksheet --lang en EXIT 0
+                STDOUT "^Lesson: .*Worksheet: .*--answers ANSWERS.txt.*\\(3, 4\\): \\.\\.\\.\\.\\.\\.\\.\\.\\.\\.\\(3\\)")
+promyk_cli_test(lesson_worksheet_form ARGS lesson sphere --worksheet --lang en EXIT 0
+                STDOUT "── The file ANSWERS.txt ──.*\\[3,4\\]\n +E = +# \\(20\\)\n +EE = +# \\(3\\)\n")
+promyk_cli_test(lesson_worksheet_key ARGS lesson sphere --worksheet --key --lang pl --format markdown EXIT 0
+                STDOUT "## Klucz odpowiedzi \\(dla nauczyciela\\)\n\n- \\(1\\) piksel \\(0, 0\\): \\|E\\|² = 5,53125   \\[EE\\]\n")
+promyk_cli_test(lesson_key_alone ARGS lesson sphere --key EXIT 2 STDERR "--key requires --worksheet")
+promyk_cli_test(lesson_answers_and_worksheet ARGS lesson sphere --worksheet --answers a.txt EXIT 2 STDERR "excludes")
+promyk_cli_test(lesson_answers_missing ARGS lesson sphere --answers missing.txt EXIT 3 STDERR "missing.txt: cannot read")
+
+# Files a student writes: right, wrong, malformed, JSON.
+add_test(NAME cli.worksheet_answers COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cli/worksheet_test.sh $<TARGET_FILE:promyk>
+                                            ${CMAKE_CURRENT_BINARY_DIR}/cli/worksheet_answers)
