@@ -121,6 +121,8 @@ TEST_CASE("every kind of broken lesson is reported at its line", "[lesson]") {
     CHECK(first_line("---\nname: demo\ntitle: T\n---\n## [a] A\n") == 4);          // summary missing
     CHECK(first_line("---\nname: demo\ntitle: T\nsummary: S\nw: 010\n---\n## [a] A\n") == 5);
     CHECK(first_line("---\nname: demo\ntitle: T\nsummary: S\npixels: 3;4\n---\n## [a] A\n") == 5);
+    CHECK(first_line("---\nname: demo\ntitle: T\nsummary: S\ncolumns: double/magic\n---\n## [a] A\n") == 5);
+    CHECK(first_line("---\nname: demo\ntitle: T\nsummary: S\ncolumns: float/article double/stable\n---\n## [a] A\n") == 0);
     CHECK(first_line(with_body("intro\n## [a] A\n")) == 6);                         // text before the first step
     CHECK(first_line(with_body("## A without an id\n")) == 6);
     CHECK(first_line(with_body("## [a] A\n## [a] B\n")) == 7);                      // the same id twice

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -157,6 +158,13 @@ int run_lesson(const LessonOptions& options) {
         throw UsageError(fmt::format("no lesson '{}'; the lessons are {} (promyk lesson --list)", options.name, names));
     }
     const Lesson& lesson = *found;
+    // Each column's numbers: real type and formula (one for all, or one a column).
+    std::istringstream columns(lesson.header.columns);
+    for (std::string column; columns >> column;)
+        if (column != "double/article")
+            throw InputError(lesson.file, "columns",
+                             "this version of promyk computes in double with the article's formula only "
+                             "(double/article); the lesson asks for " + column);
     const Scene scene = options.scene_file.empty() ? library.scene(lesson.header.scene) : load_scene_file(options.scene_file);
     const int w = options.w_given ? options.w : lesson.header.w;
     std::vector<LessonPixel> pixels;

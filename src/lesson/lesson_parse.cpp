@@ -143,6 +143,18 @@ private:
             if (header.pixels.empty() || !trim(rest).empty())
                 problem(line, "error_header_value", {{"field", field}, {"problem", "I,J I,J …"}});
         } else if (field == "columns") {
+            // real/formula for each pixel column, or one for all: the names
+            // PRODUCT.md gives them. This version computes double/article only;
+            // the runner says so when a lesson asks for another.
+            static const std::regex column(
+                R"((float|double|long-double|quad)/(article|stable|fma|geometric))");
+            const std::vector<std::string> items = words(value);
+            const bool ok = !items.empty() && std::all_of(items.begin(), items.end(), [](const std::string& item) {
+                return std::regex_match(item, column);
+            });
+            if (!ok)
+                problem(line, "error_header_value",
+                        {{"field", field}, {"problem", "REAL/FORMULA …, e.g. double/article float/article"}});
             header.columns = value;
         }
     }
