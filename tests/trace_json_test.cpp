@@ -74,6 +74,27 @@ TEST_CASE("numbers are written as the shortest text that reads back to the same 
     CHECK(text_of(std::numeric_limits<double>::infinity()) == "null");
 }
 
+TEST_CASE("strings escape every control character JSON forbids raw (U+0000 to U+001F)", "[trace-json]") {
+    // RFC 8259, section 7: all of U+0000..U+001F must be escaped. A scene's
+    // name or file path may hold any of them.
+    const auto text_of = [](std::string_view text) {
+        std::string out;
+        json_text::append_string(out, text);
+        return out;
+    };
+    for (int c = 0; c < 0x20; ++c) {
+        const std::string raw = "a" + std::string(1, static_cast<char>(c)) + "b";
+        const std::string written = text_of(raw);
+        INFO("control character " << c);
+        for (const char byte : written) CHECK(static_cast<unsigned char>(byte) >= 0x20);
+        const std::string expected = c == '\n' ? "\\n" : c == '\r' ? "\\r" : c == '\t' ? "\\t"
+                                     : std::string("\\u00") + "0123456789abcdef"[c >> 4] + "0123456789abcdef"[c & 0xF];
+        CHECK(written == "\"a" + expected + "b\"");
+        CHECK(json::parse(written).get<std::string>() == raw);
+    }
+    CHECK(text_of(" ~\"\\\x7f") == "\" ~\\\"\\\\\x7f\"");  // from the space up only " and \ are escaped
+}
+
 TEST_CASE("every traced double reads back exactly", "[trace-json]") {
     const PixelTrace trace = trace_pixel(article_scene(), 101, 37, 60);
     const json parsed = to_json(trace);
