@@ -74,6 +74,21 @@ TEST_CASE("a centre at 1e154 is accepted and its pixels are non-finite from delt
     CHECK(key_at(trace, *trace.first_non_finite) == "delta");
 }
 
+TEST_CASE("a light far beyond the double range overflows |K|² while D stays finite", "[non-finite]") {
+    // K ~ 1e160: |K|² = inf, D = N·K ~ 1e160 is finite, and I·D / (r·√inf)
+    // would be a plain 0 ("lit", grey 0) if |K|² went unchecked.
+    const Scene scene = scene_with(2, {0, 0, 3.2}, 1.1, {1e160, 1e160, 1e160}, 1);
+    const PixelTrace trace = trace_pixel(scene, 8, 3, 4);
+    REQUIRE(trace.first_non_finite);
+    CHECK(key_at(trace, *trace.first_non_finite) == "KK");
+    for (const Step& step : trace.steps)
+        if (step.key == Key::D) CHECK(std::isfinite(std::get<double>(step.value)));
+    CHECK(trace.branch == Branch::non_finite);
+    const ArticleWorld<double> world = article_world(scene);
+    std::vector<std::uint8_t> row(8);
+    CHECK(render_row(world, 8, 3, row.data()).branches[static_cast<int>(Branch::non_finite)] > 0);
+}
+
 TEST_CASE("an intensity that overflows is non-finite, not lit", "[non-finite]") {
     // Every step is finite, but I·D overflows (D = 1.505... at this pixel).
     const Scene scene = scene_with(2, {0, 0, 3.2}, 1.1, {1.5, 1, 1}, std::numeric_limits<double>::max());

@@ -139,3 +139,17 @@ TEST_CASE("scene names are escaped", "[trace-json]") {
     const json parsed = to_json(trace_pixel(scene, 8, 0, 0));
     CHECK(parsed["scene"] == scene.name);
 }
+
+TEST_CASE("a trace names its first non-finite step in JSON, and only then", "[trace-json]") {
+    Scene far = article_scene();
+    far.z_E = 1e200;  // |E|² overflows: the second step
+    const json overflow = to_json(trace_pixel(far, 8, 3, 4));
+    CHECK(overflow["first_non_finite"] == json{{"index", 1}, {"key", "EE"}});
+    CHECK(overflow["steps"][1]["value"].is_null());
+    CHECK(overflow["steps"][1]["text"] == "inf");
+    CHECK(overflow["branch"] == "non-finite");
+    CHECK(overflow["grey"] == 0);
+    const json fine = to_json(trace_pixel(article_scene(), 8, 3, 4));
+    CHECK_FALSE(fine.contains("first_non_finite"));
+    CHECK(fine["grey"] == 177);  // round(0.6957365143147741 · 255) = round(177.41)
+}

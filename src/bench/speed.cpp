@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -162,10 +163,13 @@ int run_speed_bench(const SpeedOptions& options) {
                ns_per_pixel(t_threaded));
 
     if (!timeable) {
+        // Time grows with w²: the pane that would make the shortest run long enough.
+        const double needed = w * std::sqrt(min_timed_seconds / std::max(shortest, 1e-9));
+        const int suggestion = std::min(32768, (static_cast<int>(needed) / 256 + 1) * 256);
         fmt::print(
             "  no ratios: a timed run took {:.2f} ms, and a ratio needs every timed run to take at least {:.0f} ms;\n"
-            "  time a larger pane (--w 1024 or more)\n",
-            shortest * 1e3, min_timed_seconds * 1e3);
+            "  time a larger pane (--w {} or more)\n",
+            shortest * 1e3, min_timed_seconds * 1e3, suggestion);
     } else {
         fmt::print("  engine / literal, 1 thread (median over rounds and cores): {:.3f}   (target <= 1.05)\n",
                    median(ratios));

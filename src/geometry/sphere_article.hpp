@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "math/vec3.hpp"
@@ -16,8 +17,9 @@ namespace promyk {
 // misses and t is not checked to be positive.
 //
 // When delta is not finite (the coefficients overflowed), nothing can be
-// decided: the returned t is then NaN or infinite, and the caller reports the
-// pixel as non-finite. A delta of -inf must not pass for a miss.
+// decided: the returned t is then NaN or infinite, and so are the hit's
+// quantities, which shading reports as non-finite. A delta of -inf must not
+// pass for a miss.
 template <class Real, class Recorder>
 std::optional<Real> intersect_sphere_article(const Vec3<Real>& E, const Vec3<Real>& S, Real r, Recorder& record) {
     // Compute the quadratic's coefficients, named as in the program.
@@ -38,8 +40,7 @@ std::optional<Real> intersect_sphere_article(const Vec3<Real>& E, const Vec3<Rea
         record(Key::Delta, Real(4) * delta);
         if (delta > 0) record(Key::sqrt_Delta, sqrt(Real(4) * delta));
     }
-    using std::isinf;
-    if (delta <= 0 && !isinf(delta)) return std::nullopt;
+    if (delta <= 0 && delta >= std::numeric_limits<Real>::lowest()) return std::nullopt;
 
     // Compute the nearer root: the minus sign, since |E|^2 > 0.
     const Real t = (C - sqrt(delta)) / EE;

