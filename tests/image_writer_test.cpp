@@ -22,6 +22,7 @@
 #include "render/image_writer.hpp"
 #include "util/atomic_file.hpp"
 #include "util/errors.hpp"
+#include "temp_dir.hpp"
 #include "util/output_file.hpp"
 
 namespace fs = std::filesystem;
@@ -29,28 +30,7 @@ using namespace promyk;
 
 namespace {
 
-// A fresh directory per test, removed with everything in it.
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        std::string name = (fs::temp_directory_path() / "promyk-image-XXXXXX").string();
-        REQUIRE(::mkdtemp(name.data()) != nullptr);
-        path = name;
-    }
-    ~TempDir() {
-        std::error_code ignored;
-        fs::remove_all(path, ignored);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    std::string file(const std::string& name) const { return (path / name).string(); }
-    // The names in the directory, hidden ones (our temporaries) included.
-    std::set<std::string> entries() const {
-        std::set<std::string> names;
-        for (const auto& entry : fs::directory_iterator(path)) names.insert(entry.path().filename().string());
-        return names;
-    }
-};
+using testing::TempDir;
 
 // A gradient that differs in both directions and wraps through all 256 levels.
 std::vector<std::uint8_t> gradient(int width, int height) {

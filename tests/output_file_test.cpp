@@ -19,6 +19,7 @@
 #include <thread>
 
 #include "util/errors.hpp"
+#include "temp_dir.hpp"
 #include "util/output_file.hpp"
 
 namespace fs = std::filesystem;
@@ -26,26 +27,7 @@ using namespace promyk;
 
 namespace {
 
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        std::string name = (fs::temp_directory_path() / "promyk-output-XXXXXX").string();
-        REQUIRE(::mkdtemp(name.data()) != nullptr);
-        path = name;
-    }
-    ~TempDir() {
-        std::error_code ignored;
-        fs::remove_all(path, ignored);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    std::string file(const std::string& name) const { return (path / name).string(); }
-    std::set<std::string> entries(const std::string& sub = "") const {
-        std::set<std::string> names;
-        for (const auto& entry : fs::directory_iterator(path / sub)) names.insert(entry.path().filename().string());
-        return names;
-    }
-};
+using testing::TempDir;
 
 std::string read_bytes(const std::string& path) {
     std::ifstream in(path, std::ios::binary);

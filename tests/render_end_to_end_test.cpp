@@ -4,6 +4,8 @@
 // of the engine's own conversion.
 #include <catch2/catch.hpp>
 
+#include <stdlib.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -53,11 +55,12 @@ std::vector<unsigned char> decode_pgm(const fs::path& path, int w) {
     return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
 }
 
+// A fresh directory of a unique name (mkdtemp): two test runs at once never
+// share one. The caller removes it at the end of the test.
 fs::path fresh_dir(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("promyk-e2e-" + name);
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
+    std::string path = (fs::temp_directory_path() / ("promyk-e2e-" + name + "-XXXXXX")).string();
+    REQUIRE(::mkdtemp(path.data()) != nullptr);
+    return path;
 }
 
 int run(const std::string& arguments) {

@@ -22,6 +22,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "temp_dir.hpp"
+
 #include "scene/scene.hpp"
 #include "scene/scene_json.hpp"
 #include "util/errors.hpp"
@@ -341,7 +343,8 @@ TEST_CASE("a missing or unreadable scene file is an input error", "[scene]") {
         CHECK_THAT(error.what(), Catch::Matchers::Contains("cannot read"));
     }
 
-    const auto big = std::filesystem::temp_directory_path() / "promyk_scene_json_test_big.json";
+    const promyk::testing::TempDir dir("promyk-scene");
+    const std::filesystem::path big = dir.file("big.json");
     {
         std::ofstream out(big, std::ios::binary);
         out << scene_text() << std::string(promyk::max_scene_file_bytes, ' ');
@@ -353,10 +356,9 @@ TEST_CASE("a missing or unreadable scene file is an input error", "[scene]") {
         CHECK(error.where.empty());
         CHECK_THAT(error.what(), Catch::Matchers::Contains("1 MiB"));
     }
-    std::filesystem::remove(big);
 
     // Errors inside a file name the file.
-    const auto bad = std::filesystem::temp_directory_path() / "promyk_scene_json_test_bad.json";
+    const std::filesystem::path bad = dir.file("bad.json");
     {
         std::ofstream out(bad, std::ios::binary);
         out << scene_text("", R"({"S": [0, 0, 3], "r": -1})");
@@ -368,7 +370,6 @@ TEST_CASE("a missing or unreadable scene file is an input error", "[scene]") {
         CHECK(error.file == bad.string());
         CHECK(error.where == "/spheres/0/r");
     }
-    std::filesystem::remove(bad);
 }
 
 // ---------------------------------------------------------------------------
