@@ -283,3 +283,14 @@ TEST_CASE("a lesson's value tables show the trace's values", "[lesson]") {
         }
     }
 }
+
+TEST_CASE("every built-in lesson ends with an exercise and its answer", "[lesson]") {
+    const LessonLibrary library;
+    std::vector<LessonProblem> problems;
+    for (const Lesson& lesson : library.lessons(problems)) {
+        INFO(lesson.file);
+        REQUIRE_FALSE(lesson.steps.empty());
+        CHECK(lesson.steps.back().id == "exercise");
+        CHECK(has_answers(lesson.steps.back()));
+    }
+}
