@@ -15,5 +15,6 @@ std::function<int()> setup_render(CLI::App& app);
 std::function<int()> setup_trace(CLI::App& app);
 std::function<int()> setup_bench(CLI::App& app);
 std::function<int()> setup_lesson(CLI::App& app);
+std::function<int()> setup_scene(CLI::App& app);
 
 }  // namespace promyk::app

@@ -137,7 +137,8 @@ int main(int argc, char** argv) {
     const auto trace = promyk::app::setup_trace(app);
     const auto bench = promyk::app::setup_bench(app);
     const auto lesson = promyk::app::setup_lesson(app);
-    const std::vector<std::string> commands = {"render", "trace", "lesson", "bench"};
+    const auto scene = promyk::app::setup_scene(app);
+    const std::vector<std::string> commands = {"render", "trace", "lesson", "scene", "bench"};
 
     // The command is the first argument that is not an option; check it
     // here, so that a typo gets a suggestion and `promyk help` gets help.
@@ -154,7 +155,7 @@ int main(int argc, char** argv) {
     }
     if (args.empty()) {
         fmt::print(stderr, "{}", app.help());
-        report("a command is required: render, trace, lesson or bench");
+        report("a command is required: render, trace, lesson, scene or bench");
         return 2;
     }
     const std::string name = !args[0].empty() && args[0][0] != '-' ? args[0] : "";
@@ -173,6 +174,7 @@ int main(int argc, char** argv) {
     const std::function<int()>& run = name == "render"  ? render
                                       : name == "trace"  ? trace
                                       : name == "lesson" ? lesson
+                                      : name == "scene"  ? scene
                                                          : bench;
     try {
         const int code = run();

@@ -71,3 +71,20 @@ promyk_cli_test(render_non_finite ARGS render --scene ${scenes}/far_pane.json --
                 STDERR "warning: 256 of 256 pixels are non-finite.*the first is \\(0, 0\\): see promyk trace --pixel 0,0 --w 16 --scene")
 promyk_cli_test(render_stats ARGS render --w 64 -o a.png --stats EXIT 0
                 STDERR "rays cast: 4096 primary.*intersection tests: 4096\n.*pixels: 2380 miss, 342 dark, 1374 lit, 0 non-finite")
+
+# promyk scene check and dump
+promyk_cli_test(scene_check_article ARGS scene check ${PROJECT_SOURCE_DIR}/lessons/scenes/article.json EXIT 0
+                STDOUT "article.json: a valid scene\ncontains:\n  - name \"article\", pane at z_E = 2, background 0.5\n  - sphere 1: S = \\(0, 0, 3.2\\), r = 1.1\n.*and skips:\n.*no shadow rays")
+promyk_cli_test(scene_check_no_warning ARGS scene check ${PROJECT_SOURCE_DIR}/lessons/scenes/article.json EXIT 0)
+set_tests_properties(cli.scene_check_no_warning PROPERTIES FAIL_REGULAR_EXPRESSION "warnings")
+promyk_cli_test(scene_check_light_inside ARGS scene check ${scenes}/light_inside.json EXIT 0 STDOUT "warnings.*the light is inside the sphere")
+promyk_cli_test(scene_check_off_view ARGS scene check ${scenes}/off_view.json EXIT 0 STDOUT "no pixel of a 64 × 64 pane sees the sphere")
+promyk_cli_test(scene_check_behind ARGS scene check ${scenes}/behind_eye.json EXIT 0 STDOUT "the sphere lies behind the eye")
+promyk_cli_test(scene_check_light_behind ARGS scene check ${scenes}/light_behind.json EXIT 0 STDOUT "no visible point of the sphere faces the light")
+promyk_cli_test(scene_check_far ARGS scene check ${scenes}/far_pane.json EXIT 0 STDOUT "4096 of 4096 pixels of a 64 × 64 pane are non-finite")
+promyk_cli_test(scene_check_bad ARGS scene check ${scenes}/negative_radius.json EXIT 3 STDERR "negative_radius.json: /spheres/0/r")
+promyk_cli_test(scene_check_missing ARGS scene check EXIT 2 STDERR "file")
+promyk_cli_test(scene_no_kind ARGS scene EXIT 2)
+# The dump is the committed article.json byte for byte (an independent text).
+add_test(NAME cli.scene_dump
+         COMMAND sh -c "\"$0\" scene dump | cmp - \"$1\"" $<TARGET_FILE:promyk> ${PROJECT_SOURCE_DIR}/lessons/scenes/article.json)

@@ -1,0 +1,59 @@
+// promyk scene check FILE, promyk scene dump: scenes as files.
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "app/cli_values.hpp"
+#include "app/commands.hpp"
+#include "app/common_options.hpp"
+#include "render/scene_report.hpp"
+#include "scene/scene_json.hpp"
+#include "util/printable.hpp"
+
+namespace promyk::app {
+
+namespace {
+
+void print_list(std::string& out, const char* heading, const std::vector<std::string>& items) {
+    if (items.empty()) return;
+    out += fmt::format("{}:\n", heading);
+    for (const std::string& item : items) out += fmt::format("  - {}\n", printable(item));
+}
+
+int run_check(const std::string& file) {
+    const Scene scene = load_scene_file(file);
+    const SceneReport report = report_scene(scene);
+    std::string out = fmt::format("{}: a valid scene\n", printable(file));
+    print_list(out, "contains", report.contents);
+    print_list(out, "the engine runs, for every pixel", report.stages);
+    print_list(out, "and skips", report.skipped);
+    print_list(out, "warnings (legal, but surprising)", report.warnings);
+    std::fputs(out.c_str(), stdout);
+    return 0;
+}
+
+int run_dump(const std::string& scene_file) {
+    std::fputs(scene_to_json(cli::load_scene_option(scene_file)).c_str(), stdout);
+    return 0;
+}
+
+}  // namespace
+
+std::function<int()> setup_scene(CLI::App& app) {
+    CLI::App* cmd = app.add_subcommand("scene", "Scene files: check one, or print the article's scene to start from");
+    cmd->require_subcommand(1);
+    auto file = std::make_shared<std::string>();
+    auto dump_file = std::make_shared<std::string>();
+    CLI::App* check = cmd->add_subcommand(
+        "check", "Validate a scene file; say what it contains, what the engine runs for it and what it skips");
+    check->add_option("file", *file, "The scene file (JSON)")->type_name("FILE")->required()->check(non_empty());
+    CLI::App* dump = cmd->add_subcommand(
+        "dump", "Print a scene as a file with every field written out (the article's unless --scene)");
+    add_scene_option(*dump, *dump_file);
+    dump->footer("Example: promyk scene dump > my_scene.json   (then edit it and pass --scene my_scene.json)");
+    return [check, file, dump_file] { return check->parsed() ? run_check(*file) : run_dump(*dump_file); };
+}
+
+}  // namespace promyk::app
