@@ -221,11 +221,11 @@ std::function<int()> setup_lesson(CLI::App& app) {
     add_scene_option(*cmd, options->scene_file);
     add_w_option(*cmd, options->w)->description("Pane size: w × w pixels (default: the lesson's, usually 8)");
     cmd->add_option("--lang", options->lang, "pl or en (default: Polish when LANG starts with pl)")
-        ->type_name("pl|en")
-        ->check(CLI::IsMember({"pl", "en"}));
+        ->check(CLI::IsMember({"pl", "en"}))
+        ->option_text("pl|en");
     cmd->add_option("--format", options->format, "text: for the terminal; markdown: with $…$ math and tables")
         ->check(CLI::IsMember({"text", "markdown"}))
-        ->capture_default_str();
+        ->option_text("text|markdown (default: text)");
     cmd->add_flag("--list", options->list, "List the lessons with their summaries");
     cmd->add_flag("--check", options->check,
                   "Check every lesson against the vocabulary and its translation; exit 1 on a fault");

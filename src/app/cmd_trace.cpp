@@ -56,13 +56,13 @@ std::function<int()> setup_trace(CLI::App& app) {
     add_scene_option(*cmd, options->scene_file);
     cmd->add_option("--format", options->format, "text: an aligned table; json: the trace as one JSON line")
         ->check(CLI::IsMember({"text", "json"}))
-        ->capture_default_str();
+        ->option_text("text|json (default: text)");
     cmd->add_flag("--wide", options->wide,
                   "text: one row a step (symbol, formula, value side by side; about 140 columns)\n"
                   "instead of the default layout that fits 80 columns");
     cmd->add_option("--lang", options->lang, "text: pl or en (default: Polish when LANG starts with pl)")
-        ->type_name("pl|en")
-        ->check(CLI::IsMember({"pl", "en"}));
+        ->check(CLI::IsMember({"pl", "en"}))
+        ->option_text("pl|en");
     cmd->add_flag("--explain", options->explain, "text: under each formula, what the quantity means");
     cmd->footer(
         "Example: promyk trace --pixel 3,4 --w 8   (at w = 8, (0,0) misses, (5,1) is on the dark side, (3,4) is lit)");
