@@ -88,3 +88,11 @@ promyk_cli_test(scene_no_kind ARGS scene EXIT 2)
 # The dump is the committed article.json byte for byte (an independent text).
 add_test(NAME cli.scene_dump
          COMMAND sh -c "\"$0\" scene dump | cmp - \"$1\"" $<TARGET_FILE:promyk> ${PROJECT_SOURCE_DIR}/lessons/scenes/article.json)
+
+# The scene schema and the loader agree on every example and test scene.
+file(GLOB promyk_scene_files ${PROJECT_SOURCE_DIR}/lessons/scenes/*.json ${PROJECT_SOURCE_DIR}/tests/reference/scenes/*.json
+     ${scenes}/*.json)
+list(FILTER promyk_scene_files EXCLUDE REGEX "scene\\.schema\\.json$")
+add_test(NAME cli.scene_schema
+         COMMAND ${PROMYK_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/cli/scene_schema_test.py $<TARGET_FILE:promyk>
+                 ${PROJECT_SOURCE_DIR}/lessons/scenes/scene.schema.json ${promyk_scene_files})
