@@ -7,6 +7,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "terminal_control.hpp"
+
 #include "util/printable.hpp"
 
 namespace {
@@ -35,19 +37,7 @@ std::string utf8(std::uint32_t code) {
     return out;
 }
 
-// True if `text` holds a byte a terminal acts on: C0, DEL, or the UTF-8 form
-// of a C1 control (C2 80 – C2 9F), or an ESC-like byte on its own.
-bool has_terminal_control(const std::string& text) {
-    for (std::size_t k = 0; k < text.size(); ++k) {
-        const auto c = static_cast<unsigned char>(text[k]);
-        if (c < 0x20u || c == 0x7Fu) return true;
-        if (c == 0xC2u && k + 1 < text.size()) {
-            const auto next = static_cast<unsigned char>(text[k + 1]);
-            if (next >= 0x80u && next <= 0x9Fu) return true;
-        }
-    }
-    return false;
-}
+using promyk::testing::has_terminal_control;
 
 }  // namespace
 

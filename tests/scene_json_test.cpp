@@ -22,6 +22,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "terminal_control.hpp"
+
 #include "temp_dir.hpp"
 
 #include "scene/scene.hpp"
@@ -382,18 +384,7 @@ const std::string bom = "\xEF\xBB\xBF";
 
 std::string scene_file(const std::string& name) { return std::string(PROMYK_SOURCE_DIR) + "/tests/cli/scenes/" + name; }
 
-// A byte or UTF-8 sequence a terminal acts on: C0, DEL, C1 (C2 80 – C2 9F).
-bool has_terminal_control(const std::string& text) {
-    for (std::size_t k = 0; k < text.size(); ++k) {
-        const auto c = static_cast<unsigned char>(text[k]);
-        if (c < 0x20u || c == 0x7Fu) return true;
-        if (c == 0xC2u && k + 1 < text.size()) {
-            const auto next = static_cast<unsigned char>(text[k + 1]);
-            if (next >= 0x80u && next <= 0x9Fu) return true;
-        }
-    }
-    return false;
-}
+using promyk::testing::has_terminal_control;
 
 // Rejected, and neither the pointer nor the message holds a control character.
 void check_rejected_printable(const std::string& text, const std::string& where,
