@@ -247,10 +247,17 @@ using json = nlohmann::json;
 // Builds the document with every number as the string it was written as
 // (nlohmann's SAX hands over a float's raw text), so 6.40 stays 6.40.
 struct RawNumbers {
+    // An answer file is flat and a trace three levels deep: deeper nesting is
+    // refused (the document's recursive destruction and printing would
+    // overflow the stack on 100 000 levels).
+    static constexpr std::size_t max_depth = 32;
+
     json root;
     std::vector<json*> stack;
     std::string pending_key;
     std::size_t error_position = 0;
+    bool too_deep = false;
+    std::optional<std::string> twice;  // a key given twice in the top object
 
     json* add(json value) {
         if (stack.empty()) {
@@ -273,16 +280,45 @@ struct RawNumbers {
     bool number_float(json::number_float_t, const std::string& raw) { return add(raw), true; }
     bool string(std::string& value) { return add(value), true; }
     bool binary(json::binary_t&) { return add(nullptr), true; }
-    bool start_object(std::size_t) { return stack.push_back(add(json::object())), true; }
-    bool key(std::string& key) { return pending_key = key, true; }
+    bool open(json container) {
+        if (stack.size() >= max_depth) return too_deep = true, false;
+        return stack.push_back(add(std::move(container))), true;
+    }
+    bool start_object(std::size_t) { return open(json::object()); }
+    bool key(std::string& key) {
+        if (stack.size() == 1 && stack.back()->contains(key)) return twice = key, false;
+        return pending_key = key, true;
+    }
     bool end_object() { return stack.pop_back(), true; }
-    bool start_array(std::size_t) { return stack.push_back(add(json::array())), true; }
+    bool start_array(std::size_t) { return open(json::array()); }
     bool end_array() { return stack.pop_back(), true; }
     bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception&) {
         error_position = position;
         return false;
     }
 };
+
+// The line where the nesting first goes deeper than `depth` (strings skipped).
+int line_deeper_than(std::string_view text, std::size_t depth) {
+    int line = 1;
+    std::size_t level = 0;
+    bool in_string = false;
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        const char c = text[k];
+        if (c == '\n') ++line;
+        if (in_string) {
+            if (c == '\\') ++k;
+            else if (c == '"') in_string = false;
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '[' || c == '{') {
+            if (++level > depth) return line;
+        } else if ((c == ']' || c == '}') && level > 0) {
+            --level;
+        }
+    }
+    return line;
+}
 
 std::string pointer_of(const std::string& key) { return (json::json_pointer() / key).to_string(); }
 
@@ -319,6 +355,8 @@ std::vector<PixelAnswers> parse_json(std::string_view text, const std::string& f
                                      Language language, LessonPixel first, int w) {
     RawNumbers builder;
     if (!json::sax_parse(text, &builder)) {
+        if (builder.twice) fail_at(file, pointer_of(*builder.twice), message(language, "answers_error_twice_json", {{"key", *builder.twice}}));
+        if (builder.too_deep) fail(file, language, line_deeper_than(text, RawNumbers::max_depth), message(language, "answers_error_deep", {{"depth", std::to_string(RawNumbers::max_depth)}}));
         const std::size_t end = std::min(builder.error_position, text.size());
         const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
         fail(file, language, line, message(language, "answers_error_json"));
@@ -359,7 +397,10 @@ std::vector<PixelAnswers> parse_json(std::string_view text, const std::string& f
         for (std::size_t k = 0; k < steps.size(); ++k) {
             const json& step = steps[k];
             if (!step.is_object() || step.contains("group") || !step.contains("key") || !step.at("key").is_string()) continue;
-            if (!step.contains("value") || step.at("value").is_null()) continue;  // non-finite: no number to check
+            // Non-finite (null, or a point with a null component): no number to check.
+            if (!step.contains("value") || step.at("value").is_null()) continue;
+            const json& value = step.at("value");
+            if (value.is_array() && std::any_of(value.begin(), value.end(), [](const json& c) { return c.is_null(); })) continue;
             add(step.at("key").get<std::string>(), step.at("value"), fmt::format("/steps/{}/value", k));
         }
         if (root.contains("result") && root.at("result").is_string()) add("I_P", root.at("result"), "/result");
