@@ -32,6 +32,34 @@ header=$'---\nname: x\ntitle: T\nsummary: S\n---\n'
 lesson() { rm -rf "$1" && mkdir -p "$1/en" "$1/pl" && cat >"$1/en/01-x.md" && cp "$1/en/01-x.md" "$1/pl/01-x.md"; }
 long() { head -c "$1" /dev/zero | tr '\0' "$2"; }
 
+# --- a teacher's folder -----------------------------------------------------
+{ printf '%s## [a] ' "$header"; long 2000000 a; echo; } | lesson long_heading
+expect "2 MB step heading" 0 "" -- lesson x --lessons long_heading --lang en
+{ printf '%s## [a] A\n\n::: pixel\n{' "$header"; long 2000000 a; printf '}\n:::\n'; } | lesson long_placeholder
+expect "2 MB placeholder" 1 "long_placeholder/en/01-x.md:9: malformed placeholder" -- lesson --check --lessons long_placeholder --lang en
+printf -- '---\nname: %s\ntitle: T\nsummary: S\n---\n## [a] A\n\nx\n' "$(long 2000000 a)" | lesson long_name
+expect "2 MB name" 0 "" -- lesson --list --lessons long_name --lang en
+printf -- '---\nname: x\ntitle: T\nsummary: S\npixels: 1,%s\n---\n## [a] A\n\nx\n' "$(long 2000000 1)" | lesson long_pixels
+expect "2 MB pixel number" 3 "long_pixels/en/01-x.md: line 5: bad value of \"pixels\"" -- lesson x --lessons long_pixels --lang en
+printf -- '---\nname: x\ntitle: T\nsummary: S\npixels: 99999999999,1\n---\n## [a] A\n\nx\n' | lesson huge_pixel
+expect "pixels: 99999999999,1" 3 "huge_pixel/en/01-x.md: line 5: bad value of \"pixels\"" -- lesson x --lessons huge_pixel --lang en
+printf -- '---\nname: x\ntitle: T\nsummary: S\nw: 4\npixels: 5,1\n---\n## [a] A\n\nx\n' | lesson pixel_outside
+expect "pixels outside w" 3 "pixel_outside/en/01-x.md: line 6: bad value of \"pixels\"" -- lesson x --lessons pixel_outside --lang en
+printf -- '---\nname: x\ntitle: T\nsummary: S\nscene: ..\n---\n## [a] A\n\nx\n' | lesson scene_dots
+expect "scene: .." 3 "scene_dots/en/01-x.md: line 5: bad value of \"scene\"" -- lesson x --lessons scene_dots --lang en
+{ printf '%s' "$header"; for k in $(seq 100000); do printf '## [s%d] S\n\nx\n' "$k"; done; } | lesson many_steps
+expect "100 000 steps" 0 "" -- lesson --check --lessons many_steps --lang en
+{ printf '%s## [a] A\n\n::: pixel\n' "$header"; for k in $(seq 100000); do printf '{t} '; done; printf '\n:::\n'; } | lesson many_placeholders
+expect "100 000 placeholders" 0 "" -- lesson --check --lessons many_placeholders --lang en
+printf '%s## [a] A\n\nhello \0 world\n' "$header" | lesson nul
+expect "NUL byte" 3 "nul/en/01-x.md: line 8: .*\\\\u0000" -- lesson x --lessons nul --lang en
+printf '%s## [a] A\n\nbad \xff utf\n' "$header" | lesson bad_utf8
+expect "invalid UTF-8" 1 "bad_utf8/en/01-x.md:8: .*\\\\xff" -- lesson --check --lessons bad_utf8 --lang en
+printf -- '---\nname: x\ntitle: T\x1b[31mred\nsummary: S\n---\n## [a] A\x1b]0;title\x07\n\nprose\x1b[5m\n' | lesson ansi
+expect "ANSI escapes in a lesson" 3 "ansi/en/01-x.md: line 3: .*\\\\u001b" -- lesson x --lessons ansi --lang en
+expect "ANSI escapes, --check" 1 "ansi/en/01-x.md:3: " -- lesson --check --lessons ansi --lang en
+printf -- '---\nname: x\ntitle: T\nsummary: S\n---\n## [a] A\n\n\tx\n' | lesson tab
+expect "a tab is fine" 0 "" -- lesson x --lessons tab --lang en
 # --- a student's answer file -----------------------------------------------
 python3 -c "print('{\"C\": ' + '[' * 100000 + ']' * 100000 + '}')" >deep.json
 expect "JSON nested 100 000 deep" 3 "deep.json: line 1: JSON nested deeper" -- lesson sphere --lang en --answers deep.json
