@@ -69,6 +69,15 @@ void check_translations(const std::vector<Lesson>& lessons, std::vector<LessonPr
         return ids;
     };
     for (const auto& [name, versions] : by_name) {
+        // Two files of one language with the same name: only the first would ever run.
+        for (std::size_t a = 0; a < versions.size(); ++a)
+            for (std::size_t b = 0; b < a; ++b)
+                if (versions[a]->language == versions[b]->language) {
+                    problems.push_back({versions[a]->file, versions[a]->header.name_line,
+                                        message(versions[a]->language, "error_name_twice",
+                                                {{"name", name}, {"other", versions[b]->file}})});
+                    break;
+                }
         for (const Language language : {Language::pl, Language::en}) {
             const bool present = std::any_of(versions.begin(), versions.end(),
                                              [&](const Lesson* lesson) { return lesson->language == language; });

@@ -15,6 +15,7 @@
 #include "scene/scene_json.hpp"
 #include "util/atomic_file.hpp"
 #include "util/errors.hpp"
+#include "trace/messages.hpp"
 
 namespace promyk {
 
@@ -72,16 +73,21 @@ std::vector<Lesson> LessonLibrary::lessons(std::vector<LessonProblem>& problems)
 }
 
 std::optional<Lesson> LessonLibrary::find(const std::string& name, Language language) const {
+    std::optional<Lesson> found;
     for (const LessonFile& file : files_) {
         if (language_of(file.path) != language) continue;
         std::vector<LessonProblem> problems;
         Lesson lesson = parse_lesson(file.text, file.shown, language, problems);
         if (lesson.header.name != name) continue;
+        // Two files with one name (a renamed copy beside the built-in one): neither is the lesson.
+        if (found)
+            throw InputError(file.shown, fmt::format("line {}", lesson.header.name_line),
+                             message(language, "error_name_twice", {{"name", name}, {"other", found->file}}));
         if (!problems.empty())
             throw InputError(file.shown, fmt::format("line {}", problems.front().line), problems.front().message);
-        return lesson;
+        found = std::move(lesson);
     }
-    return std::nullopt;
+    return found;
 }
 
 Scene LessonLibrary::scene(const std::string& name) const {

@@ -209,6 +209,7 @@ private:
 
     void read_field(const std::string& field, const std::string& value, int line, LessonHeader& header) {
         if (field == "name") {
+            header.name_line = line;
             if (!lesson_name(value))
                 problem(line, "error_header_value", {{"field", field}, {"problem", "a-z, 0-9, -"}});
             header.name = value;

@@ -60,6 +60,10 @@ expect "ANSI escapes in a lesson" 3 "ansi/en/01-x.md: line 3: .*\\\\u001b" -- le
 expect "ANSI escapes, --check" 1 "ansi/en/01-x.md:3: " -- lesson --check --lessons ansi --lang en
 printf -- '---\nname: x\ntitle: T\nsummary: S\n---\n## [a] A\n\n\tx\n' | lesson tab
 expect "a tab is fine" 0 "" -- lesson x --lessons tab --lang en
+# The same name in two files of one language: which one would run?
+lesson twice <tab/en/01-x.md && cp twice/en/01-x.md twice/en/02-y.md && cp twice/pl/01-x.md twice/pl/02-y.md
+expect "one name, two files" 3 "twice/en/0[12]-[xy].md.*twice/en/0[12]-[xy].md" -- lesson x --lessons twice --lang en
+expect "one name, two files, --check" 1 "twice/en/02-y.md:2: " -- lesson --check --lessons twice --lang en
 # --- a student's answer file -----------------------------------------------
 python3 -c "print('{\"C\": ' + '[' * 100000 + ']' * 100000 + '}')" >deep.json
 expect "JSON nested 100 000 deep" 3 "deep.json: line 1: JSON nested deeper" -- lesson sphere --lang en --answers deep.json
