@@ -49,9 +49,16 @@ LessonLibrary::LessonLibrary(const std::string& folder) {
             throw InputError(folder, "", "--lessons needs a folder of lessons (as promyk lesson --dump writes it)");
         for (auto it = fs::recursive_directory_iterator(folder, error); !error && it != fs::recursive_directory_iterator();
              it.increment(error)) {
-            if (!it->is_regular_file()) continue;
-            const std::string relative = fs::relative(it->path(), folder).generic_string();
+            // Lexically: fs::relative would follow symlinks (and throw on a loop).
+            const std::string relative = it->path().lexically_relative(folder).generic_string();
             if (!language_of(relative) && relative.rfind("scenes/", 0) != 0) continue;
+            // Only regular files (also through a symlink) are read: a FIFO
+            // would wait forever, a device never end.
+            std::error_code status_error;
+            const bool regular = it->is_regular_file(status_error);
+            if (status_error && status_error != std::errc::no_such_file_or_directory)
+                throw InputError(it->path().string(), "", "cannot read the file: " + status_error.message());
+            if (!regular) continue;
             LessonFile file{relative, it->path().string(), read_text(it->path())};
             const auto same = std::find_if(files_.begin(), files_.end(), [&](const LessonFile& f) { return f.path == relative; });
             if (same != files_.end())

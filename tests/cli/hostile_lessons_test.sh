@@ -64,6 +64,11 @@ expect "a tab is fine" 0 "" -- lesson x --lessons tab --lang en
 lesson twice <tab/en/01-x.md && cp twice/en/01-x.md twice/en/02-y.md && cp twice/pl/01-x.md twice/pl/02-y.md
 expect "one name, two files" 3 "twice/en/0[12]-[xy].md.*twice/en/0[12]-[xy].md" -- lesson x --lessons twice --lang en
 expect "one name, two files, --check" 1 "twice/en/02-y.md:2: " -- lesson --check --lessons twice --lang en
+rm -rf loop && mkdir -p loop/en && ln -s b.md loop/en/a.md && ln -s a.md loop/en/b.md
+expect "symlink loop" 3 "loop/en/[ab].md: .*symbolic links" -- lesson --list --lessons loop
+rm -rf fifo && mkdir -p fifo/en && mkfifo fifo/en/01-x.md
+expect "a FIFO is skipped" 0 "" -- lesson --list --lessons fifo
+
 # --- a student's answer file -----------------------------------------------
 python3 -c "print('{\"C\": ' + '[' * 100000 + ']' * 100000 + '}')" >deep.json
 expect "JSON nested 100 000 deep" 3 "deep.json: line 1: JSON nested deeper" -- lesson sphere --lang en --answers deep.json
