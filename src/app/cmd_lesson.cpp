@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -33,6 +34,7 @@
 #include "render/trace_pixel.hpp"
 #include "scene/scene_json.hpp"
 #include "util/errors.hpp"
+#include "util/printable.hpp"
 
 namespace promyk::app {
 
@@ -67,7 +69,7 @@ int run_check(const LessonLibrary& library, Language language) {
     for (const Lesson& lesson : lessons) check_lesson(lesson, builtin_vocabulary(), problems);
     check_translations(lessons, problems);
     for (const LessonProblem& problem : problems)
-        fmt::print(stderr, "{}:{}: {}\n", problem.file, problem.line, problem.message);
+        fmt::print(stderr, "{}:{}: {}\n", printable(problem.file), problem.line, printable(problem.message));
     if (!problems.empty()) {
         fmt::print(stderr, "promyk: {}\n", message(language, "check_failed", {{"count", std::to_string(problems.size())}}));
         return 1;
@@ -113,6 +115,8 @@ std::string read_answer_file(const std::string& path) {
         text << std::cin.rdbuf();
         return text.str();
     }
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) throw InputError(path, "", "is a folder; --answers reads a file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path, "", "cannot read the file: " + std::generic_category().message(errno));
     text << in.rdbuf();
@@ -144,7 +148,7 @@ int run_lesson(const LessonOptions& options) {
     const Language language = options.lang.empty() ? language_from_environment() : *parse_language(options.lang);
     if (!options.dump.empty()) {
         LessonLibrary::dump_builtin(options.dump);
-        fmt::print(stderr, "promyk: wrote the lessons, messages and scenes into {}\n", options.dump);
+        fmt::print(stderr, "promyk: wrote the lessons, messages and scenes into {}\n", printable(options.dump));
         return 0;
     }
     const LessonLibrary library(options.lessons);

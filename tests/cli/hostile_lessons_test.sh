@@ -58,6 +58,8 @@ expect "invalid UTF-8" 1 "bad_utf8/en/01-x.md:8: .*\\\\xff" -- lesson --check --
 printf -- '---\nname: x\ntitle: T\x1b[31mred\nsummary: S\n---\n## [a] A\x1b]0;title\x07\n\nprose\x1b[5m\n' | lesson ansi
 expect "ANSI escapes in a lesson" 3 "ansi/en/01-x.md: line 3: .*\\\\u001b" -- lesson x --lessons ansi --lang en
 expect "ANSI escapes, --check" 1 "ansi/en/01-x.md:3: " -- lesson --check --lessons ansi --lang en
+printf -- '---\nname: x\ntitle: T\nsummary: S\n\x1b[31mfield: v\n---\n## [a] A\n\nx\n' | lesson ansi_field
+expect "ANSI escape in a header field" 1 "ansi_field/en/01-x.md:5: " -- lesson --check --lessons ansi_field --lang en
 printf -- '---\nname: x\ntitle: T\nsummary: S\n---\n## [a] A\n\n\tx\n' | lesson tab
 expect "a tab is fine" 0 "" -- lesson x --lessons tab --lang en
 # The same name in two files of one language: which one would run?
@@ -76,7 +78,13 @@ printf '{"C": 6.4, "C": 6.5}' >twice.json
 expect "a JSON key twice" 3 "twice.json: /C: .*twice|twice.json: /C: .*already" -- lesson sphere --lang en --answers twice.json
 "$promyk" trace --format json --pixel 3,4 --scene "$here/scenes/far_pane.json" >far.json 2>/dev/null
 expect "a trace with non-finite points" 0 "" -- lesson sphere --lang en --pixel 3,4 --scene "$here/scenes/far_pane.json" --answers far.json
+expect "answers: a folder" 3 "\\.: .*folder" -- lesson sphere --lang en --answers .
 
+# --- --dump ------------------------------------------------------------------
+expect "--dump: a name with ESC" 0 "\\\\u001b" -- lesson --dump $'d\x1b[31m'
+echo x >file
+expect "--dump under a file" 4 "file/sub" -- lesson --dump file/sub
+expect "--dump into /dev/full" 4 "/dev/full" -- lesson --dump /dev/full
 
 echo "$passed passed, $failed failed"
 [ "$failed" = 0 ]
