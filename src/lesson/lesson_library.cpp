@@ -115,14 +115,26 @@ void LessonLibrary::dump_builtin(const std::string& folder) {
                                          "edited lesson is overwritten",
                                          path.string()));
     }
-    for (const embedded::EmbeddedFile& file : embedded::lesson_files()) {
-        const fs::path path = fs::path(folder) / std::string(file.path);
-        std::error_code error;
-        fs::create_directories(path.parent_path(), error);
-        if (error) throw OutputError(fmt::format("cannot create {}: {}", path.parent_path().string(), error.message()));
-        AtomicFile out(path.string());
-        out.write(file.text);
-        out.commit();
+    // All or nothing: a failure (a full disk) removes the files written so
+    // far, so that no half-filled folder is left for the next --dump to refuse.
+    std::vector<fs::path> written;
+    try {
+        for (const embedded::EmbeddedFile& file : embedded::lesson_files()) {
+            const fs::path path = fs::path(folder) / std::string(file.path);
+            std::error_code error;
+            fs::create_directories(path.parent_path(), error);
+            if (error) throw OutputError(fmt::format("cannot create {}: {}", path.parent_path().string(), error.message()));
+            AtomicFile out(path.string());
+            out.write(file.text);
+            out.commit();
+            written.push_back(path);
+        }
+    } catch (...) {
+        for (const fs::path& path : written) {
+            std::error_code ignored;
+            fs::remove(path, ignored);
+        }
+        throw;
     }
 }
 

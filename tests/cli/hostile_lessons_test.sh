@@ -85,6 +85,10 @@ expect "--dump: a name with ESC" 0 "\\\\u001b" -- lesson --dump $'d\x1b[31m'
 echo x >file
 expect "--dump under a file" 4 "file/sub" -- lesson --dump file/sub
 expect "--dump into /dev/full" 4 "/dev/full" -- lesson --dump /dev/full
+# A failure part way (here: scenes/ is a file) leaves none of the files written before it.
+mkdir -p partial && echo x >partial/scenes
+expect "--dump failing part way" 4 "partial/scenes" -- lesson --dump partial
+[ -z "$(find partial -type f ! -path partial/scenes)" ] && ok || bad "--dump failing part way left $(find partial -type f | head -3)"
 
 echo "$passed passed, $failed failed"
 [ "$failed" = 0 ]
