@@ -14,7 +14,7 @@
 #include <memory>
 #include <sstream>
 #include <optional>
-#include <sstream>
+#include <set>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -130,12 +130,11 @@ int run_answers(const LessonOptions& options, LessonView& view, const ArticleWor
     const std::vector<PixelAnswers> answers = parse_answers(read_answer_file(options.answers), shown, view.vocabulary,
                                                             view.lesson.language, first, view.w);
     // A heading may name a pixel the lesson did not choose: it is traced too.
-    for (const PixelAnswers& pixel : answers) {
-        const bool traced = std::any_of(view.traces.begin(), view.traces.end(), [&](const PixelTrace& trace) {
-            return trace.header.i == pixel.pixel.i && trace.header.j == pixel.pixel.j;
-        });
-        if (!traced) view.traces.push_back(trace_pixel(world, header, pixel.pixel.i, pixel.pixel.j));
-    }
+    std::set<std::pair<int, int>> traced;
+    for (const PixelTrace& trace : view.traces) traced.emplace(trace.header.i, trace.header.j);
+    for (const PixelAnswers& pixel : answers)
+        if (traced.emplace(pixel.pixel.i, pixel.pixel.j).second)
+            view.traces.push_back(trace_pixel(world, header, pixel.pixel.i, pixel.pixel.j));
     const std::vector<AnswerCheck> checks = check_answers(answers, view.traces);
     print(message(view.lesson.language, "answers_heading",
                   {{"file", shown}, {"lesson", view.lesson.header.name}, {"scene", view.scene_name}, {"w", std::to_string(view.w)},

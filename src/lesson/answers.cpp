@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -166,11 +167,12 @@ std::optional<std::pair<std::string, char>> split_key(const std::string& text, c
     return std::make_pair(key, component);
 }
 
-PixelAnswers& section(std::vector<PixelAnswers>& sections, LessonPixel pixel) {
-    for (PixelAnswers& s : sections)
-        if (s.pixel.i == pixel.i && s.pixel.j == pixel.j) return s;
-    sections.push_back({pixel, {}});
-    return sections.back();
+// The pixel's section, found through `index` (a file may head 10^5 pixels).
+PixelAnswers& section(std::vector<PixelAnswers>& sections, std::map<std::pair<int, int>, std::size_t>& index,
+                      LessonPixel pixel) {
+    const auto [it, added] = index.emplace(std::make_pair(pixel.i, pixel.j), sections.size());
+    if (added) sections.push_back({pixel, {}});
+    return sections[it->second];
 }
 
 // "[3,4]", "[ 3, 4 ]" -> the pixel.
@@ -191,6 +193,7 @@ std::optional<LessonPixel> parse_heading(const std::string& line) {
 std::vector<PixelAnswers> parse_lines(std::string_view text, const std::string& file, const Vocabulary& vocabulary,
                                       Language language, LessonPixel first, int w) {
     std::vector<PixelAnswers> sections;
+    std::map<std::pair<int, int>, std::size_t> index;
     LessonPixel pixel = first;
     int line_number = 0;
     std::size_t at = 0;
@@ -212,7 +215,7 @@ std::vector<PixelAnswers> parse_lines(std::string_view text, const std::string& 
                      message(language, "answers_error_outside",
                              {{"i", std::to_string(heading->i)}, {"j", std::to_string(heading->j)}, {"w", std::to_string(w)}}));
             pixel = *heading;
-            section(sections, pixel);
+            section(sections, index, pixel);
             continue;
         }
         const std::string key_text = trim(line.substr(0, equals));
@@ -228,7 +231,7 @@ std::vector<PixelAnswers> parse_lines(std::string_view text, const std::string& 
         const std::optional<std::vector<TypedNumber>> numbers = parse_value(answer.text);
         if (!numbers) fail(file, language, line_number, message(language, "answers_error_number", {{"text", answer.text}}));
         answer.numbers = *numbers;
-        PixelAnswers& mine = section(sections, pixel);
+        PixelAnswers& mine = section(sections, index, pixel);
         for (const Answer& earlier : mine.answers)
             if (earlier.key == answer.key && earlier.component == answer.component)
                 fail(file, language, line_number,
@@ -437,11 +440,20 @@ std::string numbers_text(const std::vector<TypedNumber>& numbers, const std::str
     return out + (kind == "vector" ? "]" : ")");
 }
 
-const PixelTrace* trace_of(const std::vector<PixelTrace>& traces, LessonPixel pixel) {
-    for (const PixelTrace& trace : traces)
-        if (trace.header.i == pixel.i && trace.header.j == pixel.j) return &trace;
-    return nullptr;
-}
+// Each pixel's trace, looked up once a check rather than searched for.
+class TraceIndex {
+public:
+    explicit TraceIndex(const std::vector<PixelTrace>& traces) {
+        for (const PixelTrace& trace : traces) index_.emplace(std::make_pair(trace.header.i, trace.header.j), &trace);
+    }
+    const PixelTrace* operator()(LessonPixel pixel) const {
+        const auto it = index_.find({pixel.i, pixel.j});
+        return it == index_.end() ? nullptr : it->second;
+    }
+
+private:
+    std::map<std::pair<int, int>, const PixelTrace*> index_;
+};
 
 }  // namespace
 
@@ -538,8 +550,9 @@ std::vector<AnswerCheck> check_answers(const std::vector<PixelAnswers>& answers,
         return vocabulary.keys.size();
     };
     std::vector<AnswerCheck> checks;
+    const TraceIndex trace_of(traces);
     for (const PixelAnswers& pixel : answers) {
-        const PixelTrace* trace = trace_of(traces, pixel.pixel);
+        const PixelTrace* trace = trace_of(pixel.pixel);
         if (trace == nullptr) throw std::logic_error("check_answers: no trace for an answered pixel");
         std::vector<Answer> sorted = pixel.answers;
         std::stable_sort(sorted.begin(), sorted.end(), [&](const Answer& a, const Answer& b) { return order(a.key) < order(b.key); });
@@ -591,8 +604,9 @@ std::string answers_report(const std::vector<AnswerCheck>& checks, const std::ve
     std::string out;
     int right = 0, wrong = 0, blank = 0;
     std::optional<LessonPixel> current;
+    const TraceIndex trace_of(traces);
     for (const AnswerCheck& check : checks) {
-        const PixelTrace* trace = trace_of(traces, check.pixel);
+        const PixelTrace* trace = trace_of(check.pixel);
         const std::string pixel = message(language, "pixel_label", {{"i", std::to_string(check.pixel.i)}, {"j", std::to_string(check.pixel.j)}});
         if (!current || current->i != check.pixel.i || current->j != check.pixel.j) {
             current = check.pixel;

@@ -66,6 +66,10 @@ expect "a tab is fine" 0 "" -- lesson x --lessons tab --lang en
 lesson twice <tab/en/01-x.md && cp twice/en/01-x.md twice/en/02-y.md && cp twice/pl/01-x.md twice/pl/02-y.md
 expect "one name, two files" 3 "twice/en/0[12]-[xy].md.*twice/en/0[12]-[xy].md" -- lesson x --lessons twice --lang en
 expect "one name, two files, --check" 1 "twice/en/02-y.md:2: " -- lesson --check --lessons twice --lang en
+# A worksheet of 100 000 pixels (a blank each, and the answer file's form).
+{ printf -- '---\nname: x\ntitle: T\nsummary: S\nw: 400\npixels:'; for i in $(seq 0 399); do for j in $(seq 0 249); do printf ' %d,%d' "$i" "$j"; done; done
+  printf -- '\n---\n## [a] A\n\n= t delta\n\n::: pixel\n{t}\n:::\n'; } | lesson many_pixels
+expect "a worksheet of 100 000 pixels" 0 "" -- lesson x --lessons many_pixels --lang en --worksheet --key
 rm -rf loop && mkdir -p loop/en && ln -s b.md loop/en/a.md && ln -s a.md loop/en/b.md
 expect "symlink loop" 3 "loop/en/[ab].md: .*symbolic links" -- lesson --list --lessons loop
 rm -rf fifo && mkdir -p fifo/en && mkfifo fifo/en/01-x.md
@@ -77,6 +81,9 @@ expect "JSON nested 100 000 deep" 3 "deep.json: line 1: JSON nested deeper" -- l
 printf '{"C": 6.4, "C": 6.5}' >twice.json
 expect "a JSON key twice" 3 "twice.json: /C: .*twice|twice.json: /C: .*already" -- lesson sphere --lang en --answers twice.json
 "$promyk" trace --format json --pixel 3,4 --scene "$here/scenes/far_pane.json" >far.json 2>/dev/null
+# 10^5 pixel headings in a 32768 × 32768 pane (each is traced and checked).
+python3 -c "print('\\n'.join('[%d,%d]\\nC = 1' % (k // 1000, k % 1000) for k in range(100000)))" >headings.txt
+expect "100 000 pixel headings" 1 "" -- lesson sphere --lang en --w 32768 --answers headings.txt
 expect "a trace with non-finite points" 0 "" -- lesson sphere --lang en --pixel 3,4 --scene "$here/scenes/far_pane.json" --answers far.json
 expect "answers: a folder" 3 "\\.: .*folder" -- lesson sphere --lang en --answers .
 
