@@ -387,6 +387,7 @@ std::vector<PixelAnswers> parse_json(std::string_view text, const std::string& f
             return std::stoi(digits);
         };
         const json pixel = root.value("pixel", json::object());
+        if (!pixel.is_object()) fail_at(file, "/pixel", message(language, "answers_error_trace"));
         const std::optional<int> i = whole(pixel.value("i", json())), j = whole(pixel.value("j", json()));
         if (!i || !j) fail_at(file, "/pixel", message(language, "answers_error_trace"));
         const std::optional<int> trace_w = whole(root.value("w", json()));
