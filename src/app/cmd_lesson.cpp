@@ -66,7 +66,19 @@ void print(const std::string& text) {
 int run_check(const LessonLibrary& library, Language language) {
     std::vector<LessonProblem> problems;
     const std::vector<Lesson> lessons = library.lessons(problems);
-    for (const Lesson& lesson : lessons) check_lesson(lesson, builtin_vocabulary(), problems);
+    for (const Lesson& lesson : lessons) {
+        check_lesson(lesson, builtin_vocabulary(), problems);
+        // The scene a lesson names must exist and be valid, or the lesson cannot run.
+        if (lesson.header.scene.empty() || lesson.header.scene == "article") continue;
+        try {
+            library.scene(lesson.header.scene);
+        } catch (const InputError& error) {
+            const std::string where = error.where.empty() ? error.file : error.file + ": " + error.where;
+            problems.push_back({lesson.file, lesson.header.scene_line,
+                                message(lesson.language, "error_scene",
+                                        {{"scene", lesson.header.scene}, {"problem", where + ": " + error.what()}})});
+        }
+    }
     check_translations(lessons, problems);
     for (const LessonProblem& problem : problems)
         fmt::print(stderr, "{}:{}: {}\n", printable(problem.file), problem.line, printable(problem.message));

@@ -218,6 +218,7 @@ private:
         } else if (field == "summary") {
             header.summary = value;
         } else if (field == "scene") {
+            header.scene_line = line;
             if (value.empty() || value.find('/') != std::string::npos || value == "." || value == "..")
                 problem(line, "error_header_value", {{"field", field}, {"problem", "article, or a file of lessons/scenes/"}});
             header.scene = value;

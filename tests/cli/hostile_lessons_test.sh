@@ -70,6 +70,12 @@ expect "one name, two files, --check" 1 "twice/en/02-y.md:2: " -- lesson --check
 { printf -- '---\nname: x\ntitle: T\nsummary: S\nw: 400\npixels:'; for i in $(seq 0 399); do for j in $(seq 0 249); do printf ' %d,%d' "$i" "$j"; done; done
   printf -- '\n---\n## [a] A\n\n= t delta\n\n::: pixel\n{t}\n:::\n'; } | lesson many_pixels
 expect "a worksheet of 100 000 pixels" 0 "" -- lesson x --lessons many_pixels --lang en --worksheet --key
+# --check reads the scene a lesson names: a broken one is reported at the lesson's scene: line.
+printf -- '---\nname: x\ntitle: T\nsummary: S\nscene: b.json\n---\n## [a] A\n\nx\n' | lesson broken_scene
+mkdir -p broken_scene/scenes && echo '{"spheres": [' >broken_scene/scenes/b.json
+expect "a broken scene, --check" 1 "broken_scene/en/01-x.md:5: the scene \"b.json\" cannot be read: broken_scene/scenes/b.json: line 2" -- lesson --check --lessons broken_scene --lang en
+printf -- '---\nname: x\ntitle: T\nsummary: S\nscene: none.json\n---\n## [a] A\n\nx\n' | lesson missing_scene
+expect "a missing scene, --check" 1 "missing_scene/en/01-x.md:5: the scene \"none.json\"" -- lesson --check --lessons missing_scene --lang en
 rm -rf loop && mkdir -p loop/en && ln -s b.md loop/en/a.md && ln -s a.md loop/en/b.md
 expect "symlink loop" 3 "loop/en/[ab].md: .*symbolic links" -- lesson --list --lessons loop
 rm -rf fifo && mkdir -p fifo/en && mkfifo fifo/en/01-x.md
