@@ -344,7 +344,7 @@ private:
         }
         flush_prose();
         if (block != nullptr) problem(block->line, "error_unclosed_block");
-        if (lesson.steps.empty()) problem(static_cast<int>(lines.size()), "error_no_steps");
+        if (lesson.steps.empty()) problem(std::max(1, static_cast<int>(lines.size())), "error_no_steps");  // an empty file has line 1
     }
 
     const std::string& file_;

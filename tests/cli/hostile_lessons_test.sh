@@ -76,6 +76,8 @@ mkdir -p broken_scene/scenes && echo '{"spheres": [' >broken_scene/scenes/b.json
 expect "a broken scene, --check" 1 "broken_scene/en/01-x.md:5: the scene \"b.json\" cannot be read: broken_scene/scenes/b.json: line 2" -- lesson --check --lessons broken_scene --lang en
 printf -- '---\nname: x\ntitle: T\nsummary: S\nscene: none.json\n---\n## [a] A\n\nx\n' | lesson missing_scene
 expect "a missing scene, --check" 1 "missing_scene/en/01-x.md:5: the scene \"none.json\"" -- lesson --check --lessons missing_scene --lang en
+: | lesson empty_file
+expect "an empty lesson file" 1 "empty_file/en/01-x.md:1: the lesson has no step" -- lesson --check --lessons empty_file --lang en
 rm -rf loop && mkdir -p loop/en && ln -s b.md loop/en/a.md && ln -s a.md loop/en/b.md
 expect "symlink loop" 3 "loop/en/[ab].md: .*symbolic links" -- lesson --list --lessons loop
 rm -rf fifo && mkdir -p fifo/en && mkfifo fifo/en/01-x.md
