@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <system_error>
 
@@ -44,6 +45,8 @@ LessonLibrary::LessonLibrary(const std::string& folder) {
     for (const embedded::EmbeddedFile& file : embedded::lesson_files())
         files_.push_back({std::string(file.path), std::string(file.path) + " (built in)", std::string(file.text)});
     if (!folder.empty()) {
+        std::map<std::string, std::size_t> index;
+        for (std::size_t k = 0; k < files_.size(); ++k) index.emplace(files_[k].path, k);
         std::error_code error;
         if (!fs::is_directory(folder, error))
             throw InputError(folder, "", "--lessons needs a folder of lessons (as promyk lesson --dump writes it)");
@@ -60,11 +63,12 @@ LessonLibrary::LessonLibrary(const std::string& folder) {
                 throw InputError(it->path().string(), "", "cannot read the file: " + status_error.message());
             if (!regular) continue;
             LessonFile file{relative, it->path().string(), read_text(it->path())};
-            const auto same = std::find_if(files_.begin(), files_.end(), [&](const LessonFile& f) { return f.path == relative; });
-            if (same != files_.end())
-                *same = std::move(file);
-            else
+            // A file of the folder replaces the built-in one of the same path (a map: a folder may hold 10^4 files).
+            const auto [same, added] = index.emplace(relative, files_.size());
+            if (added)
                 files_.push_back(std::move(file));
+            else
+                files_[same->second] = std::move(file);
         }
         if (error) throw InputError(folder, "", "cannot read the folder: " + error.message());
     }
