@@ -80,6 +80,8 @@ int run_check(const LessonLibrary& library, Language language) {
         }
     }
     check_translations(lessons, problems);
+    for (const std::string& file : library.unread())
+        problems.push_back({file, 1, message(language, "error_unread_file")});
     for (const LessonProblem& problem : problems)
         fmt::print(stderr, "{}:{}: {}\n", printable(problem.file), problem.line, printable(problem.message));
     if (!problems.empty()) {

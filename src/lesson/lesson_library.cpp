@@ -54,7 +54,11 @@ LessonLibrary::LessonLibrary(const std::string& folder) {
              it.increment(error)) {
             // Lexically: fs::relative would follow symlinks (and throw on a loop).
             const std::string relative = it->path().lexically_relative(folder).generic_string();
-            if (!language_of(relative) && relative.rfind("scenes/", 0) != 0) continue;
+            if (!language_of(relative) && relative.rfind("scenes/", 0) != 0) {
+                const bool markdown = relative.size() > 3 && relative.compare(relative.size() - 3, 3, ".md") == 0;
+                if (markdown && relative.find('/') != std::string::npos) unread_.push_back(it->path().string());
+                continue;
+            }
             // Only regular files (also through a symlink) are read: a FIFO
             // would wait forever, a device never end.
             std::error_code status_error;

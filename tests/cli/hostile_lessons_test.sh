@@ -78,6 +78,9 @@ printf -- '---\nname: x\ntitle: T\nsummary: S\nscene: none.json\n---\n## [a] A\n
 expect "a missing scene, --check" 1 "missing_scene/en/01-x.md:5: the scene \"none.json\"" -- lesson --check --lessons missing_scene --lang en
 : | lesson empty_file
 expect "an empty lesson file" 1 "empty_file/en/01-x.md:1: the lesson has no step" -- lesson --check --lessons empty_file --lang en
+# A folder EN/ (or de/) is not read: --check says so rather than pass in silence.
+rm -rf upper && mkdir -p upper/EN && cp tab/en/01-x.md upper/EN/
+expect "a folder EN/, --check" 1 "upper/EN/01-x.md:1: this file is not read" -- lesson --check --lessons upper --lang en
 rm -rf loop && mkdir -p loop/en && ln -s b.md loop/en/a.md && ln -s a.md loop/en/b.md
 expect "symlink loop" 3 "loop/en/[ab].md: .*symbolic links" -- lesson --list --lessons loop
 rm -rf fifo && mkdir -p fifo/en && mkfifo fifo/en/01-x.md
