@@ -11,6 +11,7 @@
 #include "lesson/lesson_render.hpp"
 #include "trace/messages.hpp"
 #include "util/errors.hpp"
+#include "util/printable.hpp"
 
 namespace promyk {
 
@@ -113,12 +114,14 @@ std::string trim(std::string_view text) {
     return std::string(text.substr(begin, end - begin + 1));
 }
 
+// The message quotes what the student typed: printable() here, since a NUL
+// in it would cut the exception's C-string message short.
 [[noreturn]] void fail(const std::string& file, Language language, int line, const std::string& what) {
-    throw InputError(file, line > 0 ? message(language, "answers_line", {{"line", std::to_string(line)}}) : "", what);
+    throw InputError(file, line > 0 ? message(language, "answers_line", {{"line", std::to_string(line)}}) : "", printable(what));
 }
 
 [[noreturn]] void fail_at(const std::string& file, const std::string& pointer, const std::string& what) {
-    throw InputError(file, pointer, what);
+    throw InputError(file, printable(pointer), printable(what));
 }
 
 // "6,4" -> one number; "(0,1; 0,2; 3)", "[0.1, 0.2, 3]" -> three. Nothing if malformed.

@@ -95,6 +95,9 @@ expect "a JSON key twice" 3 "twice.json: /C: .*twice|twice.json: /C: .*already" 
 # 10^5 pixel headings in a 32768 × 32768 pane (each is traced and checked).
 python3 -c "print('\\n'.join('[%d,%d]\\nC = 1' % (k // 1000, k % 1000) for k in range(100000)))" >headings.txt
 expect "100 000 pixel headings" 1 "" -- lesson sphere --lang en --w 32768 --answers headings.txt
+# A NUL in a value: the message shows it escaped and goes on past it.
+printf 'C = 6\0.4\n' >nul.txt
+expect "a NUL in an answer" 3 'nul.txt: line 1: "6\\u0000\.4" is not a number' -- lesson sphere --lang en --answers nul.txt
 printf '{"pixel": [3, 4], "steps": []}' >pixel_array.json
 expect "a trace whose pixel is not an object" 3 "pixel_array.json: /pixel: " -- lesson sphere --lang en --answers pixel_array.json
 expect "a trace with non-finite points" 0 "" -- lesson sphere --lang en --pixel 3,4 --scene "$here/scenes/far_pane.json" --answers far.json
