@@ -34,6 +34,7 @@
 #include "render/trace_pixel.hpp"
 #include "scene/scene_json.hpp"
 #include "util/errors.hpp"
+#include "util/output_file.hpp"
 #include "util/printable.hpp"
 
 namespace promyk::app {
@@ -58,9 +59,12 @@ struct LessonOptions {
     std::string answers;
 };
 
+// Flushed at once (step mode waits between steps); a failed write (a full
+// disk, a reader that quit) is an error here: once flushed, the failure
+// would no longer show when main flushes standard output at the end.
 void print(const std::string& text) {
-    std::fwrite(text.data(), 1, text.size(), stdout);
-    std::fflush(stdout);
+    if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
+        throw_write_error("standard output", errno);
 }
 
 int run_check(const LessonLibrary& library, Language language) {

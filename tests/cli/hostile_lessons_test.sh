@@ -113,5 +113,18 @@ mkdir -p partial && echo x >partial/scenes
 expect "--dump failing part way" 4 "partial/scenes" -- lesson --dump partial
 [ -z "$(find partial -type f ! -path partial/scenes)" ] && ok || bad "--dump failing part way left $(find partial -type f | head -3)"
 
+# Standard output that cannot be written: exit 4 (141 when the reader quits), never 0.
+for args in "sphere --lang en" "sphere --lang en --worksheet" "--list" "--check"; do
+  # shellcheck disable=SC2086
+  "$promyk" lesson $args >/dev/full 2>err.txt; code=$?
+  [ "$code" = 4 ] && grep -q "standard output" err.txt && ok || bad "lesson $args >/dev/full: exit $code"
+done
+sed -i 's/^C = .*/C = 6.4/' nul.txt
+"$promyk" lesson sphere --lang en --answers nul.txt >/dev/full 2>err.txt; code=$?
+[ "$code" = 4 ] && ok || bad "lesson --answers >/dev/full: exit $code"
+# (megabytes of output, more than a pipe holds, so that the reader surely quits first)
+"$promyk" lesson x --lessons many_pixels --lang en | head -c 10 >/dev/null; code=${PIPESTATUS[0]}
+[ "$code" = 141 ] && ok || bad "lesson | head -c 10: exit $code"
+
 echo "$passed passed, $failed failed"
 [ "$failed" = 0 ]
