@@ -31,12 +31,21 @@ std::optional<Language> language_of(const std::string& path) {
     return parse_language(path.substr(0, slash));
 }
 
+// Every file of a lessons folder is read when the folder is opened: a huge
+// one (a disk image named en/01-x.md) is refused rather than read into memory.
+constexpr std::size_t max_lesson_file_bytes = 8 << 20;
+
 std::string read_text(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path.string(), "", "cannot read the file: " + std::generic_category().message(errno));
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+    std::string text;
+    char buffer[65536];
+    while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+        text.append(buffer, static_cast<std::size_t>(in.gcount()));
+        if (text.size() > max_lesson_file_bytes)
+            throw InputError(path.string(), "", fmt::format("the file is larger than the limit of {} bytes (8 MiB)", max_lesson_file_bytes));
+    }
+    return text;
 }
 
 }  // namespace

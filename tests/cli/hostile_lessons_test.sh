@@ -81,6 +81,9 @@ expect "an empty lesson file" 1 "empty_file/en/01-x.md:1: the lesson has no step
 # A folder EN/ (or de/) is not read: --check says so rather than pass in silence.
 rm -rf upper && mkdir -p upper/EN && cp tab/en/01-x.md upper/EN/
 expect "a folder EN/, --check" 1 "upper/EN/01-x.md:1: this file is not read" -- lesson --check --lessons upper --lang en
+# A huge file in the folder (lessons are read when the folder is opened): refused, not read into memory.
+rm -rf huge && mkdir -p huge/scenes && head -c 20000000 /dev/zero >huge/scenes/big.json
+expect "a 20 MB file in scenes/" 3 "huge/scenes/big.json: the file is larger than the limit" -- lesson --list --lessons huge
 rm -rf loop && mkdir -p loop/en && ln -s b.md loop/en/a.md && ln -s a.md loop/en/b.md
 expect "symlink loop" 3 "loop/en/[ab].md: .*symbolic links" -- lesson --list --lessons loop
 rm -rf fifo && mkdir -p fifo/en && mkfifo fifo/en/01-x.md
