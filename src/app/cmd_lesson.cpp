@@ -146,7 +146,7 @@ int run_answers(const LessonOptions& options, LessonView& view, const ArticleWor
     const std::string shown = options.answers == "-" ? "(stdin)" : options.answers;
     const LessonPixel first{view.traces.front().header.i, view.traces.front().header.j};
     const std::vector<PixelAnswers> answers = parse_answers(read_answer_file(options.answers), shown, view.vocabulary,
-                                                            view.lesson.language, first, view.w);
+                                                            view.lesson.language, first, view.w, header.scene_hash);
     // A heading may name a pixel the lesson did not choose: it is traced too.
     std::set<std::pair<int, int>> traced;
     for (const PixelTrace& trace : view.traces) traced.emplace(trace.header.i, trace.header.j);

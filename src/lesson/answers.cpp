@@ -358,7 +358,7 @@ std::string json_text_of(const json& value) {
 }
 
 std::vector<PixelAnswers> parse_json(std::string_view text, const std::string& file, const Vocabulary& vocabulary,
-                                     Language language, LessonPixel first, int w) {
+                                     Language language, LessonPixel first, int w, const std::string& scene_hash) {
     RawNumbers builder;
     if (!json::sax_parse(text, &builder)) {
         if (builder.twice) fail_at(file, pointer_of(*builder.twice), message(language, "answers_error_twice_json", {{"key", *builder.twice}}));
@@ -394,6 +394,12 @@ std::vector<PixelAnswers> parse_json(std::string_view text, const std::string& f
         const std::optional<int> i = whole(pixel.value("i", json())), j = whole(pixel.value("j", json()));
         if (!i || !j) fail_at(file, "/pixel", message(language, "answers_error_trace"));
         const std::optional<int> trace_w = whole(root.value("w", json()));
+        // A trace of another scene would make every number "wrong" without saying why.
+        const json trace_hash = root.value("scene_hash", json());
+        if (!scene_hash.empty() && trace_hash.is_string() && trace_hash.get<std::string>() != scene_hash)
+            fail_at(file, "/scene_hash",
+                    message(language, "answers_error_trace_scene",
+                            {{"scene", root.value("scene", json()).is_string() ? root.at("scene").get<std::string>() : "?"}}));
         if (trace_w && *trace_w != w)
             fail_at(file, "/w", message(language, "answers_error_trace_w", {{"w", std::to_string(*trace_w)}, {"lesson_w", std::to_string(w)}}));
         if (*i >= w || *j >= w)
@@ -533,11 +539,11 @@ Verdict compare_number(double reference, const TypedNumber& typed, TypedNumber& 
 }
 
 std::vector<PixelAnswers> parse_answers(std::string_view text, const std::string& file, const Vocabulary& vocabulary,
-                                        Language language, LessonPixel first, int w) {
+                                        Language language, LessonPixel first, int w, const std::string& scene_hash) {
     if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // a byte order mark some editors write
     const std::size_t start = text.find_first_not_of(" \t\r\n");
     std::vector<PixelAnswers> answers = start != std::string_view::npos && text[start] == '{'
-                                            ? parse_json(text, file, vocabulary, language, first, w)
+                                            ? parse_json(text, file, vocabulary, language, first, w, scene_hash)
                                             : parse_lines(text, file, vocabulary, language, first, w);
     const bool any = std::any_of(answers.begin(), answers.end(), [](const PixelAnswers& pixel) {
         return std::any_of(pixel.answers.begin(), pixel.answers.end(), [](const Answer& a) { return !a.numbers.empty(); });

@@ -103,6 +103,7 @@ printf 'C = 6\0.4\n' >nul.txt
 expect "a NUL in an answer" 3 'nul.txt: line 1: "6\\u0000\.4" is not a number' -- lesson sphere --lang en --answers nul.txt
 printf '{"pixel": [3, 4], "steps": []}' >pixel_array.json
 expect "a trace whose pixel is not an object" 3 "pixel_array.json: /pixel: " -- lesson sphere --lang en --answers pixel_array.json
+expect "a trace of another scene" 3 "far.json: /scene_hash: the trace is of another scene \\(\"far pane\"\\)" -- lesson sphere --lang en --pixel 3,4 --answers far.json
 expect "a trace with non-finite points" 0 "" -- lesson sphere --lang en --pixel 3,4 --scene "$here/scenes/far_pane.json" --answers far.json
 expect "answers: a folder" 3 "\\.: .*folder" -- lesson sphere --lang en --answers .
 
