@@ -8,12 +8,13 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
 #include <sstream>
 #include <optional>
-#include <sstream>
+#include <set>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -33,6 +34,8 @@
 #include "render/trace_pixel.hpp"
 #include "scene/scene_json.hpp"
 #include "util/errors.hpp"
+#include "util/output_file.hpp"
+#include "util/printable.hpp"
 
 namespace promyk::app {
 
@@ -56,18 +59,35 @@ struct LessonOptions {
     std::string answers;
 };
 
+// Flushed at once (step mode waits between steps); a failed write (a full
+// disk, a reader that quit) is an error here: once flushed, the failure
+// would no longer show when main flushes standard output at the end.
 void print(const std::string& text) {
-    std::fwrite(text.data(), 1, text.size(), stdout);
-    std::fflush(stdout);
+    if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
+        throw_write_error("standard output", errno);
 }
 
 int run_check(const LessonLibrary& library, Language language) {
     std::vector<LessonProblem> problems;
     const std::vector<Lesson> lessons = library.lessons(problems);
-    for (const Lesson& lesson : lessons) check_lesson(lesson, builtin_vocabulary(), problems);
+    for (const Lesson& lesson : lessons) {
+        check_lesson(lesson, builtin_vocabulary(), problems);
+        // The scene a lesson names must exist and be valid, or the lesson cannot run.
+        if (lesson.header.scene.empty() || lesson.header.scene == "article") continue;
+        try {
+            library.scene(lesson.header.scene);
+        } catch (const InputError& error) {
+            const std::string where = error.where.empty() ? error.file : error.file + ": " + error.where;
+            problems.push_back({lesson.file, lesson.header.scene_line,
+                                message(lesson.language, "error_scene",
+                                        {{"scene", lesson.header.scene}, {"problem", where + ": " + error.what()}})});
+        }
+    }
     check_translations(lessons, problems);
+    for (const std::string& file : library.unread())
+        problems.push_back({file, 1, message(language, "error_unread_file")});
     for (const LessonProblem& problem : problems)
-        fmt::print(stderr, "{}:{}: {}\n", problem.file, problem.line, problem.message);
+        fmt::print(stderr, "{}:{}: {}\n", printable(problem.file), problem.line, printable(problem.message));
     if (!problems.empty()) {
         fmt::print(stderr, "promyk: {}\n", message(language, "check_failed", {{"count", std::to_string(problems.size())}}));
         return 1;
@@ -113,6 +133,8 @@ std::string read_answer_file(const std::string& path) {
         text << std::cin.rdbuf();
         return text.str();
     }
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) throw InputError(path, "", "is a folder; --answers reads a file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path, "", "cannot read the file: " + std::generic_category().message(errno));
     text << in.rdbuf();
@@ -124,14 +146,13 @@ int run_answers(const LessonOptions& options, LessonView& view, const ArticleWor
     const std::string shown = options.answers == "-" ? "(stdin)" : options.answers;
     const LessonPixel first{view.traces.front().header.i, view.traces.front().header.j};
     const std::vector<PixelAnswers> answers = parse_answers(read_answer_file(options.answers), shown, view.vocabulary,
-                                                            view.lesson.language, first, view.w);
+                                                            view.lesson.language, first, view.w, header.scene_hash);
     // A heading may name a pixel the lesson did not choose: it is traced too.
-    for (const PixelAnswers& pixel : answers) {
-        const bool traced = std::any_of(view.traces.begin(), view.traces.end(), [&](const PixelTrace& trace) {
-            return trace.header.i == pixel.pixel.i && trace.header.j == pixel.pixel.j;
-        });
-        if (!traced) view.traces.push_back(trace_pixel(world, header, pixel.pixel.i, pixel.pixel.j));
-    }
+    std::set<std::pair<int, int>> traced;
+    for (const PixelTrace& trace : view.traces) traced.emplace(trace.header.i, trace.header.j);
+    for (const PixelAnswers& pixel : answers)
+        if (traced.emplace(pixel.pixel.i, pixel.pixel.j).second)
+            view.traces.push_back(trace_pixel(world, header, pixel.pixel.i, pixel.pixel.j));
     const std::vector<AnswerCheck> checks = check_answers(answers, view.traces);
     print(message(view.lesson.language, "answers_heading",
                   {{"file", shown}, {"lesson", view.lesson.header.name}, {"scene", view.scene_name}, {"w", std::to_string(view.w)},
@@ -144,7 +165,7 @@ int run_lesson(const LessonOptions& options) {
     const Language language = options.lang.empty() ? language_from_environment() : *parse_language(options.lang);
     if (!options.dump.empty()) {
         LessonLibrary::dump_builtin(options.dump);
-        fmt::print(stderr, "promyk: wrote the lessons, messages and scenes into {}\n", options.dump);
+        fmt::print(stderr, "promyk: wrote the lessons, messages and scenes into {}\n", printable(options.dump));
         return 0;
     }
     const LessonLibrary library(options.lessons);

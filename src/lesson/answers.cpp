@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -10,6 +11,7 @@
 #include "lesson/lesson_render.hpp"
 #include "trace/messages.hpp"
 #include "util/errors.hpp"
+#include "util/printable.hpp"
 
 namespace promyk {
 
@@ -112,12 +114,14 @@ std::string trim(std::string_view text) {
     return std::string(text.substr(begin, end - begin + 1));
 }
 
+// The message quotes what the student typed: printable() here, since a NUL
+// in it would cut the exception's C-string message short.
 [[noreturn]] void fail(const std::string& file, Language language, int line, const std::string& what) {
-    throw InputError(file, line > 0 ? message(language, "answers_line", {{"line", std::to_string(line)}}) : "", what);
+    throw InputError(file, line > 0 ? message(language, "answers_line", {{"line", std::to_string(line)}}) : "", printable(what));
 }
 
 [[noreturn]] void fail_at(const std::string& file, const std::string& pointer, const std::string& what) {
-    throw InputError(file, pointer, what);
+    throw InputError(file, printable(pointer), printable(what));
 }
 
 // "6,4" -> one number; "(0,1; 0,2; 3)", "[0.1, 0.2, 3]" -> three. Nothing if malformed.
@@ -166,11 +170,12 @@ std::optional<std::pair<std::string, char>> split_key(const std::string& text, c
     return std::make_pair(key, component);
 }
 
-PixelAnswers& section(std::vector<PixelAnswers>& sections, LessonPixel pixel) {
-    for (PixelAnswers& s : sections)
-        if (s.pixel.i == pixel.i && s.pixel.j == pixel.j) return s;
-    sections.push_back({pixel, {}});
-    return sections.back();
+// The pixel's section, found through `index` (a file may head 10^5 pixels).
+PixelAnswers& section(std::vector<PixelAnswers>& sections, std::map<std::pair<int, int>, std::size_t>& index,
+                      LessonPixel pixel) {
+    const auto [it, added] = index.emplace(std::make_pair(pixel.i, pixel.j), sections.size());
+    if (added) sections.push_back({pixel, {}});
+    return sections[it->second];
 }
 
 // "[3,4]", "[ 3, 4 ]" -> the pixel.
@@ -191,6 +196,7 @@ std::optional<LessonPixel> parse_heading(const std::string& line) {
 std::vector<PixelAnswers> parse_lines(std::string_view text, const std::string& file, const Vocabulary& vocabulary,
                                       Language language, LessonPixel first, int w) {
     std::vector<PixelAnswers> sections;
+    std::map<std::pair<int, int>, std::size_t> index;
     LessonPixel pixel = first;
     int line_number = 0;
     std::size_t at = 0;
@@ -212,7 +218,7 @@ std::vector<PixelAnswers> parse_lines(std::string_view text, const std::string& 
                      message(language, "answers_error_outside",
                              {{"i", std::to_string(heading->i)}, {"j", std::to_string(heading->j)}, {"w", std::to_string(w)}}));
             pixel = *heading;
-            section(sections, pixel);
+            section(sections, index, pixel);
             continue;
         }
         const std::string key_text = trim(line.substr(0, equals));
@@ -228,7 +234,7 @@ std::vector<PixelAnswers> parse_lines(std::string_view text, const std::string& 
         const std::optional<std::vector<TypedNumber>> numbers = parse_value(answer.text);
         if (!numbers) fail(file, language, line_number, message(language, "answers_error_number", {{"text", answer.text}}));
         answer.numbers = *numbers;
-        PixelAnswers& mine = section(sections, pixel);
+        PixelAnswers& mine = section(sections, index, pixel);
         for (const Answer& earlier : mine.answers)
             if (earlier.key == answer.key && earlier.component == answer.component)
                 fail(file, language, line_number,
@@ -247,10 +253,17 @@ using json = nlohmann::json;
 // Builds the document with every number as the string it was written as
 // (nlohmann's SAX hands over a float's raw text), so 6.40 stays 6.40.
 struct RawNumbers {
+    // An answer file is flat and a trace three levels deep: deeper nesting is
+    // refused (the document's recursive destruction and printing would
+    // overflow the stack on 100 000 levels).
+    static constexpr std::size_t max_depth = 32;
+
     json root;
     std::vector<json*> stack;
     std::string pending_key;
     std::size_t error_position = 0;
+    bool too_deep = false;
+    std::optional<std::string> twice;  // a key given twice in the top object
 
     json* add(json value) {
         if (stack.empty()) {
@@ -273,16 +286,45 @@ struct RawNumbers {
     bool number_float(json::number_float_t, const std::string& raw) { return add(raw), true; }
     bool string(std::string& value) { return add(value), true; }
     bool binary(json::binary_t&) { return add(nullptr), true; }
-    bool start_object(std::size_t) { return stack.push_back(add(json::object())), true; }
-    bool key(std::string& key) { return pending_key = key, true; }
+    bool open(json container) {
+        if (stack.size() >= max_depth) return too_deep = true, false;
+        return stack.push_back(add(std::move(container))), true;
+    }
+    bool start_object(std::size_t) { return open(json::object()); }
+    bool key(std::string& key) {
+        if (stack.size() == 1 && stack.back()->contains(key)) return twice = key, false;
+        return pending_key = key, true;
+    }
     bool end_object() { return stack.pop_back(), true; }
-    bool start_array(std::size_t) { return stack.push_back(add(json::array())), true; }
+    bool start_array(std::size_t) { return open(json::array()); }
     bool end_array() { return stack.pop_back(), true; }
     bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception&) {
         error_position = position;
         return false;
     }
 };
+
+// The line where the nesting first goes deeper than `depth` (strings skipped).
+int line_deeper_than(std::string_view text, std::size_t depth) {
+    int line = 1;
+    std::size_t level = 0;
+    bool in_string = false;
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        const char c = text[k];
+        if (c == '\n') ++line;
+        if (in_string) {
+            if (c == '\\') ++k;
+            else if (c == '"') in_string = false;
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '[' || c == '{') {
+            if (++level > depth) return line;
+        } else if ((c == ']' || c == '}') && level > 0) {
+            --level;
+        }
+    }
+    return line;
+}
 
 std::string pointer_of(const std::string& key) { return (json::json_pointer() / key).to_string(); }
 
@@ -316,9 +358,11 @@ std::string json_text_of(const json& value) {
 }
 
 std::vector<PixelAnswers> parse_json(std::string_view text, const std::string& file, const Vocabulary& vocabulary,
-                                     Language language, LessonPixel first, int w) {
+                                     Language language, LessonPixel first, int w, const std::string& scene_hash) {
     RawNumbers builder;
     if (!json::sax_parse(text, &builder)) {
+        if (builder.twice) fail_at(file, pointer_of(*builder.twice), message(language, "answers_error_twice_json", {{"key", *builder.twice}}));
+        if (builder.too_deep) fail(file, language, line_deeper_than(text, RawNumbers::max_depth), message(language, "answers_error_deep", {{"depth", std::to_string(RawNumbers::max_depth)}}));
         const std::size_t end = std::min(builder.error_position, text.size());
         const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
         fail(file, language, line, message(language, "answers_error_json"));
@@ -346,9 +390,16 @@ std::vector<PixelAnswers> parse_json(std::string_view text, const std::string& f
             return std::stoi(digits);
         };
         const json pixel = root.value("pixel", json::object());
+        if (!pixel.is_object()) fail_at(file, "/pixel", message(language, "answers_error_trace"));
         const std::optional<int> i = whole(pixel.value("i", json())), j = whole(pixel.value("j", json()));
         if (!i || !j) fail_at(file, "/pixel", message(language, "answers_error_trace"));
         const std::optional<int> trace_w = whole(root.value("w", json()));
+        // A trace of another scene would make every number "wrong" without saying why.
+        const json trace_hash = root.value("scene_hash", json());
+        if (!scene_hash.empty() && trace_hash.is_string() && trace_hash.get<std::string>() != scene_hash)
+            fail_at(file, "/scene_hash",
+                    message(language, "answers_error_trace_scene",
+                            {{"scene", root.value("scene", json()).is_string() ? root.at("scene").get<std::string>() : "?"}}));
         if (trace_w && *trace_w != w)
             fail_at(file, "/w", message(language, "answers_error_trace_w", {{"w", std::to_string(*trace_w)}, {"lesson_w", std::to_string(w)}}));
         if (*i >= w || *j >= w)
@@ -359,7 +410,10 @@ std::vector<PixelAnswers> parse_json(std::string_view text, const std::string& f
         for (std::size_t k = 0; k < steps.size(); ++k) {
             const json& step = steps[k];
             if (!step.is_object() || step.contains("group") || !step.contains("key") || !step.at("key").is_string()) continue;
-            if (!step.contains("value") || step.at("value").is_null()) continue;  // non-finite: no number to check
+            // Non-finite (null, or a point with a null component): no number to check.
+            if (!step.contains("value") || step.at("value").is_null()) continue;
+            const json& value = step.at("value");
+            if (value.is_array() && std::any_of(value.begin(), value.end(), [](const json& c) { return c.is_null(); })) continue;
             add(step.at("key").get<std::string>(), step.at("value"), fmt::format("/steps/{}/value", k));
         }
         if (root.contains("result") && root.at("result").is_string()) add("I_P", root.at("result"), "/result");
@@ -396,11 +450,20 @@ std::string numbers_text(const std::vector<TypedNumber>& numbers, const std::str
     return out + (kind == "vector" ? "]" : ")");
 }
 
-const PixelTrace* trace_of(const std::vector<PixelTrace>& traces, LessonPixel pixel) {
-    for (const PixelTrace& trace : traces)
-        if (trace.header.i == pixel.i && trace.header.j == pixel.j) return &trace;
-    return nullptr;
-}
+// Each pixel's trace, looked up once a check rather than searched for.
+class TraceIndex {
+public:
+    explicit TraceIndex(const std::vector<PixelTrace>& traces) {
+        for (const PixelTrace& trace : traces) index_.emplace(std::make_pair(trace.header.i, trace.header.j), &trace);
+    }
+    const PixelTrace* operator()(LessonPixel pixel) const {
+        const auto it = index_.find({pixel.i, pixel.j});
+        return it == index_.end() ? nullptr : it->second;
+    }
+
+private:
+    std::map<std::pair<int, int>, const PixelTrace*> index_;
+};
 
 }  // namespace
 
@@ -476,11 +539,11 @@ Verdict compare_number(double reference, const TypedNumber& typed, TypedNumber& 
 }
 
 std::vector<PixelAnswers> parse_answers(std::string_view text, const std::string& file, const Vocabulary& vocabulary,
-                                        Language language, LessonPixel first, int w) {
+                                        Language language, LessonPixel first, int w, const std::string& scene_hash) {
     if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // a byte order mark some editors write
     const std::size_t start = text.find_first_not_of(" \t\r\n");
     std::vector<PixelAnswers> answers = start != std::string_view::npos && text[start] == '{'
-                                            ? parse_json(text, file, vocabulary, language, first, w)
+                                            ? parse_json(text, file, vocabulary, language, first, w, scene_hash)
                                             : parse_lines(text, file, vocabulary, language, first, w);
     const bool any = std::any_of(answers.begin(), answers.end(), [](const PixelAnswers& pixel) {
         return std::any_of(pixel.answers.begin(), pixel.answers.end(), [](const Answer& a) { return !a.numbers.empty(); });
@@ -497,8 +560,9 @@ std::vector<AnswerCheck> check_answers(const std::vector<PixelAnswers>& answers,
         return vocabulary.keys.size();
     };
     std::vector<AnswerCheck> checks;
+    const TraceIndex trace_of(traces);
     for (const PixelAnswers& pixel : answers) {
-        const PixelTrace* trace = trace_of(traces, pixel.pixel);
+        const PixelTrace* trace = trace_of(pixel.pixel);
         if (trace == nullptr) throw std::logic_error("check_answers: no trace for an answered pixel");
         std::vector<Answer> sorted = pixel.answers;
         std::stable_sort(sorted.begin(), sorted.end(), [&](const Answer& a, const Answer& b) { return order(a.key) < order(b.key); });
@@ -550,8 +614,9 @@ std::string answers_report(const std::vector<AnswerCheck>& checks, const std::ve
     std::string out;
     int right = 0, wrong = 0, blank = 0;
     std::optional<LessonPixel> current;
+    const TraceIndex trace_of(traces);
     for (const AnswerCheck& check : checks) {
-        const PixelTrace* trace = trace_of(traces, check.pixel);
+        const PixelTrace* trace = trace_of(check.pixel);
         const std::string pixel = message(language, "pixel_label", {{"i", std::to_string(check.pixel.i)}, {"j", std::to_string(check.pixel.j)}});
         if (!current || current->i != check.pixel.i || current->j != check.pixel.j) {
             current = check.pixel;

@@ -67,8 +67,10 @@ struct PixelAnswers {
 // Reads an answer file. Lines before any [i,j] heading belong to `first`.
 // InputError (exit 3) naming `file` and the line (or JSON pointer) of a
 // fault, worded in `language`.
+// `scene_hash`, when not empty, is the lesson's scene's: a whole trace of
+// another scene (its "scene_hash" differs) is refused.
 std::vector<PixelAnswers> parse_answers(std::string_view text, const std::string& file, const Vocabulary& vocabulary,
-                                        Language language, LessonPixel first, int w);
+                                        Language language, LessonPixel first, int w, const std::string& scene_hash = "");
 
 struct AnswerCheck {
     LessonPixel pixel;

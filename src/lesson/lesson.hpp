@@ -21,6 +21,8 @@ struct LessonHeader {
     int w = 8;
     std::vector<LessonPixel> pixels = {{0, 0}, {5, 1}, {3, 4}};
     std::string columns = "double/article";
+    int name_line = 1;   // the line of "name:", for messages about the name
+    int scene_line = 1;  // the line of "scene:", for messages about the scene
 };
 
 enum class PartKind {

@@ -11,10 +11,6 @@ namespace {
 
 bool is_special(const std::string& name) { return name == "i" || name == "j" || name == "w" || name == "branch"; }
 
-int line_of(const LessonPart& part, std::size_t offset) {
-    return part.text_line + static_cast<int>(std::count(part.text.begin(), part.text.begin() + static_cast<long>(offset), '\n'));
-}
-
 std::string branch_list(const Vocabulary& vocabulary) {
     std::string out;
     for (const BranchEntry& branch : vocabulary.branches) out += (out.empty() ? "" : ", ") + branch.branch;
@@ -44,8 +40,13 @@ void check_lesson(const Lesson& lesson, const Vocabulary& vocabulary, std::vecto
             for (const std::string& branch : part.branches)
                 if (vocabulary.find_branch(branch) == nullptr)
                     problem(part.line, "error_unknown_branch", {{"branch", branch}, {"branches", branch_list(vocabulary)}});
+            // The placeholders come in order: count the lines once, not from the start for each.
+            int line = part.text_line;
+            std::size_t counted = 0;
             for (const Placeholder& placeholder : find_placeholders(part.text)) {
-                const int line = line_of(part, placeholder.begin);
+                line += static_cast<int>(std::count(part.text.begin() + static_cast<long>(counted),
+                                                    part.text.begin() + static_cast<long>(placeholder.begin), '\n'));
+                counted = placeholder.begin;
                 if (!placeholder.valid) {
                     problem(line, "error_bad_placeholder", {{"text", placeholder.name}});
                 } else if (!is_special(placeholder.name) && vocabulary.find(placeholder.name) == nullptr) {
@@ -68,6 +69,15 @@ void check_translations(const std::vector<Lesson>& lessons, std::vector<LessonPr
         return ids;
     };
     for (const auto& [name, versions] : by_name) {
+        // Two files of one language with the same name: only the first would ever run.
+        for (std::size_t a = 0; a < versions.size(); ++a)
+            for (std::size_t b = 0; b < a; ++b)
+                if (versions[a]->language == versions[b]->language) {
+                    problems.push_back({versions[a]->file, versions[a]->header.name_line,
+                                        message(versions[a]->language, "error_name_twice",
+                                                {{"name", name}, {"other", versions[b]->file}})});
+                    break;
+                }
         for (const Language language : {Language::pl, Language::en}) {
             const bool present = std::any_of(versions.begin(), versions.end(),
                                              [&](const Lesson* lesson) { return lesson->language == language; });

@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <system_error>
 
@@ -15,6 +16,7 @@
 #include "scene/scene_json.hpp"
 #include "util/atomic_file.hpp"
 #include "util/errors.hpp"
+#include "trace/messages.hpp"
 
 namespace promyk {
 
@@ -29,12 +31,21 @@ std::optional<Language> language_of(const std::string& path) {
     return parse_language(path.substr(0, slash));
 }
 
+// Every file of a lessons folder is read when the folder is opened: a huge
+// one (a disk image named en/01-x.md) is refused rather than read into memory.
+constexpr std::size_t max_lesson_file_bytes = 8 << 20;
+
 std::string read_text(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path.string(), "", "cannot read the file: " + std::generic_category().message(errno));
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+    std::string text;
+    char buffer[65536];
+    while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+        text.append(buffer, static_cast<std::size_t>(in.gcount()));
+        if (text.size() > max_lesson_file_bytes)
+            throw InputError(path.string(), "", fmt::format("the file is larger than the limit of {} bytes (8 MiB)", max_lesson_file_bytes));
+    }
+    return text;
 }
 
 }  // namespace
@@ -43,20 +54,34 @@ LessonLibrary::LessonLibrary(const std::string& folder) {
     for (const embedded::EmbeddedFile& file : embedded::lesson_files())
         files_.push_back({std::string(file.path), std::string(file.path) + " (built in)", std::string(file.text)});
     if (!folder.empty()) {
+        std::map<std::string, std::size_t> index;
+        for (std::size_t k = 0; k < files_.size(); ++k) index.emplace(files_[k].path, k);
         std::error_code error;
         if (!fs::is_directory(folder, error))
             throw InputError(folder, "", "--lessons needs a folder of lessons (as promyk lesson --dump writes it)");
         for (auto it = fs::recursive_directory_iterator(folder, error); !error && it != fs::recursive_directory_iterator();
              it.increment(error)) {
-            if (!it->is_regular_file()) continue;
-            const std::string relative = fs::relative(it->path(), folder).generic_string();
-            if (!language_of(relative) && relative.rfind("scenes/", 0) != 0) continue;
+            // Lexically: fs::relative would follow symlinks (and throw on a loop).
+            const std::string relative = it->path().lexically_relative(folder).generic_string();
+            if (!language_of(relative) && relative.rfind("scenes/", 0) != 0) {
+                const bool markdown = relative.size() > 3 && relative.compare(relative.size() - 3, 3, ".md") == 0;
+                if (markdown && relative.find('/') != std::string::npos) unread_.push_back(it->path().string());
+                continue;
+            }
+            // Only regular files (also through a symlink) are read: a FIFO
+            // would wait forever, a device never end.
+            std::error_code status_error;
+            const bool regular = it->is_regular_file(status_error);
+            if (status_error && status_error != std::errc::no_such_file_or_directory)
+                throw InputError(it->path().string(), "", "cannot read the file: " + status_error.message());
+            if (!regular) continue;
             LessonFile file{relative, it->path().string(), read_text(it->path())};
-            const auto same = std::find_if(files_.begin(), files_.end(), [&](const LessonFile& f) { return f.path == relative; });
-            if (same != files_.end())
-                *same = std::move(file);
-            else
+            // A file of the folder replaces the built-in one of the same path (a map: a folder may hold 10^4 files).
+            const auto [same, added] = index.emplace(relative, files_.size());
+            if (added)
                 files_.push_back(std::move(file));
+            else
+                files_[same->second] = std::move(file);
         }
         if (error) throw InputError(folder, "", "cannot read the folder: " + error.message());
     }
@@ -72,16 +97,21 @@ std::vector<Lesson> LessonLibrary::lessons(std::vector<LessonProblem>& problems)
 }
 
 std::optional<Lesson> LessonLibrary::find(const std::string& name, Language language) const {
+    std::optional<Lesson> found;
     for (const LessonFile& file : files_) {
         if (language_of(file.path) != language) continue;
         std::vector<LessonProblem> problems;
         Lesson lesson = parse_lesson(file.text, file.shown, language, problems);
         if (lesson.header.name != name) continue;
+        // Two files with one name (a renamed copy beside the built-in one): neither is the lesson.
+        if (found)
+            throw InputError(file.shown, fmt::format("line {}", lesson.header.name_line),
+                             message(language, "error_name_twice", {{"name", name}, {"other", found->file}}));
         if (!problems.empty())
             throw InputError(file.shown, fmt::format("line {}", problems.front().line), problems.front().message);
-        return lesson;
+        found = std::move(lesson);
     }
-    return std::nullopt;
+    return found;
 }
 
 Scene LessonLibrary::scene(const std::string& name) const {
@@ -102,14 +132,26 @@ void LessonLibrary::dump_builtin(const std::string& folder) {
                                          "edited lesson is overwritten",
                                          path.string()));
     }
-    for (const embedded::EmbeddedFile& file : embedded::lesson_files()) {
-        const fs::path path = fs::path(folder) / std::string(file.path);
-        std::error_code error;
-        fs::create_directories(path.parent_path(), error);
-        if (error) throw OutputError(fmt::format("cannot create {}: {}", path.parent_path().string(), error.message()));
-        AtomicFile out(path.string());
-        out.write(file.text);
-        out.commit();
+    // All or nothing: a failure (a full disk) removes the files written so
+    // far, so that no half-filled folder is left for the next --dump to refuse.
+    std::vector<fs::path> written;
+    try {
+        for (const embedded::EmbeddedFile& file : embedded::lesson_files()) {
+            const fs::path path = fs::path(folder) / std::string(file.path);
+            std::error_code error;
+            fs::create_directories(path.parent_path(), error);
+            if (error) throw OutputError(fmt::format("cannot create {}: {}", path.parent_path().string(), error.message()));
+            AtomicFile out(path.string());
+            out.write(file.text);
+            out.commit();
+            written.push_back(path);
+        }
+    } catch (...) {
+        for (const fs::path& path : written) {
+            std::error_code ignored;
+            fs::remove(path, ignored);
+        }
+        throw;
     }
 }
 

@@ -37,12 +37,17 @@ public:
 
     const std::vector<LessonFile>& files() const { return files_; }
 
+    // Lesson-like files of the folder that are not read: a .md file in a
+    // folder other than pl/ and en/ (EN/, de/), for --check to mention.
+    const std::vector<std::string>& unread() const { return unread_; }
+
     // Writes every lesson, the messages and the scenes into `folder` (created
     // if missing), for a teacher to edit. OutputError on failure.
     static void dump_builtin(const std::string& folder);
 
 private:
     std::vector<LessonFile> files_;  // sorted by path
+    std::vector<std::string> unread_;
 };
 
 }  // namespace promyk

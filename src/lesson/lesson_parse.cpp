@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cctype>
 #include <regex>
+#include <set>
 
 #include "lesson/lesson.hpp"
 #include "trace/messages.hpp"
+#include "util/printable.hpp"
 
 namespace promyk {
 
@@ -65,6 +67,79 @@ bool plain_whole(const std::string& text, long min, long max, int& value) {
     return true;
 }
 
+bool ascii_alnum(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'); }
+
+// The hand-written matchers below replace std::regex, whose matching recurses
+// once a character: a line of a few megabytes overflowed the stack.
+
+// [a-z0-9][a-z0-9-]*
+bool lesson_name(const std::string& text) {
+    const auto lower = [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9'); };
+    return !text.empty() && lower(text[0]) && std::all_of(text.begin(), text.end(), [&](char c) { return lower(c) || c == '-'; });
+}
+
+// "0,0 5,1 (3, 4)": the pixels, or nothing if the text has another form.
+std::optional<std::vector<LessonPixel>> pixel_list(const std::string& text) {
+    std::vector<LessonPixel> pixels;
+    std::size_t k = 0;
+    const auto spaces = [&] {
+        while (k < text.size() && std::isspace(static_cast<unsigned char>(text[k]))) ++k;
+    };
+    const auto whole = [&](int& value) {
+        const std::size_t start = k;
+        while (k < text.size() && text[k] >= '0' && text[k] <= '9') ++k;
+        if (k == start || k - start > 5) return false;  // a pane has at most 32768 pixels a side
+        value = std::stoi(text.substr(start, k - start));
+        return true;
+    };
+    for (spaces(); k < text.size(); spaces()) {
+        const bool open = text[k] == '(';
+        if (open) ++k;
+        LessonPixel pixel;
+        spaces();
+        if (!whole(pixel.i)) return std::nullopt;
+        spaces();
+        if (k == text.size() || text[k] != ',') return std::nullopt;
+        ++k;
+        spaces();
+        if (!whole(pixel.j)) return std::nullopt;
+        spaces();
+        if (open) {
+            if (k == text.size() || text[k] != ')') return std::nullopt;
+            ++k;
+        }
+        pixels.push_back(pixel);
+    }
+    if (pixels.empty()) return std::nullopt;
+    return pixels;
+}
+
+// "## [id] Title": the id (letters, digits, -) and the title.
+bool step_heading(const std::string& line, std::string& id, std::string& title) {
+    std::size_t k = 2;  // after "##"
+    while (k < line.size() && std::isspace(static_cast<unsigned char>(line[k]))) ++k;
+    if (k == 2 || k == line.size() || line[k] != '[') return false;
+    const std::size_t close = line.find(']', k);
+    if (close == std::string::npos || close == k + 1 ||
+        !std::all_of(line.begin() + static_cast<long>(k) + 1, line.begin() + static_cast<long>(close),
+                     [](char c) { return ascii_alnum(c) || c == '-'; }))
+        return false;
+    id = line.substr(k + 1, close - k - 1);
+    title = trim(line.substr(close + 1));
+    return true;
+}
+
+// The first character of `line` that must not reach a terminal raw (a
+// control character but tab, a bidirectional control, a byte that is not
+// UTF-8), escaped as printable() writes it; empty when there is none.
+std::string unprintable_in(std::string line) {
+    line.erase(std::remove(line.begin(), line.end(), '\t'), line.end());
+    const std::string safe = printable(line);
+    if (safe == line) return "";
+    const std::size_t at = static_cast<std::size_t>(std::mismatch(line.begin(), line.end(), safe.begin()).first - line.begin());
+    return safe.substr(at, safe[at + 1] == 'x' ? 4 : safe[at + 1] == 'u' ? 6 : 2);
+}
+
 class Parser {
 public:
     Parser(const std::string& file, Language language, std::vector<LessonProblem>& problems)
@@ -75,6 +150,15 @@ public:
         lesson.file = file_;
         lesson.language = language_;
         const std::vector<std::string> lines = split_lines(text);
+        // A lesson is printed on a terminal: its text is plain UTF-8 with no
+        // control character but tab (the first fault a file is enough).
+        for (std::size_t k = 0; k < lines.size(); ++k) {
+            const std::string bad = unprintable_in(lines[k]);
+            if (!bad.empty()) {
+                problem(static_cast<int>(k + 1), "error_control_character", {{"char", bad}});
+                break;
+            }
+        }
         std::size_t k = read_header(lines, lesson.header);
         read_body(lines, k, lesson);
         return lesson;
@@ -112,6 +196,12 @@ private:
             problem(1, "error_header_unclosed");
             return k;
         }
+        for (const LessonPixel& pixel : header.pixels)
+            if (pixel.i >= header.w || pixel.j >= header.w) {
+                problem(pixels_line_, "error_header_value",
+                        {{"field", "pixels"}, {"problem", "0 … w − 1 (w = " + std::to_string(header.w) + ")"}});
+                break;
+            }
         for (std::size_t f = 0; f < 3; ++f)
             if (!seen[f]) problem(static_cast<int>(k + 1), "error_header_required", {{"field", std::string(header_fields[f])}});
         return k + 1;
@@ -119,8 +209,8 @@ private:
 
     void read_field(const std::string& field, const std::string& value, int line, LessonHeader& header) {
         if (field == "name") {
-            static const std::regex name("[a-z0-9][a-z0-9-]*");
-            if (!std::regex_match(value, name))
+            header.name_line = line;
+            if (!lesson_name(value))
                 problem(line, "error_header_value", {{"field", field}, {"problem", "a-z, 0-9, -"}});
             header.name = value;
         } else if (field == "title") {
@@ -128,19 +218,18 @@ private:
         } else if (field == "summary") {
             header.summary = value;
         } else if (field == "scene") {
-            if (value.empty() || value.find('/') != std::string::npos)
+            header.scene_line = line;
+            if (value.empty() || value.find('/') != std::string::npos || value == "." || value == "..")
                 problem(line, "error_header_value", {{"field", field}, {"problem", "article, or a file of lessons/scenes/"}});
             header.scene = value;
         } else if (field == "w") {
             if (!plain_whole(value, 1, 32768, header.w))
                 problem(line, "error_header_value", {{"field", field}, {"problem", "1 … 32768"}});
         } else if (field == "pixels") {
-            header.pixels.clear();
-            static const std::regex pixel(R"(\(?\s*(\d+)\s*,\s*(\d+)\s*\)?)");
-            const std::string rest = std::regex_replace(value, pixel, "");
-            for (auto it = std::sregex_iterator(value.begin(), value.end(), pixel); it != std::sregex_iterator(); ++it)
-                header.pixels.push_back({std::stoi((*it)[1].str()), std::stoi((*it)[2].str())});
-            if (header.pixels.empty() || !trim(rest).empty())
+            pixels_line_ = line;
+            const std::optional<std::vector<LessonPixel>> pixels = pixel_list(value);
+            header.pixels = pixels.value_or(std::vector<LessonPixel>{});
+            if (!pixels)
                 problem(line, "error_header_value", {{"field", field}, {"problem", "I,J I,J …"}});
         } else if (field == "columns") {
             // real/formula for each pixel column, or one for all: the names
@@ -150,7 +239,7 @@ private:
                 R"((float|double|long-double|quad)/(article|stable|fma|geometric))");
             const std::vector<std::string> items = words(value);
             const bool ok = !items.empty() && std::all_of(items.begin(), items.end(), [](const std::string& item) {
-                return std::regex_match(item, column);
+                return item.size() <= 32 && std::regex_match(item, column);
             });
             if (!ok)
                 problem(line, "error_header_value",
@@ -165,6 +254,7 @@ private:
         LessonPart prose;
         bool complained_before_step = false;
         bool fence = false;  // inside ``` … ```: lines are text, never structure
+        std::set<std::string> step_ids;
         const auto flush_prose = [&] {
             // Blank lines around a part carry no meaning.
             while (!prose.text.empty() && prose.text.back() == '\n') prose.text.pop_back();
@@ -202,18 +292,10 @@ private:
             }
             if (line.rfind("## ", 0) == 0) {
                 flush_prose();
-                static const std::regex heading(R"(##\s+\[([A-Za-z0-9-]+)\]\s*(.*))");
-                std::smatch match;
                 LessonStep next;
                 next.line = number;
-                if (std::regex_match(trimmed, match, heading)) {
-                    next.id = match[1];
-                    next.title = trim(match[2].str());
-                } else {
-                    problem(number, "error_step_heading");
-                }
-                for (const LessonStep& other : lesson.steps)
-                    if (!next.id.empty() && other.id == next.id) problem(number, "error_duplicate_step", {{"id", next.id}});
+                if (!step_heading(trimmed, next.id, next.title)) problem(number, "error_step_heading");
+                if (!next.id.empty() && !step_ids.insert(next.id).second) problem(number, "error_duplicate_step", {{"id", next.id}});
                 lesson.steps.push_back(next);
                 step = &lesson.steps.back();
                 continue;
@@ -262,12 +344,13 @@ private:
         }
         flush_prose();
         if (block != nullptr) problem(block->line, "error_unclosed_block");
-        if (lesson.steps.empty()) problem(static_cast<int>(lines.size()), "error_no_steps");
+        if (lesson.steps.empty()) problem(std::max(1, static_cast<int>(lines.size())), "error_no_steps");  // an empty file has line 1
     }
 
     const std::string& file_;
     Language language_;
     std::vector<LessonProblem>& problems_;
+    int pixels_line_ = 0;  // the header's "pixels:" line
 };
 
 bool latex_brace(std::string_view text, std::size_t at) {
@@ -299,7 +382,9 @@ std::vector<Placeholder> find_placeholders(std::string_view text) {
         placeholder.end = close == std::string_view::npos ? text.size() : close + 1;
         const std::string inside(text.substr(k + 1, placeholder.end - k - 1 - (close == std::string_view::npos ? 0 : 1)));
         std::smatch match;
-        if (close == std::string_view::npos || !std::regex_match(inside, match, form) ||
+        // A key is a few letters: a longer "placeholder" is never matched
+        // (std::regex recurses once a character and would overflow the stack).
+        if (close == std::string_view::npos || inside.size() > 64 || !std::regex_match(inside, match, form) ||
             (match[1].matched && (match[3].matched || match[4].matched))) {
             placeholder.valid = false;
             placeholder.name = std::string(text.substr(k, placeholder.end - k));

@@ -35,9 +35,8 @@ std::string Worksheet::blank_text(int number, const std::string& kind, Language 
 std::string Worksheet::blank_for(const PixelTrace& trace, const std::string& key, char component) {
     const VocabularyEntry* entry = view_.vocabulary.find(key);
     const std::string kind = component != 0 ? "scalar" : entry ? entry->kind : "scalar";
-    for (const WorksheetBlank& blank : blanks_)
-        if (blank.i == trace.header.i && blank.j == trace.header.j && blank.key == key && blank.component == component)
-            return blank_text(blank.number, kind, view_.lesson.language);
+    const auto [found, added] = index_.emplace(std::make_tuple(trace.header.i, trace.header.j, key, component), blanks_.size());
+    if (!added) return blank_text(blanks_[found->second].number, kind, view_.lesson.language);
     WorksheetBlank blank;
     blank.number = static_cast<int>(blanks_.size()) + 1;
     blank.i = trace.header.i;
@@ -69,16 +68,17 @@ std::string Worksheet::answer_template() const {
     const std::string heading = message(language, "worksheet_template_heading", {{"file", message(language, "worksheet_file")}});
     std::string out = markdown ? "\n## " + heading + "\n\n" : "\n── " + heading + " ──\n\n";
     out += message(language, "worksheet_template_intro") + "\n\n";
-    std::vector<std::pair<int, int>> pixels;
-    for (const PixelTrace& trace : view_.traces)
-        if (std::find(pixels.begin(), pixels.end(), std::make_pair(trace.header.i, trace.header.j)) == pixels.end())
-            pixels.emplace_back(trace.header.i, trace.header.j);
+    // Each pixel's blanks, gathered once (a lesson may have 10^5 pixels).
+    std::map<std::pair<int, int>, std::vector<const WorksheetBlank*>> by_pixel;
+    for (const WorksheetBlank& blank : blanks_) by_pixel[{blank.i, blank.j}].push_back(&blank);
     std::vector<std::string> lines;
     std::size_t width = 0;
-    for (const auto& [i, j] : pixels) {
-        std::vector<const WorksheetBlank*> mine;
-        for (const WorksheetBlank& blank : blanks_)
-            if (blank.i == i && blank.j == j) mine.push_back(&blank);
+    for (const PixelTrace& trace : view_.traces) {
+        const int i = trace.header.i, j = trace.header.j;
+        const auto found = by_pixel.find({i, j});
+        if (found == by_pixel.end()) continue;
+        std::vector<const WorksheetBlank*> mine = std::move(found->second);
+        by_pixel.erase(found);  // a pixel chosen twice gets one heading
         // In derivation order (the vocabulary's), as the answers are checked.
         const auto order = [this](const WorksheetBlank* blank) {
             for (std::size_t k = 0; k < view_.vocabulary.keys.size(); ++k)

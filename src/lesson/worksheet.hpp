@@ -4,7 +4,9 @@
 // filled in: they are given. lessons/README.md describes what a worksheet shows.
 #pragma once
 
+#include <map>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "lesson/lesson_render.hpp"
@@ -51,6 +53,9 @@ private:
 
     LessonView& view_;
     std::vector<WorksheetBlank> blanks_;
+    // (i, j, key, component) -> the blank's index in blanks_: a lesson of
+    // 10^5 pixels has 10^5 blanks, too many to search one by one.
+    std::map<std::tuple<int, int, std::string, char>, std::size_t> index_;
 };
 
 }  // namespace promyk
