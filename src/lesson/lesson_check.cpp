@@ -69,6 +69,7 @@ void check_translations(const std::vector<Lesson>& lessons, std::vector<LessonPr
         return ids;
     };
     for (const auto& [name, versions] : by_name) {
+        if (name.empty()) continue;  // a lesson without a name is already reported at its header
         // Two files of one language with the same name: only the first would ever run.
         for (std::size_t a = 0; a < versions.size(); ++a)
             for (std::size_t b = 0; b < a; ++b)
