@@ -10,30 +10,13 @@
 
 #include "scene/scene_json.hpp"
 #include "util/errors.hpp"
+#include "util/text.hpp"
 
 namespace promyk::cli {
 
 namespace {
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
-
-// -?(0|[1-9][0-9]*): what a person means by a whole number, and nothing a C
-// library would read otherwise (strtol's base 0 takes 010 as eight).
-bool plain_decimal(const std::string& text) {
-    std::size_t k = text.size() > 0 && text[0] == '-' ? 1 : 0;
-    if (k == text.size()) return false;
-    if (text[k] == '0') return k + 1 == text.size();
-    for (; k < text.size(); ++k)
-        if (!is_digit(text[k])) return false;
-    return true;
-}
-
-std::string trim(const std::string& text) {
-    const auto first = text.find_first_not_of(" \t\r\n");
-    if (first == std::string::npos) return "";
-    const auto last = text.find_last_not_of(" \t\r\n");
-    return text.substr(first, last - first + 1);
-}
 
 // What the user probably meant, written plainly: "010" -> "10",
 // "0x10" -> "16", " 16" -> "16", "1e3" -> "1000"; empty when nothing fits.
@@ -76,7 +59,7 @@ std::vector<int> parse_integers(const std::string& typed, std::size_t count, con
     while (true) {
         const std::size_t comma = text.find(',', start);
         const std::string part = trim(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-        if (!plain_decimal(part) || part.size() > 10)
+        if (!is_plain_decimal(part) || part.size() > 10)
             throw UsageError(fmt::format("{} expects {} (whole numbers in plain decimal), got '{}'", option, form, typed));
         values.push_back(std::stoi(part));
         if (comma == std::string::npos) break;
@@ -97,7 +80,7 @@ void check_inside(int i, int j, int w, const std::string& option) {
 std::optional<std::string> whole_number_problem(const std::string& text, long min, long max) {
     const std::string range = fmt::format("a whole number from {} to {}", min, max);
     if (text.empty()) return fmt::format("needs a value: {}", range);
-    if (!plain_decimal(text)) {
+    if (!is_plain_decimal(text)) {
         const std::string plain = plain_form(text);
         return fmt::format("expects {} written in plain decimal, got '{}'{}", range, text,
                            plain.empty() ? "" : fmt::format("; write {}", plain));

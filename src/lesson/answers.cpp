@@ -12,6 +12,7 @@
 #include "trace/messages.hpp"
 #include "util/errors.hpp"
 #include "util/printable.hpp"
+#include "util/text.hpp"
 
 namespace promyk {
 
@@ -106,13 +107,6 @@ bool same_number(const TypedNumber& a, const TypedNumber& b) {
 }
 
 // --- reading what a student typed -----------------------------------------
-
-std::string trim(std::string_view text) {
-    const std::size_t begin = text.find_first_not_of(" \t\r");
-    if (begin == std::string_view::npos) return "";
-    const std::size_t end = text.find_last_not_of(" \t\r");
-    return std::string(text.substr(begin, end - begin + 1));
-}
 
 // The message quotes what the student typed: printable() here, since a NUL
 // in it would cut the exception's C-string message short.

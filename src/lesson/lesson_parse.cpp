@@ -6,6 +6,7 @@
 #include <set>
 
 #include "lesson/lesson.hpp"
+#include "util/text.hpp"
 #include "trace/messages.hpp"
 #include "util/printable.hpp"
 
@@ -14,13 +15,6 @@ namespace promyk {
 namespace {
 
 const std::vector<std::string_view> header_fields = {"name", "title", "summary", "scene", "w", "pixels", "columns"};
-
-std::string trim(std::string_view text) {
-    const auto first = text.find_first_not_of(" \t\r");
-    if (first == std::string_view::npos) return "";
-    const auto last = text.find_last_not_of(" \t\r");
-    return std::string(text.substr(first, last - first + 1));
-}
 
 std::vector<std::string> split_lines(std::string_view text) {
     if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // a UTF-8 byte order mark
@@ -58,9 +52,7 @@ std::string joined(const std::vector<std::string_view>& items) {
 
 // Whole numbers as a person writes them (no sign games, no leading zeros).
 bool plain_whole(const std::string& text, long min, long max, int& value) {
-    if (text.empty() || text.size() > 9 || !std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; }) ||
-        (text.size() > 1 && text[0] == '0'))
-        return false;
+    if (text.size() > 9 || !is_plain_decimal(text)) return false;
     const long number = std::stol(text);
     if (number < min || number > max) return false;
     value = static_cast<int>(number);

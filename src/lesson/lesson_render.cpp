@@ -1,5 +1,7 @@
 #include "lesson/lesson_render.hpp"
 
+#include "util/text.hpp"
+
 #include <algorithm>
 
 #include <fmt/format.h>
@@ -13,11 +15,6 @@ namespace promyk {
 namespace {
 
 constexpr std::size_t columns = 80;
-
-std::size_t width_of(std::string_view text) {
-    return static_cast<std::size_t>(
-        std::count_if(text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
-}
 
 std::string kind_of(const Vocabulary& vocabulary, const std::string& key) {
     const VocabularyEntry* entry = vocabulary.find(key);
@@ -122,7 +119,7 @@ std::string wrap(const std::string& text, std::size_t indent, std::size_t first_
         const std::string word = text.substr(k, space == std::string::npos ? std::string::npos : space - k);
         k = space == std::string::npos ? text.size() : space + 1;
         if (word.empty()) continue;
-        if (!first_word && used + 1 + width_of(word) > columns) {
+        if (!first_word && used + 1 + display_width(word) > columns) {
             out += '\n' + std::string(indent, ' ');
             used = indent;
         } else if (!first_word) {
@@ -130,7 +127,7 @@ std::string wrap(const std::string& text, std::size_t indent, std::size_t first_
             ++used;
         }
         out += word;
-        used += width_of(word);
+        used += display_width(word);
         first_word = false;
     }
     return out;
@@ -210,7 +207,7 @@ std::string text_values(const LessonView& view, const LessonPart& part) {
                                         value ? cell_text(view, trace, key, *value) : message(language, "not_reached")));
         }
         std::size_t total = 4;
-        for (const std::string& cell : cells) total += width_of(cell) + 4;
+        for (const std::string& cell : cells) total += display_width(cell) + 4;
         if (total <= columns) {
             std::string line = "    ";
             for (std::size_t c = 0; c < cells.size(); ++c) line += (c ? "    " : "") + cells[c];
@@ -233,7 +230,7 @@ std::string text_part(const LessonView& view, const LessonPart& part) {
             for (const PixelTrace& trace : view.traces) {
                 if (!shown_for(part, trace)) continue;
                 const std::string label = "▸ " + pixel_label(view, trace) + ": ";
-                out += label + text_paragraphs(fill(view, part.text, &trace), 2, width_of(label));
+                out += label + text_paragraphs(fill(view, part.text, &trace), 2, display_width(label));
             }
             return out;
         }

@@ -7,19 +7,13 @@
 #include <fmt/format.h>
 
 #include "trace/messages.hpp"
+#include "util/text.hpp"
 
 namespace promyk {
 
 namespace {
 
 constexpr std::size_t columns = 80;
-
-// Terminal columns taken by UTF-8 text: one per code point (the vocabulary
-// uses no wide or combining characters).
-std::size_t display_width(const std::string& text) {
-    return static_cast<std::size_t>(
-        std::count_if(text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
-}
 
 std::string pad(const std::string& text, std::size_t width) {
     return text + std::string(width - std::min(width, display_width(text)), ' ');
