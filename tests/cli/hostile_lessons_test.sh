@@ -6,11 +6,7 @@
 # usage: hostile_lessons_test.sh PROMYK WORKDIR
 set -u
 promyk=$1 dir=$2 here=$(cd "$(dirname "$0")" && pwd)
-rm -rf "$dir" && mkdir -p "$dir" && cd "$dir" || exit 1
-export LANG=C.UTF-8 LC_ALL= LC_MESSAGES=
-passed=0 failed=0
-ok() { passed=$((passed + 1)); }
-bad() { echo "FAIL: $*"; failed=$((failed + 1)); }
+. "$(dirname "$0")/lib.sh"
 
 # expect NAME CODE PATTERN -- ARGS...: exit CODE within 10 s, stderr matching
 # PATTERN (grep -E), and no control character but newline and tab in the output.
@@ -130,5 +126,4 @@ sed -i 's/^C = .*/C = 6.4/' nul.txt
 "$promyk" lesson x --lessons many_pixels --lang en | head -c 10 >/dev/null; code=${PIPESTATUS[0]}
 [ "$code" = 141 ] && ok || bad "lesson | head -c 10: exit $code"
 
-echo "$passed passed, $failed failed"
-[ "$failed" = 0 ]
+summary

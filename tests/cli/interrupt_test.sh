@@ -15,16 +15,23 @@ fresh() { rm -rf "$dir" && mkdir -p "$dir" && cd "$dir" || exit 1; }
 fail() { echo "$1"; cat err.txt; failed=$((failed + 1)); }
 # The files left in the folder besides the test's own.
 left() { ls -A | grep -vE '^(out|err)\.txt$|^scene\.json$'; }
+# interrupt SIGNAL SECONDS COMMAND...: runs promyk COMMAND in the background,
+# sends SIGNAL after SECONDS, and sets `code` to its exit status.
+interrupt() {
+    local signal=$1 delay=$2
+    shift 2
+    "$promyk" "$@" >out.txt 2>err.txt &
+    local pid=$!
+    sleep "$delay"
+    kill -s "$signal" "$pid"
+    wait "$pid"
+    code=$?
+}
 
 for signal in INT TERM HUP; do
     fresh
     # The largest pane (about 6 s in a release build): still running when the signal comes.
-    "$promyk" render --w 32768 -o big.png --traces big.jsonl --trace-region 0,0,32767,3 >out.txt 2>err.txt &
-    pid=$!
-    sleep 0.5
-    kill -s "$signal" "$pid"
-    wait "$pid"
-    code=$?
+    interrupt "$signal" 0.5 render --w 32768 -o big.png --traces big.jsonl --trace-region 0,0,32767,3
     expected=$((128 + $(kill -l "$signal")))
     before=$failed
     [ "$code" = "$expected" ] || fail "render SIG$signal: exit $code, expected $expected"
@@ -57,12 +64,7 @@ before=$failed
 for signal in INT TERM; do
     fresh
     mkfifo scene.json
-    "$promyk" trace --scene scene.json >out.txt 2>err.txt &
-    pid=$!
-    sleep 0.3
-    kill -s "$signal" "$pid"
-    wait "$pid"
-    code=$?
+    interrupt "$signal" 0.3 trace --scene scene.json
     expected=$((128 + $(kill -l "$signal")))
     before=$failed
     [ "$code" = "$expected" ] || fail "scene FIFO SIG$signal: exit $code, expected $expected"
@@ -75,12 +77,7 @@ done
 # The same for render, which must not have created its image's temporary yet.
 fresh
 mkfifo scene.json
-"$promyk" render --scene scene.json -o x.png >out.txt 2>err.txt &
-pid=$!
-sleep 0.3
-kill -s INT "$pid"
-wait "$pid"
-code=$?
+interrupt INT 0.3 render --scene scene.json -o x.png
 before=$failed
 [ "$code" = 130 ] || fail "render scene FIFO SIGINT: exit $code, expected 130"
 [ -z "$(left)" ] || fail "render scene FIFO SIGINT: files left behind: $(left)"

@@ -5,11 +5,7 @@
 # usage: lesson_files_test.sh PROMYK WORKDIR
 set -u
 promyk=$1 dir=$2
-rm -rf "$dir" && mkdir -p "$dir" && cd "$dir" || exit 1
-export LANG=C.UTF-8 LC_ALL= LC_MESSAGES=
-passed=0 failed=0
-ok() { passed=$((passed + 1)); }
-bad() { echo "FAIL: $*"; failed=$((failed + 1)); }
+. "$(dirname "$0")/lib.sh"
 
 "$promyk" lesson --dump mine 2>err.txt && [ -f mine/pl/03-sphere.md ] && [ -f mine/en/05-program.md ] &&
   [ -f mine/messages.json ] && [ -f mine/scenes/article.json ] && ok || bad "--dump writes the lessons"
@@ -36,5 +32,4 @@ sed -i 's/^## \[exercise\]/## [cwiczenie]/' mine/pl/01-vectors.md
 # Step mode waits for Enter: with three lines of input it shows three steps and stops waiting at the end of input.
 printf '\n\n\n' | "$promyk" lesson vectors --step --lang en >out.txt 2>err.txt && grep -q "\[Enter: next step\]" err.txt &&
   [ "$(grep -c '^── Step' out.txt)" = 7 ] && ok || bad "--step: $(grep -c '^── Step' out.txt) steps"
-echo "$passed passed, $failed failed"
-[ "$failed" = 0 ]
+summary

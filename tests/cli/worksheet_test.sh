@@ -5,11 +5,7 @@
 # usage: worksheet_test.sh PROMYK WORKDIR
 set -u
 promyk=$1 dir=$2
-rm -rf "$dir" && mkdir -p "$dir" && cd "$dir" || exit 1
-export LANG=C.UTF-8 LC_ALL= LC_MESSAGES=
-passed=0 failed=0
-ok() { passed=$((passed + 1)); }
-bad() { echo "FAIL: $*"; failed=$((failed + 1)); }
+. "$(dirname "$0")/lib.sh"
 
 cat >right.txt <<'END'
 # pixel (3, 4), Polish and English styles mixed
@@ -82,5 +78,4 @@ awk '
 [ "$code" = 0 ] && grep -q "wrong: 0; left blank: 0" out.txt && ok || bad "the worksheet's form filled from its key: exit $code; $(cat filled.txt out.txt err.txt)"
 grep -q "\.\.\.\.\.\.\.\.\.\.(1)" sheet.txt && ! grep -q "^Answer:" sheet.txt && ok || bad "the worksheet has blanks and no answers"
 
-echo "$passed passed, $failed failed"
-[ "$failed" = 0 ]
+summary
