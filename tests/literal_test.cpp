@@ -75,7 +75,7 @@ promyk_literal::LiteralScene literal_scene(const promyk::Scene& scene) {
     s.r = sphere.r;
     s.x_L = light.L.x, s.y_L = light.L.y, s.z_L = light.L.z;
     s.I = light.I;
-    s.background = scene.background;
+    s.background = scene.background.x;
     return s;
 }
 
@@ -176,8 +176,8 @@ TEST_CASE("the literal transcription holds the article's numbers", "[literal]") 
     CHECK(same_bits(scene.spheres[0].r, literal.r));
     CHECK(same_bits(scene.lights[0].L, Vec3d{literal.x_L, literal.y_L, literal.z_L}));
     CHECK(same_bits(scene.lights[0].I, literal.I));
-    CHECK(same_bits(scene.background, 0.5));  // the article's "return 1/2"
-    CHECK(same_bits(literal.background, scene.background));
+    CHECK(same_bits(scene.background.x, 0.5));  // the article's "return 1/2"
+    CHECK(same_bits(literal.background, scene.background.x));
 }
 
 namespace {
@@ -264,9 +264,9 @@ TEST_CASE("the yardstick's pixels with delta or D exactly 0 are where the scene 
         if (e.delta_zero) {
             CHECK(same_bits(v.Delta, 0.0));
             CHECK(v.returned == LiteralReturn::half);
-            CHECK(same_bits(t[index], scene.background));
+            CHECK(same_bits(t[index], scene.background.x));
             CHECK(trace.branch == Branch::miss);
-            CHECK(same_bits(trace.result, scene.background));
+            CHECK(same_bits(trace.result, scene.background.x));
         } else {
             CHECK(v.Delta > 0);
             CHECK(same_bits(v.D, 0.0));

@@ -398,7 +398,7 @@ void check_scene_header(const json& s, const promyk::Scene& scene) {
     }
     CHECK(same_bits(parse_double(s.at("r")), scene.spheres.at(0).r));
     CHECK(same_bits(parse_double(s.at("I")), scene.lights.at(0).I));
-    CHECK(same_bits(parse_double(s.at("background")), scene.background));
+    CHECK(same_bits(parse_double(s.at("background")), scene.background.x));
 }
 
 std::string where_text(const RefPixel& p) {
@@ -588,7 +588,7 @@ TEST_CASE("the scenes reference describes its scene files and covers what it mus
         const Vec3d& S = scene.spheres.at(0).S;
         if (S.x != 0 && S.y != 0 && S.z != 0 && S.x != S.y && S.y != S.z && S.x != S.z) off_axis = true;
         if (scene.lights.at(0).I != 1) I_not_1 = true;
-        if (scene.background != 0.5) background_not_half = true;
+        if (scene.background.x != 0.5) background_not_half = true;
         if (scene.z_E != 2) z_E_not_2 = true;
     }
     CHECK(off_axis);

@@ -62,7 +62,7 @@ TEST_CASE("every field of a scene changes its hash", "[scene-hash]") {
     const std::vector<Change> changes = {
         {"name", [](Scene& s) { s.name = "articlf"; }},
         {"z_E", [](Scene& s) { s.z_E = 3; }},
-        {"background", [](Scene& s) { s.background = 0.25; }},
+        {"background", [](Scene& s) { s.background = {0.25, 0.25, 0.25}; }},
         {"S.x", [](Scene& s) { s.spheres[0].S.x = 0.125; }},
         {"S.y", [](Scene& s) { s.spheres[0].S.y = 0.125; }},
         {"S.z", [](Scene& s) { s.spheres[0].S.z = 3.25; }},
@@ -129,5 +129,5 @@ TEST_CASE("the scene writer writes a hand-written scene file back as it was writ
     CHECK(far.spheres.at(0).r == 1.3);
     CHECK(far.lights.at(0).L.x == -2.5);
     CHECK(far.lights.at(0).I == 3.0);
-    CHECK(far.background == 0.2);
+    CHECK(far.background.x == 0.2);
 }

@@ -53,7 +53,7 @@ void check_same_number(double a, double b) {
 void check_same_scene(const Scene& a, const Scene& b) {
     CHECK(a.name == b.name);
     check_same_number(a.z_E, b.z_E);
-    check_same_number(a.background, b.background);
+    check_same_number(a.background.x, b.background.x);
     REQUIRE(a.spheres.size() == b.spheres.size());
     for (std::size_t k = 0; k < a.spheres.size(); ++k) {
         check_same_number(a.spheres[k].S.x, b.spheres[k].S.x);
@@ -107,7 +107,7 @@ TEST_CASE("the article's scene file loads equal to the built-in article scene", 
     CHECK(loaded.source == article_path);
     check_same_scene(loaded, article);
     CHECK(loaded.z_E == 2);
-    CHECK(loaded.background == 0.5);
+    CHECK(loaded.background.x == 0.5);
     REQUIRE(loaded.spheres.size() == 1);
     CHECK(loaded.spheres[0].S.x == 0);
     CHECK(loaded.spheres[0].S.y == 0);
@@ -133,7 +133,7 @@ TEST_CASE("fields left out take their documented defaults", "[scene]") {
         parse_scene(R"({"spheres": [{"S": [0, 0, 3], "r": 1}], "lights": [{"L": [1, 2, 3]}]})", "test.json");
     CHECK(scene.name == "untitled");
     CHECK(scene.z_E == 2);
-    CHECK(scene.background == 0.5);
+    CHECK(scene.background.x == 0.5);
     CHECK(scene.source == "test.json");
     REQUIRE(scene.lights.size() == 1);
     CHECK(scene.lights[0].I == 1);
@@ -298,7 +298,7 @@ TEST_CASE("scene_to_json reads back to the same scene", "[scene]") {
     Scene odd = promyk::article_scene();
     odd.name = "Śledzenie \"promieni\" \\ ☀";
     odd.z_E = 0.1 + 0.2;
-    odd.background = 5e-324;
+    odd.background = {5e-324, 5e-324, 5e-324};
     odd.spheres[0].S = {-0.0, 1e-300, 123456789012345678.0};
     odd.spheres[0].r = 1.0 / 3;
     odd.lights[0].L = {std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(), -0.0};
@@ -316,7 +316,7 @@ TEST_CASE("scene_to_json reads back to the same scene", "[scene]") {
         Scene scene;
         scene.name = "random " + std::to_string(n);
         scene.z_E = std::abs(any()) + 1e-300;
-        scene.background = std::uniform_real_distribution<double>(0, 1)(random);
+        { const double grey = std::uniform_real_distribution<double>(0, 1)(random); scene.background = {grey, grey, grey}; }
         const promyk::Vec3d S{any(), any(), any()};
         const double length = std::sqrt(promyk::length_squared(S));
         scene.spheres = {promyk::Sphere{S, length * std::uniform_real_distribution<double>(0.01, 0.9)(random)}};

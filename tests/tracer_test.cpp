@@ -57,7 +57,7 @@ Scene one_sphere_scene(double z_E, Vec3d S, double r, Vec3d L, double I, double 
     scene.z_E = z_E;
     scene.spheres = {Sphere{S, r}};
     scene.lights = {Light{L, I}};
-    scene.background = background;
+    scene.background = {background, background, background};
     return scene;
 }
 
@@ -74,7 +74,7 @@ promyk_literal::LiteralScene literal_of(const Scene& scene) {
     s.r = scene.spheres[0].r;
     s.x_L = scene.lights[0].L.x, s.y_L = scene.lights[0].L.y, s.z_L = scene.lights[0].L.z;
     s.I = scene.lights[0].I;
-    s.background = scene.background;
+    s.background = scene.background.x;
     return s;
 }
 
@@ -108,12 +108,12 @@ TEST_CASE("a ray tangent to the sphere (delta exactly 0) misses and returns the 
         CHECK(scalar(trace, Key::SS) == c.SS);
         CHECK(same_bits(scalar(trace, Key::delta), 0.0));
         CHECK(trace.branch == Branch::miss);  // the article: if delta <= 0 then return 1/2
-        CHECK(same_bits(trace.result, c.scene.background));
+        CHECK(same_bits(trace.result, c.scene.background.x));
         CHECK_FALSE(has_step(trace, Key::t));
         NullRecorder none;
         const PixelResult<double> untraced = trace_pixel_ray(article_world(c.scene), c.w, c.i, c.j, none);
         CHECK(untraced.branch == Branch::miss);
-        CHECK(same_bits(untraced.I_P, c.scene.background));
+        CHECK(same_bits(untraced.I_P, c.scene.background.x));
     }
 }
 

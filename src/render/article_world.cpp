@@ -22,7 +22,7 @@ ArticleWorld<double> article_world(const Scene& scene) {
         throw InputError(scene.source, "/spheres/0",
                          "the eye (at the origin) is inside or on the sphere; the article's program does not "
                          "handle that");
-    return {scene.z_E, sphere.S, sphere.r, light.L, light.I, scene.background};
+    return {scene.z_E, sphere.S, sphere.r, light.L, light.I, scene.background.x};
 }
 
 }  // namespace promyk

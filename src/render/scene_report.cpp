@@ -19,7 +19,7 @@ struct CountingSink final : RenderSink {
 SceneReport report_scene(const Scene& scene, int probe_w) {
     SceneReport report;
     report.contents.push_back(fmt::format("name \"{}\", pane at z_E = {}, background {}", scene.name, scene.z_E,
-                                          scene.background));
+                                          scene.background.x));
     for (std::size_t k = 0; k < scene.spheres.size(); ++k)
         report.contents.push_back(fmt::format("sphere {}: S = {}, r = {}", k + 1, point_text(scene.spheres[k].S),
                                               scene.spheres[k].r));

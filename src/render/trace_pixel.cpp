@@ -24,7 +24,7 @@ TraceHeader trace_header(const Scene& scene, int w) {
         header.given.push_back({"L", light.L});
         header.given.push_back({"I", light.I});
     }
-    header.given.push_back({"background", scene.background});
+    header.given.push_back({"background", scene.background.x});
     header.w = w;
     header.z_E = scene.z_E;
     return header;

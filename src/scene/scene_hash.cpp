@@ -11,7 +11,7 @@ namespace {
 // The scene written as one canonical line: every number as its shortest
 // round-trip text, so two scenes hash alike exactly when they render alike.
 std::string canonical_text(const Scene& scene) {
-    std::string text = fmt::format("name={};z_E={};background={}", scene.name, scene.z_E, scene.background);
+    std::string text = fmt::format("name={};z_E={};background={}", scene.name, scene.z_E, scene.background.x);
     for (const Sphere& s : scene.spheres) text += fmt::format(";sphere=S({},{},{}),r({})", s.S.x, s.S.y, s.S.z, s.r);
     for (const Light& l : scene.lights) text += fmt::format(";light=L({},{},{}),I({})", l.L.x, l.L.y, l.L.z, l.I);
     return text;

@@ -387,11 +387,12 @@ public:
                 fail("/z_E", fmt::format("z_E (the pane's distance from the eye) must be > 0, got {}", scene.z_E));
         }
         if (const auto it = root.find("background"); it != root.end()) {
-            scene.background = read_number(*it, "/background", "background");
-            if (!(scene.background >= 0 && scene.background <= 1))
+            const double grey = read_number(*it, "/background", "background");
+            scene.background = {grey, grey, grey};
+            if (!(grey >= 0 && grey <= 1))
                 fail("/background",
                      fmt::format("background (the intensity of a ray that misses) must be between 0 and 1, got {}",
-                                 scene.background));
+                                 grey));
         }
         const Json& spheres = read_array(root, "spheres", "sphere");
         for (std::size_t k = 0; k < spheres.size(); ++k)
@@ -606,7 +607,7 @@ Scene parse_scene(std::string_view text, const std::string& source) {
 std::string scene_to_json(const Scene& scene) {
     const std::string name = Json(scene.name).dump(-1, ' ', false, Json::error_handler_t::replace);
     std::string text = fmt::format("{{\n  \"name\": {},\n  \"z_E\": {},\n  \"background\": {},\n  \"spheres\": [", name,
-                                   number_text(scene.z_E), number_text(scene.background));
+                                   number_text(scene.z_E), number_text(scene.background.x));
     for (std::size_t k = 0; k < scene.spheres.size(); ++k)
         text += fmt::format("{}\n    {{\"S\": {}, \"r\": {}}}", k == 0 ? "" : ",", vec3_text(scene.spheres[k].S),
                             number_text(scene.spheres[k].r));
