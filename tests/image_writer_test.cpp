@@ -1,5 +1,5 @@
-// Image output: PNG and PGM files read back byte for byte, and the promise
-// that a file is written completely or not at all.
+// Image output: PNG, PGM and PPM files read back byte for byte, grey and RGB,
+// and the promise that a file is written completely or not at all.
 #include <png.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -112,11 +112,18 @@ TEST_CASE("image format follows the extension, in any case", "[image]") {
     CHECK(image_format_for_path("out/A.PNG") == ImageFormat::png);
     CHECK(image_format_for_path("x.Pgm") == ImageFormat::pgm);
     CHECK(image_format_for_path("dir.png/x.pgm") == ImageFormat::pgm);
+    CHECK(image_format_for_path("x.ppm") == ImageFormat::ppm);
+    CHECK(image_format_for_path("out/X.PPM") == ImageFormat::ppm);
+    CHECK(image_format_for_path("x.pPm") == ImageFormat::ppm);
+    CHECK(image_format_for_path("a.ppm/b.png") == ImageFormat::png);
+    CHECK_THROWS_AS(image_format_for_path("x.pnm"), UsageError);
+    CHECK_THROWS_AS(image_format_for_path("x.pbm"), UsageError);
+    CHECK_THROWS_AS(image_format_for_path("x.ppm.bak"), UsageError);
     CHECK_THROWS_AS(image_format_for_path("dir.png/x"), UsageError);
     CHECK_THROWS_AS(image_format_for_path("x.png.bak"), UsageError);
     CHECK_THROWS_AS(image_format_for_path("png"), UsageError);
     CHECK_THROWS_AS(image_format_for_path(""), UsageError);
-    CHECK_THROWS_WITH(image_format_for_path("x.jpg"), "unsupported image extension 'x.jpg': use .png or .pgm");
+    CHECK_THROWS_WITH(image_format_for_path("x.jpg"), "unsupported image extension 'x.jpg': use .png, .pgm or .ppm");
 }
 
 TEST_CASE("an unsupported extension creates no file", "[image]") {
