@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "lesson/answers.hpp"
+#include "lesson/lesson_render.hpp"
 #include "render/trace_pixel.hpp"
 #include "util/errors.hpp"
 
@@ -263,4 +264,58 @@ TEST_CASE("JSON answers: a flat object with numbers as typed, and a whole trace"
     std::string json;
     append_trace_json(json, trace_pixel(article_scene(), 16, 3, 4));
     CHECK(fault_of(json) == "/w");
+}
+
+TEST_CASE("answers name values inside groups: sphere[1].t = 1.85, light[0].sphere[0].s_1, and a whole general trace",
+          "[answers]") {
+    Scene scene;
+    scene.name = "shadows";
+    scene.spheres = {Sphere{{0, 0, 3.2}, 1.1}, Sphere{{0.9, 0.4, 4.6}, 1.3}};
+    scene.planes = {Plane{{0, -1.1, 0}, {0, 1, 0}}};
+    scene.lights = {Light{{1.5, 3, 1}, 1}};
+    scene.shadows = true;
+    const std::vector<PixelTrace> traces = {trace_pixel(scene, 8, 7, 2), trace_pixel(scene, 8, 3, 4)};
+    REQUIRE(traces[0].branch == Branch::shadowed);
+    const auto value_of = [&](const PixelTrace& trace, const std::string& path) { return std::get<double>(*lesson_value(trace, path)); };
+    const double s1 = value_of(traces[0], "light[0].sphere[0].s_1");
+    const double t1 = value_of(traces[1], "sphere[1].t");
+    const std::string text = fmt::format(
+        "[7,2]\nlight[0].sphere[0].s_1 = {}\nplane[0].t = 1,2571\nt = 1.2571\nlight[0].K.y = 4,1\n"
+        "[3,4]\nsphere[1].t = {}\nsphere[0].t = 9\nlight[0].plane[0].s =\n",
+        written(s1, 4, Language::en), written(t1, 3, Language::pl));
+    const std::vector<AnswerCheck> checks =
+        check_answers(parse_answers(text, "a.txt", builtin_vocabulary(), Language::en, {7, 2}, 8), traces);
+    REQUIRE(checks.size() == 7);
+    // In the order of the derivation: the objects' tests, then the nearest, then the light.
+    CHECK(checks[0].answer.key == "plane[0].t");
+    CHECK(checks[1].answer.key == "t");
+    CHECK(checks[2].answer.key == "light[0].K");
+    CHECK(checks[2].answer.component == 'y');
+    CHECK(checks[3].answer.key == "light[0].sphere[0].s_1");
+    for (std::size_t k = 0; k < 4; ++k) CHECK(checks[k].verdict == Verdict::right);
+    CHECK(checks[4].answer.key == "sphere[0].t");
+    CHECK(checks[4].verdict == Verdict::wrong);
+    CHECK(checks[5].answer.key == "sphere[1].t");
+    CHECK(checks[5].verdict == Verdict::right);
+    CHECK(checks[6].verdict == Verdict::blank);
+    const std::string report = answers_report(checks, traces, builtin_vocabulary(), Language::en);
+    INFO(report);
+    CHECK(report.find("✓ s₁ (light[0].sphere[0].s_1) = " + written(s1, 4, Language::en) + ": right") != std::string::npos);
+    // A word is shown filled in: there is nothing to check.
+    CHECK(fault_of("nearest = sphere 0\n") == "line 1");
+    CHECK(fault_of("cone[0].t = 1\n") == "line 1");
+    CHECK(fault_of("sphere[0].D = 1\n") == "line 1");     // a sphere's test has no D
+    CHECK(fault_of("{\"sphere[0].t\": 1.06}").empty());
+    // A whole trace of a general scene: every number, in its group, is right.
+    for (const PixelTrace& trace : traces) {
+        std::string json;
+        append_trace_json(json, trace);
+        const std::vector<PixelAnswers> whole = parse_answers(json, "t.json", builtin_vocabulary(), Language::en, {0, 0}, 8);
+        REQUIRE(whole.size() == 1);
+        std::size_t numbers = 1;  // and I_P
+        for (const Step& step : trace.steps) numbers += std::holds_alternative<std::string>(step.value) ? 0 : 1;
+        CHECK(whole[0].answers.size() == numbers);
+        const std::vector<AnswerCheck> all = check_answers(whole, traces);
+        CHECK(std::all_of(all.begin(), all.end(), [](const AnswerCheck& c) { return c.verdict == Verdict::right; }));
+    }
 }

@@ -9,6 +9,7 @@
 #include "lesson/lesson_check.hpp"
 #include "lesson/lesson_library.hpp"
 #include "lesson/lesson_render.hpp"
+#include "trace/keys.hpp"
 #include "trace/messages.hpp"
 #include "render/trace_pixel.hpp"
 
@@ -204,7 +205,10 @@ TEST_CASE("the built-in lessons pass the check and run for a miss, a dark and a 
     const LessonLibrary library;
     std::vector<LessonProblem> problems;
     const std::vector<Lesson> lessons = library.lessons(problems);
-    for (const Lesson& lesson : lessons) check_lesson(lesson, builtin_vocabulary(), problems);
+    for (const Lesson& lesson : lessons) {
+        const Scene scene = library.scene(lesson.header.scene);
+        check_lesson(lesson, builtin_vocabulary(), problems, &scene);
+    }
     check_translations(lessons, problems);
     for (const LessonProblem& problem : problems) FAIL_CHECK(problem.file << ":" << problem.line << ": " << problem.message);
     for (const Lesson& lesson : lessons) {
@@ -235,7 +239,7 @@ TEST_CASE("the built-in lessons name every quantity of the vocabulary, and each 
             bool every_pixel = false;
             for (const LessonStep& step : lesson.steps) {
                 for (const LessonPart& part : step.parts) {
-                    for (const std::string& key : part.keys) named.insert(key);
+                    for (const std::string& key : part.keys) named.insert(path_key(key));
                     for (const Placeholder& placeholder : find_placeholders(part.text)) named.insert(placeholder.name);
                     if (part.kind == PartKind::block && part.branches.empty()) every_pixel = true;
                     branches.insert(part.branches.begin(), part.branches.end());
@@ -292,5 +296,202 @@ TEST_CASE("every built-in lesson ends with an exercise and its answer", "[lesson
         REQUIRE_FALSE(lesson.steps.empty());
         CHECK(lesson.steps.back().id == "exercise");
         CHECK(has_answers(lesson.steps.back()));
+    }
+}
+
+// --- groups: several objects and lights ------------------------------------
+
+namespace {
+
+// lessons/scenes/two_spheres.json, built here so that the test does not
+// depend on the scene loader.
+Scene two_spheres_scene() {
+    Scene scene;
+    scene.name = "two spheres";
+    scene.spheres = {Sphere{{-0.5, -0.2, 3.2}, 0.9}, Sphere{{0.9, 0.4, 4.6}, 1.3}};
+    scene.lights = {Light{{1.5, 1, 1}, 1}};
+    return scene;
+}
+
+// lessons/scenes/shadows.json: a sphere over a floor, a light above, shadows.
+Scene shadows_scene() {
+    Scene scene;
+    scene.name = "shadows";
+    scene.spheres = {Sphere{{0, 0, 3.2}, 1.1}};
+    scene.planes = {Plane{{0, -1.1, 0}, {0, 1, 0}}};
+    scene.lights = {Light{{1.5, 3, 1}, 1}};
+    scene.shadows = true;
+    return scene;
+}
+
+// A step's value by its groups: the trace's own record, not lesson_value.
+const StepValue* step_in(const PixelTrace& trace, const std::vector<std::pair<std::string, int>>& groups, Key key) {
+    for (const Step& step : trace.steps) {
+        if (step.key != key) continue;
+        std::vector<std::pair<std::string, int>> chain;
+        for (int g = step.group; g >= 0; g = trace.groups[static_cast<std::size_t>(g)].parent)
+            chain.insert(chain.begin(), {trace.groups[static_cast<std::size_t>(g)].kind, trace.groups[static_cast<std::size_t>(g)].index});
+        if (chain == groups) return &step.value;
+    }
+    return nullptr;
+}
+
+std::string render_first_step(const std::string& body, const Scene& scene, const std::vector<std::pair<int, int>>& pixels,
+                              Language language) {
+    std::vector<LessonProblem> problems;
+    const Lesson lesson = parse_lesson(with_body(body), "x.md", language, problems);
+    check_lesson(lesson, builtin_vocabulary(), problems, &scene);
+    for (const LessonProblem& problem : problems) FAIL_CHECK(problem.line << ": " << problem.message);
+    LessonView view{lesson, builtin_vocabulary(), {}, scene.name, 8};
+    for (const auto& [i, j] : pixels) view.traces.push_back(trace_pixel(scene, 8, i, j));
+    return render_step(view, 0);
+}
+
+}  // namespace
+
+TEST_CASE("placeholders name values inside groups: {sphere[1].t}, {light[0].sphere[1].delta_s:4}", "[lesson]") {
+    const std::vector<Placeholder> found =
+        find_placeholders("{sphere[1].t} {light[0].sphere[1].delta_s:4} {light[0].K.x:3} {symbol:light[0].D} {t} {sphere[].t} {sphere[1]t}");
+    REQUIRE(found.size() == 7);
+    CHECK(found[0].name == "t");
+    CHECK(found[0].path == "sphere[1].t");
+    CHECK(found[1].name == "delta_s");
+    CHECK(found[1].path == "light[0].sphere[1].delta_s");
+    CHECK(found[1].decimals == 4);
+    CHECK(found[2].path == "light[0].K");
+    CHECK(found[2].component == 'x');
+    CHECK(found[2].decimals == 3);
+    CHECK(found[3].symbol);
+    CHECK(found[3].name == "D");
+    CHECK(found[4].path == "t");
+    CHECK_FALSE(found[5].valid);
+    CHECK_FALSE(found[6].valid);
+    const std::optional<ValuePath> path = parse_value_path("light[0].plane[12].NK");
+    REQUIRE(path);
+    REQUIRE(path->groups.size() == 2);
+    CHECK(path->groups[1].kind == "plane");
+    CHECK(path->groups[1].index == 12);
+    CHECK(path->key == "NK");
+    CHECK_FALSE(parse_value_path("light[0]."));
+    CHECK_FALSE(parse_value_path("light[1234567].D"));
+    CHECK(path_key("light[0].sphere[1].delta_s") == "delta_s");
+}
+
+TEST_CASE("a placeholder in a group shows that group's value; {t} is the top level's; words are translated", "[lesson]") {
+    const Scene scene = two_spheres_scene();
+    // (3, 4): both spheres are hit and sphere 0 is nearer; (2, 5): only sphere 1.
+    const PixelTrace both = trace_pixel(scene, 8, 3, 4);
+    REQUIRE(std::get<std::string>(*step_in(both, {}, Key::nearest)) == "sphere 0");
+    const double t0 = std::get<double>(*step_in(both, {{"sphere", 0}}, Key::t));
+    const double t1 = std::get<double>(*step_in(both, {{"sphere", 1}}, Key::t));
+    REQUIRE(t0 < t1);
+    const double D = std::get<double>(*step_in(both, {{"light", 0}}, Key::D));
+    for (const Language language : {Language::en, Language::pl}) {
+        const std::string text = render_first_step(
+            "## [a] A\n\nS0 = {sphere[0].S}, r1 = {sphere[1].r}, L0 = {light[0].L}\n\n"
+            "::: lit\n<{i},{j}> t0={sphere[0].t} t1={sphere[1].t} t={t} D={light[0].D:5} K.x={light[0].K.x:3} "
+            "nearest={nearest} found1={sphere[1].found}\n:::\n",
+            scene, {{3, 4}, {2, 5}}, language);
+        INFO(text);
+        // The block is reflowed to 80 columns: compare with single spaces.
+        const std::string flat = std::regex_replace(text, std::regex(R"(\s+)"), " ");
+        CHECK(flat.find("t0=" + number_text(t0, language) + " ") != std::string::npos);
+        CHECK(flat.find("t1=" + number_text(t1, language) + " ") != std::string::npos);
+        CHECK(flat.find("t=" + number_text(t0, language) + " ") != std::string::npos);  // the nearer one
+        CHECK(flat.find("D=" + number_text(D, language, 5)) != std::string::npos);
+        const Vec3d K = std::get<Vec3d>(*step_in(both, {{"light", 0}}, Key::K));
+        CHECK(flat.find("K.x=" + number_text(K.x, language, 3)) != std::string::npos);
+        CHECK(flat.find("nearest=" + word_text(language, "sphere 0")) != std::string::npos);
+        CHECK(flat.find(language == Language::pl ? "nearest=kula 0" : "nearest=sphere 0") != std::string::npos);
+        CHECK(flat.find("found1=" + word_text(language, "near")) != std::string::npos);
+        CHECK(flat.find("r1 = " + number_text(1.3, language)) != std::string::npos);
+        CHECK(flat.find(language == Language::pl ? "S0 = (−0,5; −0,2; 3,2)" : "S0 = (-0.5, -0.2, 3.2)") != std::string::npos);
+        // (2, 5) misses sphere 0: its t0 is not reached, its t is sphere 1's.
+        const PixelTrace only = trace_pixel(scene, 8, 2, 5);
+        CHECK(flat.find("<2,5> t0=— t1=" + number_text(std::get<double>(*step_in(only, {{"sphere", 1}}, Key::t)), language)) !=
+              std::string::npos);
+    }
+}
+
+TEST_CASE("value tables take paths, and a shadow ray's tests are nested in their light", "[lesson]") {
+    const Scene scene = shadows_scene();
+    const PixelTrace shadowed = trace_pixel(scene, 8, 7, 2);
+    REQUIRE(shadowed.branch == Branch::shadowed);
+    const double s1 = std::get<double>(*step_in(shadowed, {{"light", 0}, {"sphere", 0}}, Key::s_1));
+    const std::string text = render_first_step(
+        "## [a] A\n= light[0].sphere[0].s_1 light[0].blocker plane[0].NE\n\n::: shadowed\n"
+        "s1={light[0].sphere[0].s_1:4} blocker={light[0].blocker}\n:::\n",
+        scene, {{7, 2}, {7, 6}}, Language::en);
+    INFO(text);
+    CHECK(text.find("(7, 2): " + number_text(s1, Language::en)) != std::string::npos);
+    CHECK(text.find("(7, 6): —") != std::string::npos);  // the light is not blocked: the ray missed the sphere
+    CHECK(text.find("s₁ (light 0, sphere 0) = ") != std::string::npos);  // the row says whose s₁ it is
+    CHECK(text.find("s1=" + number_text(s1, Language::en, 4) + " blocker=sphere 0") != std::string::npos);
+    CHECK(text.find("(7, 2): sphere 0") != std::string::npos);
+    CHECK(text.find("(7, 6): none") != std::string::npos);
+}
+
+TEST_CASE("a path that names no group of the trace is reported at its line, in the lesson's language", "[lesson]") {
+    const Scene scene = two_spheres_scene();
+    const auto problems_with_scene = [&](const std::string& body, Language language = Language::en) {
+        std::vector<LessonProblem> problems;
+        const Lesson lesson = parse_lesson(with_body(body), "x.md", language, problems);
+        check_lesson(lesson, builtin_vocabulary(), problems, &scene);
+        return problems;
+    };
+    const auto first = [&](const std::string& body) {
+        const std::vector<LessonProblem> problems = problems_with_scene(body);
+        return problems.empty() ? std::make_pair(0, std::string()) : std::make_pair(problems.front().line, problems.front().message);
+    };
+    CHECK(first("## [a] A\n::: pixel\n{sphere[1].t} {light[0].sphere[1].delta_s} {light[0].K.x:2}\n:::\n").first == 0);
+    CHECK(first("## [a] A\n= sphere[0].t sphere[1].t nearest light[0].D\n").first == 0);
+    CHECK(first("## [a] A\n::: shadowed\n{light[0].blocker}\n:::\n").first == 0);  // the branch shadowed
+    const auto [cone_line, cone] = first("## [a] A\n::: pixel\nfine\n{cone[0].t}\n:::\n");
+    CHECK(cone_line == 9);
+    CHECK(cone.find("no group \"cone\"") != std::string::npos);
+    const auto [nest_line, nest] = first("## [a] A\n\n= sphere[0].light[0].D\n");
+    CHECK(nest_line == 8);
+    CHECK(nest.find("sphere[0].light[0].D") != std::string::npos);
+    const auto [key_line, key] = first("## [a] A\n::: pixel\n{sphere[0].D}\n:::\n");
+    CHECK(key_line == 8);
+    CHECK(key.find("no D in sphere[0]") != std::string::npos);
+    const auto [index_line, index] = first("## [a] A\n::: pixel\n{sphere[2].t}\n:::\n");
+    CHECK(index_line == 8);
+    CHECK(index.find("has no sphere[2] (it has 2)") != std::string::npos);
+    CHECK(first("## [a] A\n::: pixel\n{sphere[0].nope}\n:::\n").second.find("unknown key \"sphere[0].nope\"") != std::string::npos);
+    CHECK(first("## [a] A\n\nt0 = {sphere[0].t}\n").first == 8);  // a pixel's value in prose
+    CHECK(first("## [a] A\n\nS0 = {sphere[0].S}, r = {sphere[1].r}, L = {light[0].L}\n").first == 0);  // the scene's
+    const std::vector<LessonProblem> pl = problems_with_scene("## [a] A\n::: pixel\n{sphere[0].D}\n:::\n", Language::pl);
+    REQUIRE(pl.size() == 1);
+    CHECK(pl[0].message.find("w śladzie nie ma D w grupie sphere[0]") != std::string::npos);
+}
+
+TEST_CASE("the keys a lesson may name in a group are the keys the tracer records there", "[lesson]") {
+    Scene planes = shadows_scene();
+    planes.shadows = true;
+    planes.planes.push_back(Plane{{0, 0, 6}, {0, 0, 1}});  // seen from its back
+    planes.lights.push_back(Light{{-2, 1, 0.5}, 0.5});
+    planes.materials = {Material{0.1, 0.7, 0.5, 20}};
+    planes.spheres[0].material = 0;
+    Scene inside = two_spheres_scene();
+    inside.spheres[0] = Sphere{{0, 0, 0.5}, 3};  // the eye inside
+    inside.shadows = true;
+    for (const Scene& scene : {planes, inside, two_spheres_scene()}) {
+        std::set<std::string> seen;
+        for (int i = 0; i < 8; ++i)
+            for (int j = 0; j < 8; ++j) {
+                const PixelTrace trace = trace_pixel(scene, 8, i, j);
+                for (const Step& step : trace.steps) {
+                    std::string path(key_name(step.key));
+                    for (int g = step.group; g >= 0; g = trace.groups[static_cast<std::size_t>(g)].parent) {
+                        const TraceGroup& group = trace.groups[static_cast<std::size_t>(g)];
+                        path = group.kind + "[" + std::to_string(group.index) + "]." + path;
+                    }
+                    if (!seen.insert(path).second) continue;
+                    INFO(scene.name << ": " << path);
+                    CHECK(check_path(path, builtin_vocabulary(), &scene).fault == PathFault::none);
+                    CHECK(lesson_value(trace, path).has_value());
+                }
+            }
     }
 }

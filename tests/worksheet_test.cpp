@@ -36,10 +36,11 @@ std::set<std::string> pixel_texts(const PixelTrace& trace, const Vocabulary& voc
         texts.insert(value_text(value, entry ? entry->kind : "scalar", language));
         if (const Vec3d* v = std::get_if<Vec3d>(&value))
             for (const double c : {v->x, v->y, v->z}) texts.insert(number_text(c, language));
-        else
-            texts.insert(number_text(std::get<double>(value), language));
+        else if (const double* number = std::get_if<double>(&value))
+            texts.insert(number_text(*number, language));
     };
-    for (const Step& step : trace.steps) add(std::string(key_name(step.key)), step.value);
+    for (const Step& step : trace.steps)
+        if (!std::holds_alternative<std::string>(step.value)) add(std::string(key_name(step.key)), step.value);  // words are shown
     add("I_P", trace.result);
     const std::set<std::string> given = given_texts(trace, vocabulary, language);
     std::set<std::string> out;
@@ -82,9 +83,10 @@ TEST_CASE("a worksheet shows no pixel's number, keeps the scene's, and its key h
                 const WorksheetBlank& blank = worksheet.blanks()[n];
                 CHECK(blank.number == static_cast<int>(n) + 1);
                 CHECK(sheet.find("(" + std::to_string(blank.number) + ")") != std::string::npos);
-                const VocabularyEntry* entry = builtin_vocabulary().find(blank.key);
-                const std::string value =
-                    value_text(blank.value, blank.component != 0 || entry == nullptr ? "scalar" : entry->kind, lesson.language);
+                const VocabularyEntry* entry = builtin_vocabulary().find(path_key(blank.key));
+                std::string kind = blank.component != 0 || entry == nullptr ? "scalar" : entry->kind;
+                if (std::holds_alternative<Vec3d>(blank.value) && kind != "point" && kind != "vector") kind = "colour";
+                const std::string value = value_text(blank.value, kind, lesson.language);
                 CHECK(key.find("(" + std::to_string(blank.number) + ") ") != std::string::npos);
                 CHECK(key.find(value) != std::string::npos);
             }
@@ -121,5 +123,41 @@ TEST_CASE("a worksheet keeps the scene's values and gives the same value the sam
         const std::string form = worksheet.answer_template();
         CHECK(form.find("[3,4]") != std::string::npos);
         CHECK(form.find("P.x = ") != std::string::npos);
+    }
+}
+
+TEST_CASE("a worksheet blanks a number inside a group and shows a word filled in", "[worksheet]") {
+    Scene scene;
+    scene.name = "two spheres";
+    scene.spheres = {Sphere{{-0.5, -0.2, 3.2}, 0.9}, Sphere{{0.9, 0.4, 4.6}, 1.3}};
+    scene.lights = {Light{{1.5, 1, 1}, 1}};
+    for (const Language language : {Language::en, Language::pl}) {
+        std::vector<LessonProblem> problems;
+        const Lesson lesson = parse_lesson("---\nname: demo\ntitle: T\nsummary: S\n---\n## [a] A\n\nS1 = {sphere[1].S}\n\n"
+                                           "= sphere[0].t sphere[1].t nearest\n\n"
+                                           "::: pixel\nt1 = {sphere[1].t}, D = {light[0].D}, the nearest: {nearest}\n:::\n",
+                                           "x.md", language, problems);
+        REQUIRE(problems.empty());
+        LessonView view{lesson, builtin_vocabulary(), {}, scene.name, 8};
+        view.traces.push_back(trace_pixel(scene, 8, 3, 4));
+        const Worksheet worksheet(view);
+        const std::string text = render_step(view, 0);
+        INFO(text);
+        // Blanks 1 and 2 are the table's t of sphere 0 and sphere 1; the block repeats blank 2.
+        REQUIRE(worksheet.blanks().size() == 3);
+        CHECK(worksheet.blanks()[1].key == "sphere[1].t");
+        CHECK(text.find("t1 = " + Worksheet::blank_text(2, "scalar", language)) != std::string::npos);
+        CHECK(worksheet.blanks()[2].key == "light[0].D");
+        // The scene's S of sphere 1 and the nearest object stay as they are.
+        CHECK(text.find(language == Language::pl ? "S1 = (0,9; 0,4; 4,6)" : "S1 = (0.9, 0.4, 4.6)") != std::string::npos);
+        CHECK(text.find(std::string("the nearest: ") + (language == Language::pl ? "kula 0" : "sphere 0")) != std::string::npos);
+        const std::string form = worksheet.answer_template();
+        CHECK(form.find("sphere[1].t = ") != std::string::npos);
+        CHECK(form.find("light[0].D = ") != std::string::npos);
+        CHECK(form.find("nearest") == std::string::npos);
+        const std::string key = worksheet.answer_key();
+        const double t1 = std::get<double>(worksheet.blanks()[1].value);
+        CHECK(key.find(number_text(t1, language)) != std::string::npos);
+        CHECK(key.find("[sphere[1].t]") != std::string::npos);
     }
 }

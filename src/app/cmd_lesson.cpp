@@ -72,12 +72,13 @@ int run_check(const LessonLibrary& library, Language language) {
     std::vector<LessonProblem> problems;
     const std::vector<Lesson> lessons = library.lessons(problems);
     for (const Lesson& lesson : lessons) {
-        check_lesson(lesson, builtin_vocabulary(), problems);
-        // The scene a lesson names must exist and be valid, or the lesson cannot run.
-        if (lesson.header.scene.empty() || lesson.header.scene == "article") continue;
+        // The scene a lesson names must exist and be valid, or the lesson cannot
+        // run; its objects and lights are what the lesson's paths may name.
         try {
-            library.scene(lesson.header.scene);
+            const Scene scene = library.scene(lesson.header.scene.empty() ? "article" : lesson.header.scene);
+            check_lesson(lesson, builtin_vocabulary(), problems, &scene);
         } catch (const InputError& error) {
+            check_lesson(lesson, builtin_vocabulary(), problems);
             const std::string where = error.where.empty() ? error.file : error.file + ": " + error.where;
             problems.push_back({lesson.file, lesson.header.scene_line,
                                 message(lesson.language, "error_scene",

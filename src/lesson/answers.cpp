@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <map>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "lesson/lesson_check.hpp"
 #include "lesson/lesson_render.hpp"
 #include "trace/messages.hpp"
 #include "util/errors.hpp"
@@ -151,7 +153,9 @@ std::string keys_list(const Vocabulary& vocabulary) {
     return keys;
 }
 
-// "P.x" -> ("P", 'x'); the key must be in the vocabulary, a component only of a point or vector.
+// "P.x" -> ("P", 'x'), "sphere[1].t" -> ("sphere[1].t", 0): a path whose
+// groups can hold its key (lesson_check.hpp), a key of the vocabulary, a
+// component only of a point or vector.
 std::optional<std::pair<std::string, char>> split_key(const std::string& text, const Vocabulary& vocabulary) {
     std::string key = text;
     char component = 0;
@@ -159,9 +163,17 @@ std::optional<std::pair<std::string, char>> split_key(const std::string& text, c
         component = key.back();
         key.resize(key.size() - 2);
     }
-    const VocabularyEntry* entry = vocabulary.find(key);
+    if (check_path(key, vocabulary).fault != PathFault::none) return std::nullopt;
+    const VocabularyEntry* entry = vocabulary.find(path_key(key));
     if (entry == nullptr || (component != 0 && entry->kind != "point" && entry->kind != "vector")) return std::nullopt;
     return std::make_pair(key, component);
+}
+
+// A word (what a test found, the nearest object) is shown filled in on a
+// worksheet: there is no number to check.
+bool is_word(const std::string& path, const Vocabulary& vocabulary) {
+    const VocabularyEntry* entry = vocabulary.find(path_key(path));
+    return entry != nullptr && entry->kind == "word";
 }
 
 // The pixel's section, found through `index` (a file may head 10^5 pixels).
@@ -220,6 +232,8 @@ std::vector<PixelAnswers> parse_lines(std::string_view text, const std::string& 
         if (!key)
             fail(file, language, line_number,
                  message(language, "answers_error_key", {{"key", key_text}, {"keys", keys_list(vocabulary)}}));
+        if (is_word(key->first, vocabulary))
+            fail(file, language, line_number, message(language, "answers_error_word", {{"key", key_text}}));
         Answer answer;
         answer.line = line_number;
         answer.key = key->first;
@@ -366,6 +380,7 @@ std::vector<PixelAnswers> parse_json(std::string_view text, const std::string& f
     const auto add = [&](const std::string& key_text, const json& value, const std::string& pointer) {
         const std::optional<std::pair<std::string, char>> key = split_key(key_text, vocabulary);
         if (!key) fail_at(file, pointer, message(language, "answers_error_key", {{"key", key_text}, {"keys", keys_list(vocabulary)}}));
+        if (is_word(key->first, vocabulary)) fail_at(file, pointer, message(language, "answers_error_word", {{"key", key_text}}));
         const std::optional<std::vector<TypedNumber>> numbers = json_value(value);
         if (!numbers) fail_at(file, pointer, message(language, "answers_error_number", {{"text", json_text_of(value)}}));
         Answer answer;
@@ -400,17 +415,34 @@ std::vector<PixelAnswers> parse_json(std::string_view text, const std::string& f
             fail_at(file, "/pixel", message(language, "answers_error_outside",
                                             {{"i", std::to_string(*i)}, {"j", std::to_string(*j)}, {"w", std::to_string(w)}}));
         answers.pixel = {*i, *j};
-        const json& steps = root.at("steps");
-        for (std::size_t k = 0; k < steps.size(); ++k) {
-            const json& step = steps[k];
-            if (!step.is_object() || step.contains("group") || !step.contains("key") || !step.at("key").is_string()) continue;
-            // Non-finite (null, or a point with a null component): no number to check.
-            if (!step.contains("value") || step.at("value").is_null()) continue;
-            const json& value = step.at("value");
-            if (value.is_array() && std::any_of(value.begin(), value.end(), [](const json& c) { return c.is_null(); })) continue;
-            add(step.at("key").get<std::string>(), step.at("value"), fmt::format("/steps/{}/value", k));
-        }
-        if (root.contains("result") && root.at("result").is_string()) add("I_P", root.at("result"), "/result");
+        // The steps, and those of each group ({"group": "sphere", "index": 1,
+        // "steps": [...]}) under their path, sphere[1].t; words are not numbers.
+        const std::function<void(const json&, const std::string&, const std::string&)> read_steps =
+            [&](const json& steps, const std::string& prefix, const std::string& pointer) {
+                for (std::size_t k = 0; k < steps.size(); ++k) {
+                    const json& step = steps[k];
+                    if (!step.is_object()) continue;
+                    if (step.contains("group")) {
+                        const json& kind = step.at("group");
+                        const std::optional<int> index = whole(step.value("index", json()));
+                        if (kind.is_string() && index && step.contains("steps") && step.at("steps").is_array())
+                            read_steps(step.at("steps"), prefix + kind.get<std::string>() + "[" + std::to_string(*index) + "].",
+                                       fmt::format("{}/{}/steps", pointer, k));
+                        continue;
+                    }
+                    if (!step.contains("key") || !step.at("key").is_string()) continue;
+                    // Non-finite (null, or a point with a null component): no number to check.
+                    if (!step.contains("value") || step.at("value").is_null()) continue;
+                    const json& value = step.at("value");
+                    if (value.is_array() && std::any_of(value.begin(), value.end(), [](const json& c) { return c.is_null(); })) continue;
+                    const std::string key = prefix + step.at("key").get<std::string>();
+                    if (is_word(key, vocabulary)) continue;
+                    add(key, value, fmt::format("{}/{}/value", pointer, k));
+                }
+            };
+        read_steps(root.at("steps"), "", "/steps");
+        if (root.contains("result") && (root.at("result").is_string() || root.at("result").is_array()))
+            add("I_P", root.at("result"), "/result");
     } else if (root.is_object()) {
         for (const auto& [key, value] : root.items()) add(key, value, pointer_of(key));
     } else {
@@ -420,7 +452,7 @@ std::vector<PixelAnswers> parse_json(std::string_view text, const std::string& f
 }
 
 std::string symbol_of(const Vocabulary& vocabulary, const Answer& answer) {
-    const VocabularyEntry* entry = vocabulary.find(answer.key);
+    const VocabularyEntry* entry = vocabulary.find(path_key(answer.key));
     std::string symbol = entry ? entry->symbol : answer.key;
     std::string key = answer.key;
     if (answer.component != 0) {
@@ -430,18 +462,22 @@ std::string symbol_of(const Vocabulary& vocabulary, const Answer& answer) {
     return symbol == key ? symbol : symbol + " (" + key + ")";
 }
 
-std::string kind_of(const Vocabulary& vocabulary, const Answer& answer) {
+// As the value is written: a point, a vector, a colour (three numbers where
+// one is meant: I_P and a light's contribution in a coloured scene) or one number.
+std::string kind_of(const Vocabulary& vocabulary, const Answer& answer, const std::optional<StepValue>& value) {
     if (answer.component != 0) return "scalar";
-    const VocabularyEntry* entry = vocabulary.find(answer.key);
-    return entry ? entry->kind : "scalar";
+    const VocabularyEntry* entry = vocabulary.find(path_key(answer.key));
+    const std::string kind = entry ? entry->kind : "scalar";
+    if (value && std::holds_alternative<Vec3d>(*value) && kind != "point" && kind != "vector") return "colour";
+    return kind;
 }
 
 std::string numbers_text(const std::vector<TypedNumber>& numbers, const std::string& kind, Language language) {
     if (numbers.size() == 1) return typed_number_text(numbers[0], language);
-    std::string out = kind == "vector" ? "[" : "(";
+    std::string out = kind == "point" ? "(" : "[";
     for (std::size_t k = 0; k < numbers.size(); ++k)
         out += (k ? (language == Language::pl ? "; " : ", ") : "") + typed_number_text(numbers[k], language);
-    return out + (kind == "vector" ? "]" : ")");
+    return out + (kind == "point" ? ")" : "]");
 }
 
 // Each pixel's trace, looked up once a check rather than searched for.
@@ -548,27 +584,24 @@ std::vector<PixelAnswers> parse_answers(std::string_view text, const std::string
 
 std::vector<AnswerCheck> check_answers(const std::vector<PixelAnswers>& answers, const std::vector<PixelTrace>& traces) {
     const Vocabulary& vocabulary = builtin_vocabulary();
-    const auto order = [&vocabulary](const std::string& key) {
-        for (std::size_t k = 0; k < vocabulary.keys.size(); ++k)
-            if (vocabulary.keys[k].key == key) return k;
-        return vocabulary.keys.size();
-    };
     std::vector<AnswerCheck> checks;
     const TraceIndex trace_of(traces);
     for (const PixelAnswers& pixel : answers) {
         const PixelTrace* trace = trace_of(pixel.pixel);
         if (trace == nullptr) throw std::logic_error("check_answers: no trace for an answered pixel");
-        std::vector<Answer> sorted = pixel.answers;
-        std::stable_sort(sorted.begin(), sorted.end(), [&](const Answer& a, const Answer& b) { return order(a.key) < order(b.key); });
-        for (const Answer& answer : sorted) {
+        std::vector<std::pair<std::size_t, const Answer*>> sorted;
+        for (const Answer& answer : pixel.answers) sorted.emplace_back(derivation_rank(*trace, vocabulary, answer.key), &answer);
+        std::stable_sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        for (const auto& [rank, answer_of] : sorted) {
+            const Answer& answer = *answer_of;
             AnswerCheck check{pixel.pixel, answer, Verdict::right, {}};
-            const VocabularyEntry* entry = vocabulary.find(answer.key);
-            const bool vector_key = entry != nullptr && (entry->kind == "point" || entry->kind == "vector");
-            const std::size_t wanted = vector_key && answer.component == 0 ? 3 : 1;
             const std::optional<StepValue> value = lesson_value(*trace, answer.key);
+            // Three numbers for a point, a vector or a colour; one for a number or a component.
+            const bool vector_key = value && std::holds_alternative<Vec3d>(*value);
+            const std::size_t wanted = vector_key && answer.component == 0 ? 3 : 1;
             if (answer.numbers.empty()) {
                 check.verdict = Verdict::blank;
-            } else if (!value) {
+            } else if (!value || std::holds_alternative<std::string>(*value)) {
                 check.verdict = Verdict::not_reached;
             } else if (answer.numbers.size() != wanted || (answer.component != 0 && !vector_key)) {
                 check.verdict = Verdict::wrong_shape;
@@ -621,7 +654,7 @@ std::string answers_report(const std::vector<AnswerCheck>& checks, const std::ve
                             {"branch", branch ? (language == Language::pl ? branch->pl : branch->en) : std::string(branch_name(trace->branch))}}) +
                    "\n";
         }
-        const std::string kind = kind_of(vocabulary, check.answer);
+        const std::string kind = kind_of(vocabulary, check.answer, lesson_value(*trace, check.answer.key));
         MessageArgs args = {{"symbol", symbol_of(vocabulary, check.answer)}, {"typed", check.answer.text}, {"pixel", pixel}};
         std::string id;
         switch (check.verdict) {

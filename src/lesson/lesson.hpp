@@ -3,6 +3,7 @@
 // branches, and answers. lessons/README.md describes the file format.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -66,11 +67,33 @@ struct LessonProblem {
 Lesson parse_lesson(std::string_view text, const std::string& file, Language language,
                     std::vector<LessonProblem>& problems);
 
+// Where a value is in a trace: the groups from the top level down (none for
+// a top-level step), then the key. "light[0].sphere[1].delta_s" is
+// {{light, 0}, {sphere, 1}}, delta_s; "t" is the top level's t.
+struct PathGroup {
+    std::string kind;  // sphere, plane, light (lesson_check says which exist)
+    int index = 0;
+};
+
+struct ValuePath {
+    std::vector<PathGroup> groups;
+    std::string key;
+};
+
+// Reads "kind[N].kind[N].key" (any number of groups, N at most 6 digits);
+// nothing if the text has another form. A component (.x) is not part of a path.
+std::optional<ValuePath> parse_value_path(std::string_view text);
+
+// The key a path ends in: "sphere[1].t" -> "t", "t" -> "t".
+std::string path_key(const std::string& path);
+
 // A placeholder inside a part's text: {key}, {key:N}, {key.x}, {symbol:key},
-// {i}, {j}, {w}, {branch}.
+// {i}, {j}, {w}, {branch}, and each key also inside groups: {sphere[1].t},
+// {light[0].sphere[1].delta_s:4}, {light[0].K.x}.
 struct Placeholder {
     std::size_t begin = 0, end = 0;  // the braces' span in the text
     std::string name;                // the key, or i, j, w, branch
+    std::string path;                // the groups and the key ("sphere[1].t"); the name when there are no groups
     char component = 0;              // 'x', 'y', 'z' or 0
     int decimals = -1;               // -1: the shortest round-trip text
     bool symbol = false;             // {symbol:key}

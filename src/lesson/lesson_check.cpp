@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 
+#include "lesson/lesson_render.hpp"
 #include "trace/messages.hpp"
 
 namespace promyk {
@@ -17,24 +18,106 @@ std::string branch_list(const Vocabulary& vocabulary) {
     return out;
 }
 
+// The keys the tracer records in each group (render/general_tracer.hpp), and
+// the scene's values a one-group path names. A new step in a group is added
+// here too; a test traces scenes of every shape and finds each step allowed.
+struct GroupShape {
+    std::string_view path;  // the kinds from the top level: "light.sphere"
+    std::vector<std::string_view> keys;
+};
+
+const std::vector<GroupShape>& group_shapes() {
+    static const std::vector<GroupShape> shapes = {
+        {"sphere", {"EE", "SS", "C", "delta", "Delta", "sqrt_Delta", "t", "t_far", "found", "S", "r"}},
+        {"plane", {"n_hat", "NQ", "NE", "t", "found"}},
+        {"light", {"K", "KK", "K_len", "K_P", "D", "cos_alpha", "blocker", "diffuse", "R_hat", "RV", "RV_n", "specular",
+                   "contribution", "L", "I"}},
+        {"light.sphere", {"b_s", "c_s", "delta_s", "s_1", "s_2", "found", "s_own"}},
+        {"light.plane", {"NK", "s", "found"}},
+    };
+    return shapes;
+}
+
+std::string joined(const std::vector<std::string_view>& items) {
+    std::string out;
+    for (const std::string_view item : items) out += (out.empty() ? "" : ", ") + std::string(item);
+    return out;
+}
+
+// How many objects of a kind the scene has.
+std::size_t count_of(const Scene& scene, const std::string& kind) {
+    return kind == "sphere" ? scene.spheres.size() : kind == "plane" ? scene.planes.size() : scene.lights.size();
+}
+
 }  // namespace
+
+PathCheck check_path(const std::string& text, const Vocabulary& vocabulary, const Scene* scene) {
+    const std::optional<ValuePath> path = parse_value_path(text);
+    if (!path) return {PathFault::malformed, "", ""};
+    if (vocabulary.find(path->key) == nullptr) return {PathFault::unknown_key, "", ""};
+    std::string kinds;
+    for (std::size_t g = 0; g < path->groups.size(); ++g) {
+        const PathGroup& group = path->groups[g];
+        const std::string name = group.kind + "[" + std::to_string(group.index) + "]";
+        if (group.kind != "sphere" && group.kind != "plane" && group.kind != "light")
+            return {PathFault::unknown_group, group.kind, "sphere, plane, light"};
+        kinds += (kinds.empty() ? "" : ".") + group.kind;
+        const auto shape = std::find_if(group_shapes().begin(), group_shapes().end(),
+                                        [&](const GroupShape& s) { return s.path == kinds; });
+        if (shape == group_shapes().end()) return {PathFault::nesting, name, ""};
+        if (scene != nullptr && static_cast<std::size_t>(group.index) >= count_of(*scene, group.kind))
+            return {PathFault::index, name, std::to_string(count_of(*scene, group.kind))};
+        if (g + 1 == path->groups.size() &&
+            std::find(shape->keys.begin(), shape->keys.end(), path->key) == shape->keys.end())
+            return {PathFault::not_in_group, name, joined(shape->keys)};
+    }
+    return {};
+}
 
 bool depends_on_pixel(const std::string& name, const Vocabulary& vocabulary) {
     if (name == "w") return false;
     if (is_special(name)) return true;
+    if (parse_value_path(name) && !parse_value_path(name)->groups.empty()) return !is_scene_value(name);
     const VocabularyEntry* entry = vocabulary.find(name);
     return entry == nullptr || !entry->given;
 }
 
-void check_lesson(const Lesson& lesson, const Vocabulary& vocabulary, std::vector<LessonProblem>& problems) {
+void check_lesson(const Lesson& lesson, const Vocabulary& vocabulary, std::vector<LessonProblem>& problems,
+                  const Scene* scene) {
     const auto problem = [&](int line, std::string_view id, const MessageArgs& args) {
         problems.push_back({lesson.file, line, message(lesson.language, id, args)});
+    };
+    // A path's fault, if any, reported at `line`; true when there was none.
+    const auto path_ok = [&](const std::string& path, int line) {
+        const PathCheck check = check_path(path, vocabulary, scene);
+        switch (check.fault) {
+            case PathFault::none:
+                return true;
+            case PathFault::malformed:
+            case PathFault::unknown_key:
+                problem(line, "error_unknown_key", {{"key", path}});
+                break;
+            case PathFault::unknown_group:
+                problem(line, "error_unknown_group", {{"path", path}, {"kind", check.group}, {"kinds", check.keys}});
+                break;
+            case PathFault::nesting:
+                problem(line, "error_group_nesting", {{"path", path}, {"group", check.group}});
+                break;
+            case PathFault::not_in_group:
+                problem(line, "error_key_not_in_group",
+                        {{"path", path}, {"key", path_key(path)}, {"group", check.group}, {"keys", check.keys}});
+                break;
+            case PathFault::index:
+                problem(line, "error_group_index",
+                        {{"path", path}, {"group", check.group}, {"count", check.keys}, {"scene", lesson.header.scene}});
+                break;
+        }
+        return false;
     };
     for (const LessonStep& step : lesson.steps) {
         for (const LessonPart& part : step.parts) {
             if (part.kind == PartKind::values) {
-                for (const std::string& key : part.keys)
-                    if (vocabulary.find(key) == nullptr) problem(part.line, "error_unknown_key", {{"key", key}});
+                for (const std::string& key : part.keys) path_ok(key, part.line);
                 continue;
             }
             for (const std::string& branch : part.branches)
@@ -49,12 +132,13 @@ void check_lesson(const Lesson& lesson, const Vocabulary& vocabulary, std::vecto
                 counted = placeholder.begin;
                 if (!placeholder.valid) {
                     problem(line, "error_bad_placeholder", {{"text", placeholder.name}});
-                } else if (!is_special(placeholder.name) && vocabulary.find(placeholder.name) == nullptr) {
-                    problem(line, "error_unknown_key", {{"key", placeholder.name}});
-                } else if (part.kind == PartKind::prose && !placeholder.symbol &&
-                           depends_on_pixel(placeholder.name, vocabulary)) {
-                    problem(line, "error_pixel_outside_block", {{"key", placeholder.name}});
+                    continue;
                 }
+                // {i}, {j}, {w}, {branch} are no keys; anything else is a path to check.
+                const bool special = placeholder.path == placeholder.name && is_special(placeholder.name);
+                if (!special && !path_ok(placeholder.path, line)) continue;
+                if (part.kind == PartKind::prose && !placeholder.symbol && depends_on_pixel(placeholder.path, vocabulary))
+                    problem(line, "error_pixel_outside_block", {{"key", placeholder.path}});
             }
         }
     }

@@ -358,8 +358,39 @@ Lesson parse_lesson(std::string_view text, const std::string& file, Language lan
     return Parser(file, language, problems).parse(text);
 }
 
+std::optional<ValuePath> parse_value_path(std::string_view text) {
+    ValuePath path;
+    const auto name_char = [](char c, bool first) {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || (!first && c >= '0' && c <= '9');
+    };
+    std::size_t k = 0;
+    while (true) {
+        const std::size_t start = k;
+        while (k < text.size() && name_char(text[k], k == start)) ++k;
+        if (k == start) return std::nullopt;
+        const std::string name(text.substr(start, k - start));
+        if (k == text.size()) {
+            path.key = name;
+            return path;
+        }
+        // kind[N].
+        if (text[k] != '[') return std::nullopt;
+        const std::size_t digits = ++k;
+        while (k < text.size() && text[k] >= '0' && text[k] <= '9') ++k;
+        if (k == digits || k - digits > 6 || k + 1 >= text.size() || text[k] != ']' || text[k + 1] != '.') return std::nullopt;
+        path.groups.push_back({name, std::stoi(std::string(text.substr(digits, k - digits)))});
+        k += 2;
+    }
+}
+
+std::string path_key(const std::string& path) {
+    const std::size_t group_end = path.rfind("].");
+    return group_end == std::string::npos ? path : path.substr(group_end + 2);
+}
+
 std::vector<Placeholder> find_placeholders(std::string_view text) {
-    static const std::regex form(R"((symbol:)?([A-Za-z_][A-Za-z0-9_]*(?:\[[0-9]+\]\.[A-Za-z_][A-Za-z0-9_]*)?)(?:\.([xyz]))?(?::([0-9]|1[0-7]))?)");
+    static const std::regex form(
+        R"((symbol:)?((?:[A-Za-z_]+\[[0-9]{1,6}\]\.)*([A-Za-z_][A-Za-z0-9_]*))(?:\.([xyz]))?(?::([0-9]|1[0-7]))?)");
     std::vector<Placeholder> found;
     for (std::size_t k = 0; k < text.size(); ++k) {
         if (text[k] != '{') continue;
@@ -377,14 +408,16 @@ std::vector<Placeholder> find_placeholders(std::string_view text) {
         // A key is a few letters: a longer "placeholder" is never matched
         // (std::regex recurses once a character and would overflow the stack).
         if (close == std::string_view::npos || inside.size() > 64 || !std::regex_match(inside, match, form) ||
-            (match[1].matched && (match[3].matched || match[4].matched))) {
+            (match[1].matched && (match[4].matched || match[5].matched))) {
             placeholder.valid = false;
             placeholder.name = std::string(text.substr(k, placeholder.end - k));
+            placeholder.path = placeholder.name;
         } else {
             placeholder.symbol = match[1].matched;
-            placeholder.name = match[2];
-            if (match[3].matched) placeholder.component = match[3].str()[0];
-            if (match[4].matched) placeholder.decimals = std::stoi(match[4].str());
+            placeholder.path = match[2];
+            placeholder.name = match[3];
+            if (match[4].matched) placeholder.component = match[4].str()[0];
+            if (match[5].matched) placeholder.decimals = std::stoi(match[5].str());
         }
         found.push_back(placeholder);
         k = placeholder.end - 1;

@@ -5,10 +5,12 @@
 #include <algorithm>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "trace/messages.hpp"
 #include "trace/keys.hpp"
 #include "trace/trace_text.hpp"
+#include "render/world.hpp"
 
 namespace promyk {
 
@@ -16,9 +18,18 @@ namespace {
 
 constexpr std::size_t columns = 80;
 
-std::string kind_of(const Vocabulary& vocabulary, const std::string& key) {
-    const VocabularyEntry* entry = vocabulary.find(key);
+std::string kind_of(const Vocabulary& vocabulary, const std::string& path) {
+    const VocabularyEntry* entry = vocabulary.find(path_key(path));
     return entry ? entry->kind : "scalar";
+}
+
+// How a value is written: as the vocabulary's kind says, but three numbers
+// where a number is meant (a light's contribution, I_P in a coloured scene)
+// are a colour, [r, g, b].
+std::string shown_kind(const Vocabulary& vocabulary, const std::string& path, const StepValue& value) {
+    const std::string kind = kind_of(vocabulary, path);
+    if (std::holds_alternative<Vec3d>(value) && kind != "point" && kind != "vector") return "colour";
+    return kind;
 }
 
 std::string branch_text(const Vocabulary& vocabulary, Branch branch, Language language) {
@@ -57,9 +68,9 @@ std::string fill(const LessonView& view, const std::string& text, const PixelTra
         } else {
             // Prose may name only the scene's values, the same in every trace.
             const PixelTrace& source = trace != nullptr ? *trace : view.traces.front();
-            const std::optional<StepValue> value = lesson_value(source, p.name);
+            const std::optional<StepValue> value = lesson_value(source, p.path);
             std::optional<std::string> shown;
-            if (value && trace != nullptr && view.shown_value) shown = view.shown_value(*trace, p.name, p.component);
+            if (value && trace != nullptr && view.shown_value) shown = view.shown_value(*trace, p.path, p.component);
             if (!value) {
                 out += message(language, "not_reached");
             } else if (shown) {
@@ -68,7 +79,7 @@ std::string fill(const LessonView& view, const std::string& text, const PixelTra
                 const Vec3d& v = std::get<Vec3d>(*value);
                 out += number_text(p.component == 'x' ? v.x : p.component == 'y' ? v.y : v.z, language, p.decimals);
             } else {
-                out += value_text(*value, kind_of(view.vocabulary, p.name), language, p.decimals);
+                out += value_text(*value, shown_kind(view.vocabulary, p.path, *value), language, p.decimals);
             }
         }
     }
@@ -80,12 +91,23 @@ std::string fill(const LessonView& view, const std::string& text, const PixelTra
 std::string cell_text(const LessonView& view, const PixelTrace& trace, const std::string& key, const StepValue& value) {
     if (view.shown_value)
         if (std::optional<std::string> shown = view.shown_value(trace, key, 0)) return *shown;
-    return value_text(value, kind_of(view.vocabulary, key), view.lesson.language);
+    return value_text(value, shown_kind(view.vocabulary, key, value), view.lesson.language);
 }
 
 std::string pixel_label(const LessonView& view, const PixelTrace& trace) {
     return message(view.lesson.language, "pixel_label",
                    {{"i", std::to_string(trace.header.i)}, {"j", std::to_string(trace.header.j)}});
+}
+
+// A table row's groups, in the lesson's language: " (light 0, sphere 1)",
+// or nothing for a top-level key.
+std::string group_suffix(const LessonView& view, const std::string& key) {
+    const std::optional<ValuePath> path = parse_value_path(key);
+    if (!path || path->groups.empty()) return "";
+    std::string out;
+    for (const PathGroup& group : path->groups)
+        out += (out.empty() ? "" : ", ") + group_text(view.lesson.language, group.kind, group.index);
+    return " (" + out + ")";
 }
 
 bool shown_for(const LessonPart& part, const PixelTrace& trace) {
@@ -197,8 +219,8 @@ std::string text_values(const LessonView& view, const LessonPart& part) {
     const Language language = view.lesson.language;
     std::string out;
     for (const std::string& key : part.keys) {
-        const VocabularyEntry* entry = view.vocabulary.find(key);
-        const std::string symbol = entry ? entry->symbol : key;
+        const VocabularyEntry* entry = view.vocabulary.find(path_key(key));
+        const std::string symbol = (entry ? entry->symbol : key) + group_suffix(view, key);
         out += "  " + symbol + (entry && !entry->formula.empty() ? " = " + entry->formula : "") + "\n";
         std::vector<std::string> cells;
         for (const PixelTrace& trace : view.traces) {
@@ -250,12 +272,12 @@ std::string markdown_values(const LessonView& view, const LessonPart& part) {
     for (std::size_t c = 0; c < view.traces.size(); ++c) out += "---|";
     out += "\n";
     for (const std::string& key : part.keys) {
-        const VocabularyEntry* entry = view.vocabulary.find(key);
+        const VocabularyEntry* entry = view.vocabulary.find(path_key(key));
         std::string math = entry ? (entry->formula_latex.empty() ? entry->latex : entry->formula_latex) : key;
         // A | would end the table's cell: LaTeX's \vert draws the same bar.
         for (std::size_t bar = math.find('|'); bar != std::string::npos; bar = math.find('|', bar))
             math.replace(bar, 1, "\\vert ");
-        out += "| $" + math + "$ |";
+        out += "| $" + math + "$" + group_suffix(view, key) + " |";
         for (const PixelTrace& trace : view.traces) {
             const std::optional<StepValue> value = lesson_value(trace, key);
             out += " " + (value ? cell_text(view, trace, key, *value) : message(language, "not_reached")) + " |";
@@ -288,13 +310,115 @@ std::string markdown_part(const LessonView& view, const LessonPart& part) {
 
 }  // namespace
 
+bool is_scene_value(const std::string& key);
+
+namespace {
+
+// The scene's value of one object or light, as its file gives it: the
+// centre S and radius r of sphere k, the position L and intensity I of light
+// k. Read from the scene's text the trace's header carries (parsed once a scene).
+std::optional<StepValue> scene_value(const PixelTrace& trace, const PathGroup& group, const std::string& key) {
+    static thread_local std::string parsed_content;
+    static thread_local nlohmann::json parsed;
+    if (parsed_content != trace.header.scene_content || parsed.is_discarded()) {
+        parsed = nlohmann::json::parse(trace.header.scene_content, nullptr, false);
+        parsed_content = trace.header.scene_content;
+    }
+    if (!is_scene_value(group.kind + "[0]." + key)) return std::nullopt;
+    const char* list = group.kind == "sphere" ? "spheres" : group.kind == "light" ? "lights" : "planes";
+    if (!parsed.is_object() || !parsed.contains(list) || !parsed.at(list).is_array()) return std::nullopt;
+    const nlohmann::json& items = parsed.at(list);
+    if (group.index < 0 || static_cast<std::size_t>(group.index) >= items.size()) return std::nullopt;
+    const nlohmann::json& item = items.at(static_cast<std::size_t>(group.index));
+    const auto read = [&item](const std::string& name) -> std::optional<StepValue> {
+        if (!item.is_object() || !item.contains(name)) return std::nullopt;
+        const nlohmann::json& value = item.at(name);
+        if (value.is_number()) return StepValue{value.get<double>()};
+        if (value.is_array() && value.size() == 3 &&
+            std::all_of(value.begin(), value.end(), [](const nlohmann::json& c) { return c.is_number(); }))
+            return StepValue{Vec3d{value[0].get<double>(), value[1].get<double>(), value[2].get<double>()}};
+        return std::nullopt;
+    };
+    if (group.kind != "plane") return read(key);
+    // A plane's n̂ and n̂·Q, computed once a scene, as the engine computes them (render/world.hpp).
+    const std::optional<StepValue> Q = read("Q"), n = read("n");
+    if (!Q || !n || !std::holds_alternative<Vec3d>(*Q) || !std::holds_alternative<Vec3d>(*n)) return std::nullopt;
+    const Vec3d n_hat = unit_normal<double>(std::get<Vec3d>(*n));
+    if (key == "n_hat") return StepValue{n_hat};
+    return StepValue{dot(n_hat, std::get<Vec3d>(*Q))};
+}
+
+}  // namespace
+
 std::optional<StepValue> lesson_value(const PixelTrace& trace, const std::string& key) {
+    const std::optional<ValuePath> path = parse_value_path(key);
+    if (!path) return std::nullopt;
+    // The group the path names: each one's parent is the one before it.
+    int group = -1;
+    for (const PathGroup& wanted : path->groups) {
+        int found = -1;
+        for (std::size_t g = 0; g < trace.groups.size() && found < 0; ++g) {
+            const TraceGroup& candidate = trace.groups[g];
+            if (candidate.parent == group && candidate.kind == wanted.kind && candidate.index == wanted.index)
+                found = static_cast<int>(g);
+        }
+        // Not traced for this pixel: a scene's value of the object can still be named.
+        if (found < 0) return path->groups.size() == 1 ? scene_value(trace, path->groups[0], path->key) : std::nullopt;
+        group = found;
+    }
     for (const Step& step : trace.steps)
-        if (key_name(step.key) == key) return step.value;
+        if (step.group == group && key_name(step.key) == path->key) return step.value;
+    if (!path->groups.empty()) return path->groups.size() == 1 ? scene_value(trace, path->groups[0], path->key) : std::nullopt;
     for (const GivenValue& given : trace.header.given)
-        if (given.key == key) return given.value;
-    if (key == "I_P") return StepValue{trace.result};
+        if (given.key == path->key) return given.value;
+    if (path->key == "I_P") return trace.result_rgb ? StepValue{*trace.result_rgb} : StepValue{trace.result};
     return std::nullopt;
+}
+
+bool is_scene_value(const std::string& key) {
+    const std::optional<ValuePath> path = parse_value_path(key);
+    if (!path) return false;
+    if (path->groups.empty()) {
+        const VocabularyEntry* entry = builtin_vocabulary().find(path->key);
+        return entry != nullptr && entry->given;
+    }
+    if (path->groups.size() != 1) return false;
+    const std::string& kind = path->groups[0].kind;
+    const std::string& name = path->key;
+    return (kind == "sphere" && (name == "S" || name == "r")) || (kind == "light" && (name == "L" || name == "I")) ||
+           (kind == "plane" && (name == "n_hat" || name == "NQ"));
+}
+
+std::size_t derivation_rank(const PixelTrace& trace, const Vocabulary& vocabulary, const std::string& key) {
+    const std::size_t keys = vocabulary.keys.size();
+    const auto vocabulary_index = [&](std::string_view name) {
+        for (std::size_t k = 0; k < keys; ++k)
+            if (vocabulary.keys[k].key == name) return k;
+        return keys;
+    };
+    const std::string bare = path_key(key);
+    const std::size_t own = vocabulary_index(bare);
+    const VocabularyEntry* entry = vocabulary.find(bare);
+    if (entry != nullptr && entry->given) return own;
+    const std::optional<ValuePath> path = parse_value_path(key);
+    std::size_t after = 0;  // 1 + the last step whose key comes no later in the vocabulary
+    for (std::size_t k = 0; k < trace.steps.size(); ++k) {
+        const Step& step = trace.steps[k];
+        const std::string_view name = key_name(step.key);
+        if (path && name == path->key) {
+            // The step itself, when it is in the path's group.
+            std::vector<int> chain;
+            for (int g = step.group; g >= 0; g = trace.groups[static_cast<std::size_t>(g)].parent) chain.insert(chain.begin(), g);
+            bool same = chain.size() == path->groups.size();
+            for (std::size_t c = 0; same && c < chain.size(); ++c) {
+                const TraceGroup& traced = trace.groups[static_cast<std::size_t>(chain[c])];
+                same = traced.kind == path->groups[c].kind && traced.index == path->groups[c].index;
+            }
+            if (same) return keys + 2 * (k + 1);
+        }
+        if (vocabulary_index(name) <= own) after = k + 1;
+    }
+    return keys + 2 * after + 1;
 }
 
 bool has_answers(const LessonStep& step) {
@@ -351,7 +475,7 @@ std::string render_answers(const LessonView& view, std::size_t k) {
         for (const PixelTrace& trace : view.traces) {
             const std::vector<Placeholder> placeholders = find_placeholders(part.text);
             if (std::all_of(placeholders.begin(), placeholders.end(), [&](const Placeholder& p) {
-                    return !p.valid || p.symbol || view.vocabulary.find(p.name) == nullptr || lesson_value(trace, p.name);
+                    return !p.valid || p.symbol || view.vocabulary.find(p.name) == nullptr || lesson_value(trace, p.path);
                 })) {
                 pixel = &trace;
                 break;

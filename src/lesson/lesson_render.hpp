@@ -42,6 +42,22 @@ bool has_answers(const LessonStep& step);
 
 // The value a placeholder or a value table names, for one pixel's trace;
 // nothing where the pixel's computation did not reach it.
+// `key` is a path (lesson.hpp): "t" is the top level's t, "sphere[1].t" the
+// t of sphere 1's test, "light[0].sphere[1].delta_s" that of the shadow ray
+// towards light 0 against sphere 1. A one-group path also names the scene's
+// values of that object: sphere[1].S, sphere[1].r, light[0].L, light[0].I.
 std::optional<StepValue> lesson_value(const PixelTrace& trace, const std::string& key);
+
+// True for a value of the scene, the same for every pixel: a top-level given
+// key (S, r, L, I, z_E, background) and sphere[k].S, sphere[k].r, light[k].L,
+// light[k].I, plane[k].n_hat, plane[k].NQ. Prose may name them; a worksheet
+// keeps them filled in.
+bool is_scene_value(const std::string& key);
+
+// Where a value comes in the pixel's derivation, for sorting (smaller first):
+// the scene's values, then the trace's steps in their order; a value the
+// pixel never reached goes after the last step whose key comes before its
+// own in the vocabulary (t of a miss after Δ/4), and I_P comes last.
+std::size_t derivation_rank(const PixelTrace& trace, const Vocabulary& vocabulary, const std::string& key);
 
 }  // namespace promyk

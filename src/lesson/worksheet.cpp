@@ -13,28 +13,38 @@ namespace {
 const std::string dots = "..........";  // a place to write on paper; no Markdown markup
 const std::string short_dots = "......";
 
+// The shape of a blank: the vocabulary's kind, but three numbers where one is
+// meant (a light's contribution in a coloured scene) are a colour, [r, g, b].
+std::string blank_kind(const Vocabulary& vocabulary, const std::string& path, const std::optional<StepValue>& value) {
+    const VocabularyEntry* entry = vocabulary.find(path_key(path));
+    const std::string kind = entry ? entry->kind : "scalar";
+    if (value && std::holds_alternative<Vec3d>(*value) && kind != "point" && kind != "vector") return "colour";
+    return kind;
+}
+
 }  // namespace
 
 Worksheet::Worksheet(LessonView& view) : view_(view) {
     view_.shown_value = [this](const PixelTrace& trace, const std::string& key, char component) -> std::optional<std::string> {
-        const VocabularyEntry* entry = view_.vocabulary.find(key);
-        if (entry != nullptr && entry->given) return std::nullopt;  // the scene's values are given
+        if (is_scene_value(key)) return std::nullopt;  // the scene's values are given
+        // A word (the nearest object, what a test found) is no number to compute: shown filled in.
+        const std::optional<StepValue> value = lesson_value(trace, key);
+        if (value && std::holds_alternative<std::string>(*value)) return std::nullopt;
         return blank_for(trace, key, component);
     };
 }
 
 std::string Worksheet::blank_text(int number, const std::string& kind, Language language) {
-    if (kind != "point" && kind != "vector") return fmt::format("{}({})", dots, number);
+    if (kind != "point" && kind != "vector" && kind != "colour") return fmt::format("{}({})", dots, number);
     // No-break spaces: a point's blank is not split across two lines.
     const char* separator = language == Language::pl ? ";\u00a0" : ",\u00a0";
-    const char* open = kind == "vector" ? "[" : "(";
-    const char* close = kind == "vector" ? "]" : ")";
+    const char* open = kind == "point" ? "(" : "[";
+    const char* close = kind == "point" ? ")" : "]";
     return fmt::format("{}{}{}{}{}{}{}({})", open, short_dots, separator, short_dots, separator, short_dots, close, number);
 }
 
 std::string Worksheet::blank_for(const PixelTrace& trace, const std::string& key, char component) {
-    const VocabularyEntry* entry = view_.vocabulary.find(key);
-    const std::string kind = component != 0 ? "scalar" : entry ? entry->kind : "scalar";
+    const std::string kind = component != 0 ? "scalar" : blank_kind(view_.vocabulary, key, lesson_value(trace, key));
     const auto [found, added] = index_.emplace(std::make_tuple(trace.header.i, trace.header.j, key, component), blanks_.size());
     if (!added) return blank_text(blanks_[found->second].number, kind, view_.lesson.language);
     WorksheetBlank blank;
@@ -79,12 +89,8 @@ std::string Worksheet::answer_template() const {
         if (found == by_pixel.end()) continue;
         std::vector<const WorksheetBlank*> mine = std::move(found->second);
         by_pixel.erase(found);  // a pixel chosen twice gets one heading
-        // In derivation order (the vocabulary's), as the answers are checked.
-        const auto order = [this](const WorksheetBlank* blank) {
-            for (std::size_t k = 0; k < view_.vocabulary.keys.size(); ++k)
-                if (view_.vocabulary.keys[k].key == blank->key) return k;
-            return view_.vocabulary.keys.size();
-        };
+        // In derivation order, as the answers are checked.
+        const auto order = [&](const WorksheetBlank* blank) { return derivation_rank(trace, view_.vocabulary, blank->key); };
         std::stable_sort(mine.begin(), mine.end(), [&](const WorksheetBlank* a, const WorksheetBlank* b) { return order(a) < order(b); });
         if (mine.empty()) continue;
         lines.push_back(fmt::format("[{},{}]", i, j));
@@ -115,14 +121,14 @@ std::string Worksheet::answer_key() const {
     const std::string heading = message(language, "worksheet_key_heading");
     std::string out = markdown ? "\n## " + heading + "\n\n" : "\n── " + heading + " ──\n\n";
     for (const WorksheetBlank& blank : blanks_) {
-        const VocabularyEntry* entry = view_.vocabulary.find(blank.key);
+        const VocabularyEntry* entry = view_.vocabulary.find(path_key(blank.key));
         std::string symbol = entry ? entry->symbol : blank.key;
         std::string key = blank.key;
         if (blank.component != 0) {
             symbol += std::string(".") + blank.component;
             key += std::string(".") + blank.component;
         }
-        const std::string kind = blank.component != 0 ? "scalar" : entry ? entry->kind : "scalar";
+        const std::string kind = blank.component != 0 ? "scalar" : blank_kind(view_.vocabulary, blank.key, blank.value);
         const std::string line = message(
             language, "worksheet_key_line",
             {{"n", std::to_string(blank.number)},
