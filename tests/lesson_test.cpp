@@ -276,9 +276,10 @@ TEST_CASE("a lesson's value tables show the trace's values", "[lesson]") {
                     for (const PixelTrace& trace : view.traces) {
                         const auto value = lesson_value(trace, key);
                         if (!value) continue;
-                        const std::string shown = fmt::format("({}, {}): {}", trace.header.i, trace.header.j,
-                                                              value_text(*value, builtin_vocabulary().find(key)->kind,
-                                                                         lesson.language));
+                        std::string kind = builtin_vocabulary().find(path_key(key))->kind;
+                        if (std::holds_alternative<Vec3d>(*value) && kind != "point" && kind != "vector") kind = "colour";
+                        const std::string shown =
+                            fmt::format("({}, {}): {}", trace.header.i, trace.header.j, value_text(*value, kind, lesson.language));
                         INFO(lesson.file << " step " << k + 1 << ": " << shown);
                         CHECK(text.find(shown) != std::string::npos);
                     }

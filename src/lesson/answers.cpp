@@ -451,9 +451,9 @@ std::vector<PixelAnswers> parse_json(std::string_view text, const std::string& f
     return {answers};
 }
 
-std::string symbol_of(const Vocabulary& vocabulary, const Answer& answer) {
+std::string symbol_of(const Vocabulary& vocabulary, const Answer& answer, Language language) {
     const VocabularyEntry* entry = vocabulary.find(path_key(answer.key));
-    std::string symbol = entry ? entry->symbol : answer.key;
+    std::string symbol = entry ? optional_message(language, "symbol_" + entry->key).value_or(entry->symbol) : answer.key;
     std::string key = answer.key;
     if (answer.component != 0) {
         symbol += std::string(".") + answer.component;
@@ -655,7 +655,7 @@ std::string answers_report(const std::vector<AnswerCheck>& checks, const std::ve
                    "\n";
         }
         const std::string kind = kind_of(vocabulary, check.answer, lesson_value(*trace, check.answer.key));
-        MessageArgs args = {{"symbol", symbol_of(vocabulary, check.answer)}, {"typed", check.answer.text}, {"pixel", pixel}};
+        MessageArgs args = {{"symbol", symbol_of(vocabulary, check.answer, language)}, {"typed", check.answer.text}, {"pixel", pixel}};
         std::string id;
         switch (check.verdict) {
             case Verdict::right:

@@ -56,7 +56,7 @@ std::string fill(const LessonView& view, const std::string& text, const PixelTra
         if (!p.valid) {
             out += p.name;
         } else if (p.symbol) {
-            out += entry ? entry->symbol : p.name;
+            out += entry ? lesson_symbol(language, *entry) : p.name;
         } else if (p.name == "w") {
             out += std::to_string(view.w);
         } else if (trace == nullptr && (p.name == "i" || p.name == "j" || p.name == "branch")) {
@@ -97,6 +97,26 @@ std::string cell_text(const LessonView& view, const PixelTrace& trace, const std
 std::string pixel_label(const LessonView& view, const PixelTrace& trace) {
     return message(view.lesson.language, "pixel_label",
                    {{"i", std::to_string(trace.header.i)}, {"j", std::to_string(trace.header.j)}});
+}
+
+// A key's symbol in the lesson's language: the vocabulary's, unless
+// messages.json has "symbol_KEY" (the words steps such as "found" are named
+// in the vocabulary in Polish).
+std::string lesson_symbol(Language language, const VocabularyEntry& entry) {
+    return optional_message(language, "symbol_" + entry.key).value_or(entry.symbol);
+}
+
+// A table row's formula: the vocabulary's, unless messages.json has one for
+// the key in its group's kind ("formula_plane_t": a plane's t is n̂·Q / n̂·E,
+// not the sphere's root) or for the key in the lesson's language ("formula_KEY");
+// "…_latex" for Markdown.
+std::string lesson_formula(Language language, const std::string& path, const VocabularyEntry& entry, bool latex) {
+    const std::optional<ValuePath> parsed = parse_value_path(path);
+    const std::string suffix = latex ? "_latex" : "";
+    if (parsed && !parsed->groups.empty())
+        if (auto own = optional_message(language, "formula_" + parsed->groups.back().kind + "_" + entry.key + suffix)) return *own;
+    if (auto own = optional_message(language, "formula_" + entry.key + suffix)) return *own;
+    return latex ? entry.formula_latex : entry.formula;
 }
 
 // A table row's groups, in the lesson's language: " (light 0, sphere 1)",
@@ -220,8 +240,9 @@ std::string text_values(const LessonView& view, const LessonPart& part) {
     std::string out;
     for (const std::string& key : part.keys) {
         const VocabularyEntry* entry = view.vocabulary.find(path_key(key));
-        const std::string symbol = (entry ? entry->symbol : key) + group_suffix(view, key);
-        out += "  " + symbol + (entry && !entry->formula.empty() ? " = " + entry->formula : "") + "\n";
+        const std::string symbol = (entry ? lesson_symbol(language, *entry) : key) + group_suffix(view, key);
+        const std::string formula = entry ? lesson_formula(language, key, *entry, false) : "";
+        out += "  " + symbol + (formula.empty() ? "" : " = " + formula) + "\n";
         std::vector<std::string> cells;
         for (const PixelTrace& trace : view.traces) {
             const std::optional<StepValue> value = lesson_value(trace, key);
@@ -273,7 +294,11 @@ std::string markdown_values(const LessonView& view, const LessonPart& part) {
     out += "\n";
     for (const std::string& key : part.keys) {
         const VocabularyEntry* entry = view.vocabulary.find(path_key(key));
-        std::string math = entry ? (entry->formula_latex.empty() ? entry->latex : entry->formula_latex) : key;
+        std::string math = key;
+        if (entry != nullptr) {
+            math = lesson_formula(language, key, *entry, true);
+            if (math.empty()) math = entry->latex;
+        }
         // A | would end the table's cell: LaTeX's \vert draws the same bar.
         for (std::size_t bar = math.find('|'); bar != std::string::npos; bar = math.find('|', bar))
             math.replace(bar, 1, "\\vert ");

@@ -59,6 +59,11 @@ std::string message(Language language, std::string_view id, const MessageArgs& a
     return out;
 }
 
+std::optional<std::string> optional_message(Language language, std::string_view id) {
+    if (table(language).count(id) == 0) return std::nullopt;
+    return message(language, id);
+}
+
 std::vector<std::string> message_ids(Language language) {
     std::vector<std::string> ids;
     for (const auto& [id, text] : table(language)) ids.push_back(id);

@@ -3,6 +3,7 @@
 // data: a translation is an edit of that file, not of the C++.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -17,6 +18,10 @@ using MessageArgs = std::vector<std::pair<std::string_view, std::string>>;
 // The message `id` in `language`, each {name} replaced by its argument.
 // Throws std::logic_error for an id messages.json lacks (a bug, caught by tests).
 std::string message(Language language, std::string_view id, const MessageArgs& args = {});
+
+// The message `id` in `language` if messages.json has it (an optional
+// override, e.g. a symbol in the lesson's language), else nothing.
+std::optional<std::string> optional_message(Language language, std::string_view id);
 
 // A word a trace step holds (what an object's test found, the nearest
 // object, a blocker) in `language`: "sphere 1" -> "kula 1", "far" -> the
