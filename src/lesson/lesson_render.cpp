@@ -38,6 +38,26 @@ std::string branch_text(const Vocabulary& vocabulary, Branch branch, Language la
     return language == Language::pl ? entry->pl : entry->en;
 }
 
+// A key's symbol in the lesson's language: the vocabulary's, unless
+// messages.json has "symbol_KEY" (the words steps such as "found" are named
+// in the vocabulary in Polish).
+std::string lesson_symbol(Language language, const VocabularyEntry& entry) {
+    return optional_message(language, "symbol_" + entry.key).value_or(entry.symbol);
+}
+
+// A table row's formula: the vocabulary's, unless messages.json has one for
+// the key in its group's kind ("formula_plane_t": a plane's t is n̂·Q / n̂·E,
+// not the sphere's root) or for the key in the lesson's language ("formula_KEY");
+// "…_latex" for Markdown.
+std::string lesson_formula(Language language, const std::string& path, const VocabularyEntry& entry, bool latex) {
+    const std::optional<ValuePath> parsed = parse_value_path(path);
+    const std::string suffix = latex ? "_latex" : "";
+    if (parsed && !parsed->groups.empty())
+        if (auto own = optional_message(language, "formula_" + parsed->groups.back().kind + "_" + entry.key + suffix)) return *own;
+    if (auto own = optional_message(language, "formula_" + entry.key + suffix)) return *own;
+    return latex ? entry.formula_latex : entry.formula;
+}
+
 // The text with its placeholders filled for one pixel (or for none: prose).
 std::string fill(const LessonView& view, const std::string& text, const PixelTrace* trace) {
     const Language language = view.lesson.language;
@@ -97,26 +117,6 @@ std::string cell_text(const LessonView& view, const PixelTrace& trace, const std
 std::string pixel_label(const LessonView& view, const PixelTrace& trace) {
     return message(view.lesson.language, "pixel_label",
                    {{"i", std::to_string(trace.header.i)}, {"j", std::to_string(trace.header.j)}});
-}
-
-// A key's symbol in the lesson's language: the vocabulary's, unless
-// messages.json has "symbol_KEY" (the words steps such as "found" are named
-// in the vocabulary in Polish).
-std::string lesson_symbol(Language language, const VocabularyEntry& entry) {
-    return optional_message(language, "symbol_" + entry.key).value_or(entry.symbol);
-}
-
-// A table row's formula: the vocabulary's, unless messages.json has one for
-// the key in its group's kind ("formula_plane_t": a plane's t is n̂·Q / n̂·E,
-// not the sphere's root) or for the key in the lesson's language ("formula_KEY");
-// "…_latex" for Markdown.
-std::string lesson_formula(Language language, const std::string& path, const VocabularyEntry& entry, bool latex) {
-    const std::optional<ValuePath> parsed = parse_value_path(path);
-    const std::string suffix = latex ? "_latex" : "";
-    if (parsed && !parsed->groups.empty())
-        if (auto own = optional_message(language, "formula_" + parsed->groups.back().kind + "_" + entry.key + suffix)) return *own;
-    if (auto own = optional_message(language, "formula_" + entry.key + suffix)) return *own;
-    return latex ? entry.formula_latex : entry.formula;
 }
 
 // A table row's groups, in the lesson's language: " (light 0, sphere 1)",
