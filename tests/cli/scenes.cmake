@@ -3,25 +3,21 @@
 # surprising one is accepted with a warning; scene check names the stages.
 # Included from tests/CMakeLists.txt, after commands.cmake (${scenes}).
 
-# Each bad fixture: exit 3, the file, the JSON pointer and the key words.
-promyk_cli_test(scene_zero_normal ARGS scene check ${scenes}/zero_normal.json EXIT 3
-                STDERR "zero_normal.json: /planes/0/n: n \\(the plane's normal\\) must not be the zero vector")
-promyk_cli_test(scene_missing_material ARGS scene check ${scenes}/missing_material.json EXIT 3
-                STDERR "/spheres/0/material: material 2 does not exist: the scene has 2 materials \\(0 and 1\\)")
-promyk_cli_test(scene_fractional_exponent ARGS scene check ${scenes}/fractional_exponent.json EXIT 3
-                STDERR "/materials/0/exponent: .*whole number from 1 to 10000, got 2.5")
-promyk_cli_test(scene_background_out_of_range ARGS scene check ${scenes}/background_out_of_range.json EXIT 3
-                STDERR "/background/0: background\\[0\\] \\(red\\) must be between 0 and 1, got 2")
-promyk_cli_test(scene_light_colour_two ARGS scene check ${scenes}/light_colour_two.json EXIT 3
-                STDERR "/lights/0/colour: colour must be an array of 3 numbers \\[r, g, b\\].*got 2 elements")
-promyk_cli_test(scene_shadows_yes ARGS scene check ${scenes}/shadows_yes.json EXIT 3
-                STDERR "/shadows: shadows must be true or false, got a string")
-promyk_cli_test(scene_no_objects ARGS scene check ${scenes}/no_objects.json EXIT 3
-                STDERR "/spheres: the scene has no objects")
-promyk_cli_test(scene_negative_diffuse ARGS scene check ${scenes}/negative_diffuse.json EXIT 3
-                STDERR "/materials/0/diffuse: diffuse .* must be >= 0, got -0.5")
-promyk_cli_test(scene_shininess ARGS scene check ${scenes}/shininess.json EXIT 3
-                STDERR "/materials/0/shininess: unknown key 'shininess'; did you mean 'exponent'\\?")
+# Each bad fixture: exit 3, then "FILE: POINTER: message" on stderr.
+function(promyk_bad_scene fixture expected)
+  promyk_cli_test(scene_${fixture} ARGS scene check ${scenes}/${fixture}.json EXIT 3
+                  STDERR "${fixture}.json: ${expected}")
+endfunction()
+promyk_bad_scene(zero_normal "/planes/0/n: n \\(the plane's normal\\) must not be the zero vector")
+promyk_bad_scene(missing_material
+                 "/spheres/0/material: material 2 does not exist: the scene has 2 materials \\(0 and 1\\)")
+promyk_bad_scene(fractional_exponent "/materials/0/exponent: .*whole number from 1 to 10000, got 2.5")
+promyk_bad_scene(background_out_of_range "/background/0: background\\[0\\] \\(red\\) must be between 0 and 1, got 2")
+promyk_bad_scene(light_colour_two "/lights/0/colour: colour must be an array of 3 numbers \\[r, g, b\\].*got 2 elements")
+promyk_bad_scene(shadows_yes "/shadows: shadows must be true or false, got a string")
+promyk_bad_scene(no_objects "/spheres: the scene has no objects")
+promyk_bad_scene(negative_diffuse "/materials/0/diffuse: diffuse .* must be >= 0, got -0.5")
+promyk_bad_scene(shininess "/materials/0/shininess: unknown key 'shininess'; did you mean 'exponent'\\?")
 # The loader refuses a scene before any command uses it.
 promyk_cli_test(render_zero_normal ARGS render --scene ${scenes}/zero_normal.json --w 8 EXIT 3
                 STDERR "/planes/0/n" EMPTY)
