@@ -1,5 +1,5 @@
-// Image output: PNG and PGM files read back byte for byte, and the promise
-// that a file is written completely or not at all.
+// Image output: PNG, PGM and PPM files read back byte for byte, grey and RGB,
+// and the promise that a file is written completely or not at all.
 #include <png.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -112,11 +112,18 @@ TEST_CASE("image format follows the extension, in any case", "[image]") {
     CHECK(image_format_for_path("out/A.PNG") == ImageFormat::png);
     CHECK(image_format_for_path("x.Pgm") == ImageFormat::pgm);
     CHECK(image_format_for_path("dir.png/x.pgm") == ImageFormat::pgm);
+    CHECK(image_format_for_path("x.ppm") == ImageFormat::ppm);
+    CHECK(image_format_for_path("out/X.PPM") == ImageFormat::ppm);
+    CHECK(image_format_for_path("x.pPm") == ImageFormat::ppm);
+    CHECK(image_format_for_path("a.ppm/b.png") == ImageFormat::png);
+    CHECK_THROWS_AS(image_format_for_path("x.pnm"), UsageError);
+    CHECK_THROWS_AS(image_format_for_path("x.pbm"), UsageError);
+    CHECK_THROWS_AS(image_format_for_path("x.ppm.bak"), UsageError);
     CHECK_THROWS_AS(image_format_for_path("dir.png/x"), UsageError);
     CHECK_THROWS_AS(image_format_for_path("x.png.bak"), UsageError);
     CHECK_THROWS_AS(image_format_for_path("png"), UsageError);
     CHECK_THROWS_AS(image_format_for_path(""), UsageError);
-    CHECK_THROWS_WITH(image_format_for_path("x.jpg"), "unsupported image extension 'x.jpg': use .png or .pgm");
+    CHECK_THROWS_WITH(image_format_for_path("x.jpg"), "unsupported image extension 'x.jpg': use .png, .pgm or .ppm");
 }
 
 TEST_CASE("an unsupported extension creates no file", "[image]") {
@@ -440,4 +447,337 @@ TEST_CASE("a scaled writer refuses an inner image of the wrong size", "[image]")
     OutputFile file(dir.file("s.pgm"));
     CHECK_THROWS_AS(scale_image_writer(open_image_writer(file, ImageFormat::pgm, 8, 8), 3, 3, false),
                     std::invalid_argument);
+}
+
+// ---- RGB images ----
+
+namespace {
+
+// An RGB gradient, r, g, b a pixel, whose channels differ from one another.
+std::vector<std::uint8_t> rgb_gradient(int width, int height) {
+    std::vector<std::uint8_t> pixels(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3);
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const auto p = static_cast<std::size_t>(y * width + x) * 3;
+            pixels[p] = static_cast<std::uint8_t>(x * 7 + y * 31 + x * y);
+            pixels[p + 1] = static_cast<std::uint8_t>(255 - x * 11 - y * 3);
+            pixels[p + 2] = static_cast<std::uint8_t>(x * y * 5 + 100);
+        }
+    }
+    return pixels;
+}
+
+// Writes an RGB image in bands of 1, 2, 3, ... rows.
+void write_rgb_image(ImageWriter& writer, const std::vector<std::uint8_t>& pixels) {
+    int band = 1;
+    for (int y = 0; y < writer.height(); y += band, ++band) {
+        const int count = std::min(band, writer.height() - y);
+        writer.write_rows(pixels.data() + static_cast<std::size_t>(y) * writer.row_bytes(), count);
+    }
+}
+
+// Reads an RGB PNG back with libpng's simplified API; the file must be RGB
+// (colour, no alpha, 8 bits).
+Grey read_rgb_png(const std::string& path) {
+    png_image image{};
+    image.version = PNG_IMAGE_VERSION;
+    REQUIRE(png_image_begin_read_from_file(&image, path.c_str()) != 0);
+    CHECK(image.format == PNG_FORMAT_RGB);
+    image.format = PNG_FORMAT_RGB;
+    Grey rgb{static_cast<int>(image.width), static_cast<int>(image.height), {}};
+    rgb.pixels.resize(PNG_IMAGE_SIZE(image));
+    REQUIRE(png_image_finish_read(&image, nullptr, rgb.pixels.data(), 0, nullptr) != 0);
+    return rgb;
+}
+
+// Parses a binary PPM: "P6", width, height, maxval, one whitespace, samples.
+Grey read_ppm(const std::string& path) {
+    std::istringstream in(read_bytes(path));
+    std::string magic;
+    int maxval = 0;
+    Grey rgb;
+    in >> magic >> rgb.width >> rgb.height >> maxval;
+    REQUIRE(magic == "P6");
+    REQUIRE(maxval == 255);
+    REQUIRE(in.get() == '\n');
+    const std::string rest(std::istreambuf_iterator<char>(in), {});
+    rgb.pixels.assign(rest.begin(), rest.end());
+    return rgb;
+}
+
+// Parses a plain PPM (P3): whitespace-separated numbers after the magic.
+Grey read_plain_ppm(const std::string& text) {
+    std::istringstream in(text);
+    std::string magic;
+    int maxval = 0;
+    Grey rgb;
+    in >> magic >> rgb.width >> rgb.height >> maxval;
+    REQUIRE(magic == "P3");
+    REQUIRE(maxval == 255);
+    int value = 0;
+    while (in >> value) {
+        REQUIRE(value >= 0);
+        REQUIRE(value <= 255);
+        rgb.pixels.push_back(static_cast<std::uint8_t>(value));
+    }
+    REQUIRE(in.eof());  // nothing but numbers
+    return rgb;
+}
+
+std::string as_string(const std::vector<std::uint8_t>& bytes) { return std::string(bytes.begin(), bytes.end()); }
+
+}  // namespace
+
+TEST_CASE("a writer has the channels it was opened with", "[image][rgb]") {
+    TempDir dir;
+    OutputFile file(dir.file("c.ppm"));
+    CHECK(open_image_writer(file, ImageFormat::ppm, 4, 2)->channels() == 1);
+    CHECK(open_image_writer(file, ImageFormat::png, 4, 2, 1)->channels() == 1);
+    auto rgb = open_image_writer(file, ImageFormat::png, 4, 2, 3);
+    CHECK(rgb->channels() == 3);
+    CHECK(rgb->row_bytes() == 12);
+    CHECK(open_image_writer(file, ImageFormat::ppm, 4, 2, 3)->row_bytes() == 12);
+    CHECK_THROWS_AS(open_png_writer(file, 4, 2, 2), std::invalid_argument);
+    CHECK_THROWS_AS(open_ppm_writer(file, 4, 2, false, 4), std::invalid_argument);
+    CHECK_THROWS_AS(check_image_format(ImageFormat::png, 0, "x.png"), std::invalid_argument);
+}
+
+TEST_CASE("RGB PNG and PPM read back byte for byte", "[image][rgb]") {
+    const auto extension = GENERATE(std::string(".png"), std::string(".ppm"), std::string(".PPM"));
+    const auto size = GENERATE(std::make_pair(1, 1), std::make_pair(1, 7), std::make_pair(9, 1), std::make_pair(17, 13),
+                               std::make_pair(256, 3));
+    const int width = size.first;
+    const int height = size.second;
+    CAPTURE(extension, width, height);
+    TempDir dir;
+    const std::string path = dir.file("image" + extension);
+    const auto pixels = rgb_gradient(width, height);
+
+    auto writer = open_image_writer(path, width, height, 3);
+    write_rgb_image(*writer, pixels);
+    writer->commit();
+    writer.reset();
+
+    CHECK(dir.entries() == std::set<std::string>{"image" + extension});
+    const Grey rgb = image_format_for_path(path) == ImageFormat::png ? read_rgb_png(path) : read_ppm(path);
+    CHECK(rgb.width == width);
+    CHECK(rgb.height == height);
+    CHECK(rgb.pixels == pixels);
+}
+
+TEST_CASE("an RGB PNG is 8-bit RGB and holds the exact bytes", "[image][rgb]") {
+    TempDir dir;
+    const std::string path = dir.file("c.png");
+    // Red, green, blue; white, black, a grey that is not r = g = b everywhere.
+    const std::vector<std::uint8_t> pixels = {255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255, 0, 0, 0, 1, 2, 3};
+    auto writer = open_image_writer(path, 3, 2, 3);
+    writer->write_rows(pixels.data(), 1);
+    writer->write_rows(pixels.data() + 9, 1);
+    writer->commit();
+    const std::string png = read_bytes(path);
+    REQUIRE(png.size() > 26);
+    CHECK(png.compare(12, 4, "IHDR") == 0);
+    CHECK(int(png[19]) == 3);  // width (big-endian, low byte)
+    CHECK(int(png[23]) == 2);  // height
+    CHECK(int(png[24]) == 8);  // bit depth
+    CHECK(int(png[25]) == 2);  // colour type: RGB
+    CHECK(int(png[28]) == 0);  // not interlaced
+    const Grey rgb = read_rgb_png(path);
+    CHECK(rgb.width == 3);
+    CHECK(rgb.height == 2);
+    CHECK(rgb.pixels == pixels);
+}
+
+TEST_CASE("binary PPM is P6: the header, then r, g, b a pixel", "[image][rgb]") {
+    TempDir dir;
+    const std::vector<std::uint8_t> pixels = {255, 0, 0, 0, 255, 0, 0, 0, 255, 10, 32, 13};  // 2 x 2, with ' ' and '\r'
+    auto writer = open_image_writer(dir.file("c.ppm"), 2, 2, 3);
+    writer->write_rows(pixels.data(), 2);
+    writer->commit();
+    CHECK(read_bytes(dir.file("c.ppm")) == "P6\n2 2\n255\n" + as_string(pixels));
+}
+
+TEST_CASE("a grey image written as PPM has r = g = b", "[image][rgb]") {
+    TempDir dir;
+    const std::vector<std::uint8_t> grey = {0, 64, 128, 255, 7, 200};
+    SECTION("binary, P6") {
+        auto writer = open_image_writer(dir.file("g.ppm"), 3, 2);  // channels = 1 by default
+        CHECK(writer->channels() == 1);
+        writer->write_rows(grey.data(), 1);
+        writer->write_rows(grey.data() + 3, 1);
+        writer->commit();
+        const std::vector<std::uint8_t> rgb = {0,   0,   0,   64, 64, 64, 128, 128, 128,
+                                               255, 255, 255, 7,  7,  7,  200, 200, 200};
+        CHECK(read_bytes(dir.file("g.ppm")) == "P6\n3 2\n255\n" + as_string(rgb));
+    }
+    SECTION("plain, P3") {
+        OutputFile file(dir.file("g.ppm"));
+        auto writer = open_image_writer(file, ImageFormat::ppm_plain, 3, 2, 1);
+        writer->write_rows(grey.data(), 2);
+        writer->finish();
+        file.commit();
+        CHECK(read_bytes(dir.file("g.ppm")) ==
+              "P3\n3 2\n255\n0 0 0 64 64 64 128 128 128\n255 255 255 7 7 7 200 200 200\n");
+    }
+}
+
+TEST_CASE("plain PPM is P3: each image row starts a line, r g b in order", "[image][rgb]") {
+    TempDir dir;
+    const std::string path = dir.file("p.ppm");
+    const std::vector<std::uint8_t> pixels = {255, 0, 0, 0, 128, 255, 7, 8, 9, 1, 2, 3};
+    OutputFile file(path);
+    auto writer = open_image_writer(file, ImageFormat::ppm_plain, 2, 2, 3);
+    writer->write_rows(pixels.data(), 2);
+    writer->finish();
+    file.commit();
+    CHECK(read_bytes(path) == "P3\n2 2\n255\n255 0 0 0 128 255\n7 8 9 1 2 3\n");
+}
+
+TEST_CASE("plain PPM: lines of at most 70 characters, a pixel never split", "[image][rgb]") {
+    const auto size =
+        GENERATE(std::make_pair(1, 1), std::make_pair(3, 2), std::make_pair(17, 13), std::make_pair(100, 3));
+    CAPTURE(size.first, size.second);
+    TempDir dir;
+    const std::string path = dir.file("plain.ppm");
+    auto pixels = rgb_gradient(size.first, size.second);
+    std::fill(pixels.begin(), pixels.begin() + 3, std::uint8_t{255});  // the widest pixel
+    {
+        OutputFile file(path);
+        auto writer = open_image_writer(file, ImageFormat::ppm_plain, size.first, size.second, 3);
+        write_rgb_image(*writer, pixels);
+        writer->finish();
+        file.commit();
+    }
+    const std::string text = read_bytes(path);
+    const std::string header = fmt::format("P3\n{} {}\n255\n", size.first, size.second);
+    REQUIRE(text.rfind(header, 0) == 0);
+    std::istringstream lines(text.substr(header.size()));
+    std::string line;
+    int line_count = 0;
+    while (std::getline(lines, line)) {
+        ++line_count;
+        CAPTURE(line);
+        CHECK(line.size() <= 70);
+        CHECK(std::count(line.begin(), line.end(), ' ') % 3 == 2);  // whole pixels: 3k numbers, 3k - 1 spaces
+    }
+    // 11 characters and a space for the widest pixel: at least 5 pixels a line
+    // fit, and 100 pixels of up to 12 characters need more than one line.
+    if (size.first == 100) CHECK(line_count > size.second);
+    if (size.first <= 5) CHECK(line_count == size.second);
+    const Grey rgb = read_plain_ppm(text);
+    CHECK(rgb.width == size.first);
+    CHECK(rgb.height == size.second);
+    CHECK(rgb.pixels == pixels);
+}
+
+TEST_CASE("plain PPM wraps before the 71st character, between pixels", "[image][rgb]") {
+    // Six pixels of "255 255 255" are 6 * 11 + 5 = 71 characters: the sixth
+    // starts a new line; five are 59.
+    TempDir dir;
+    const std::string path = dir.file("w.ppm");
+    const std::vector<std::uint8_t> pixels(6 * 3, 255);
+    OutputFile file(path);
+    auto writer = open_image_writer(file, ImageFormat::ppm_plain, 6, 1, 3);
+    writer->write_rows(pixels.data(), 1);
+    writer->finish();
+    file.commit();
+    const std::string five = "255 255 255 255 255 255 255 255 255 255 255 255 255 255 255";
+    CHECK(read_bytes(path) == "P3\n6 1\n255\n" + five + "\n255 255 255\n");
+}
+
+TEST_CASE("a coloured image as PGM is refused before any file is created", "[image][rgb]") {
+    TempDir dir;
+    SECTION("check_image_format") {
+        CHECK_THROWS_MATCHES(check_image_format(ImageFormat::pgm, 3, "x.pgm"), UsageError,
+                             Catch::Message("x.pgm: PGM holds grey levels only and this scene is coloured; "
+                                            "write .png or .ppm"));
+        CHECK_THROWS_AS(check_image_format(ImageFormat::pgm_plain, 3, "x.pgm"), UsageError);
+        for (const ImageFormat format :
+             {ImageFormat::png, ImageFormat::pgm, ImageFormat::pgm_plain, ImageFormat::ppm, ImageFormat::ppm_plain}) {
+            CHECK_NOTHROW(check_image_format(format, 1, "x"));
+        }
+        for (const ImageFormat format : {ImageFormat::png, ImageFormat::ppm, ImageFormat::ppm_plain}) {
+            CHECK_NOTHROW(check_image_format(format, 3, "x"));
+        }
+    }
+    SECTION("open_image_writer(path, ...)") {
+        const std::string name = GENERATE(std::string("x.pgm"), std::string("X.PGM"));
+        const std::string path = dir.file(name);
+        CHECK_THROWS_MATCHES(open_image_writer(path, 4, 4, 3), UsageError,
+                             Catch::Message(path + ": PGM holds grey levels only and this scene is coloured; "
+                                                   "write .png or .ppm"));
+        CHECK_FALSE(fs::exists(path));
+    }
+    SECTION("refused before opening: a file that could not be created is not the error") {
+        // Were the file opened first, these would be OutputError.
+        CHECK_THROWS_AS(open_image_writer(dir.file("missing/x.pgm"), 4, 4, 3), UsageError);
+        CHECK_THROWS_AS(open_image_writer("/proc/promyk-test-x.pgm", 4, 4, 3), UsageError);
+    }
+    SECTION("open_image_writer(file, ...) writes nothing into the file") {
+        const std::string path = dir.file("x.pgm");
+        {
+            OutputFile file(path);
+            CHECK_THROWS_AS(open_image_writer(file, ImageFormat::pgm, 4, 4, 3), UsageError);
+            CHECK_THROWS_AS(open_image_writer(file, ImageFormat::pgm_plain, 4, 4, 3), UsageError);
+            CHECK_THROWS_AS(open_pgm_writer(file, 4, 4, false, 3), UsageError);
+            CHECK(file.bytes_written() == 0);
+        }
+    }
+    CHECK(dir.entries().empty());
+}
+
+TEST_CASE("a scaled RGB writer draws RGB blocks, with grey grid lines in every channel", "[image][rgb]") {
+    const bool grid = GENERATE(false, true);
+    const int scale = GENERATE(1, 2, 3);
+    CAPTURE(grid, scale);
+    TempDir dir;
+    const std::string path = dir.file("s.ppm");
+    const int w = 3;
+    const auto pixels = rgb_gradient(w, w);
+    const int side = static_cast<int>(scaled_side(w, scale, grid));
+    {
+        OutputFile file(path);
+        auto writer = scale_image_writer(open_image_writer(file, ImageFormat::ppm, side, side, 3), w, scale, grid);
+        CHECK(writer->width() == w);
+        CHECK(writer->channels() == 3);
+        write_rgb_image(*writer, pixels);
+        writer->finish();
+        file.commit();
+    }
+    const Grey rgb = read_ppm(path);
+    REQUIRE(rgb.width == side);
+    REQUIRE(rgb.height == side);
+    REQUIRE(rgb.pixels.size() == static_cast<std::size_t>(side * side * 3));
+    const int step = scale + (grid ? 1 : 0);
+    for (int y = 0; y < side; ++y) {
+        for (int x = 0; x < side; ++x) {
+            const bool on_grid = grid && (y % step == scale || x % step == scale);
+            for (int c = 0; c < 3; ++c) {
+                const std::uint8_t expected =
+                    on_grid ? grid_grey : pixels[static_cast<std::size_t>(((y / step) * w + x / step) * 3 + c)];
+                CAPTURE(x, y, c);
+                REQUIRE(int(rgb.pixels[static_cast<std::size_t>((y * side + x) * 3 + c)]) == int(expected));
+            }
+        }
+    }
+}
+
+TEST_CASE("a scaled RGB writer, 2 x 2 at scale 2 with a grid, byte for byte", "[image][rgb]") {
+    TempDir dir;
+    const std::string path = dir.file("s.ppm");
+    const std::vector<std::uint8_t> pixels = {255, 0, 0, 0, 255, 0, 0, 0, 255, 1, 2, 3};
+    {
+        OutputFile file(path);
+        auto writer = scale_image_writer(open_image_writer(file, ImageFormat::ppm_plain, 5, 5, 3), 2, 2, true);
+        writer->write_rows(pixels.data(), 2);
+        writer->finish();
+        file.commit();
+    }
+    CHECK(read_bytes(path) ==
+          "P3\n5 5\n255\n"
+          "255 0 0 255 0 0 64 64 64 0 255 0 0 255 0\n"
+          "255 0 0 255 0 0 64 64 64 0 255 0 0 255 0\n"
+          "64 64 64 64 64 64 64 64 64 64 64 64 64 64 64\n"
+          "0 0 255 0 0 255 64 64 64 1 2 3 1 2 3\n"
+          "0 0 255 0 0 255 64 64 64 1 2 3 1 2 3\n");
 }

@@ -30,11 +30,20 @@ TEST_CASE("the vocabulary defines every key the tracer knows, and every branch",
         CHECK_FALSE(entry->symbol.empty());
         CHECK_FALSE(entry->pl.empty());
         CHECK_FALSE(entry->en.empty());
-        CHECK(std::set<std::string>{"scalar", "point", "vector"}.count(entry->kind) == 1);
+        CHECK(std::set<std::string>{"scalar", "point", "vector", "word", "intensity"}.count(entry->kind) == 1);
     }
-    for (const Branch branch : {Branch::miss, Branch::dark, Branch::lit, Branch::non_finite})
+    for (const Branch branch : {Branch::miss, Branch::dark, Branch::lit, Branch::non_finite, Branch::shadowed})
         CHECK(vocabulary.find_branch(branch_name(branch)) != nullptr);
     CHECK(vocabulary.find("I_P") != nullptr);  // the result
+}
+
+// A number for "scalar", a point or vector for "point" and "vector", a word
+// for "word", and for "intensity" a grey level or an [r, g, b].
+bool kind_matches(const std::string& kind, const StepValue& value) {
+    if (kind == "scalar") return std::holds_alternative<double>(value);
+    if (kind == "point" || kind == "vector") return std::holds_alternative<Vec3d>(value);
+    if (kind == "word") return std::holds_alternative<std::string>(value);
+    return kind == "intensity" && !std::holds_alternative<std::string>(value);
 }
 
 TEST_CASE("the tracer emits only vocabulary keys, with values of the vocabulary's kind", "[vocabulary]") {
@@ -48,7 +57,7 @@ TEST_CASE("the tracer emits only vocabulary keys, with values of the vocabulary'
                 const VocabularyEntry* entry = vocabulary.find(key);
                 INFO("key " << key);
                 REQUIRE(entry != nullptr);
-                CHECK(std::holds_alternative<Vec3d>(step.value) == (entry->kind != "scalar"));
+                CHECK(kind_matches(entry->kind, step.value));
                 seen.insert(key);
             }
         }

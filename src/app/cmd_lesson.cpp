@@ -31,6 +31,7 @@
 #include "lesson/worksheet.hpp"
 #include "trace/messages.hpp"
 #include "trace/trace_text.hpp"
+#include "render/kernel.hpp"
 #include "render/trace_pixel.hpp"
 #include "scene/scene_json.hpp"
 #include "util/errors.hpp"
@@ -142,7 +143,7 @@ std::string read_answer_file(const std::string& path) {
 }
 
 // --answers FILE: the student's numbers against the traces; exit 1 when any is wrong.
-int run_answers(const LessonOptions& options, LessonView& view, const ArticleWorld<double>& world, const TraceHeader& header) {
+int run_answers(const LessonOptions& options, LessonView& view, const Kernel& kernel, const TraceHeader& header) {
     const std::string shown = options.answers == "-" ? "(stdin)" : options.answers;
     const LessonPixel first{view.traces.front().header.i, view.traces.front().header.j};
     const std::vector<PixelAnswers> answers = parse_answers(read_answer_file(options.answers), shown, view.vocabulary,
@@ -152,7 +153,7 @@ int run_answers(const LessonOptions& options, LessonView& view, const ArticleWor
     for (const PixelTrace& trace : view.traces) traced.emplace(trace.header.i, trace.header.j);
     for (const PixelAnswers& pixel : answers)
         if (traced.emplace(pixel.pixel.i, pixel.pixel.j).second)
-            view.traces.push_back(trace_pixel(world, header, pixel.pixel.i, pixel.pixel.j));
+            view.traces.push_back(kernel.trace(header, pixel.pixel.i, pixel.pixel.j));
     const std::vector<AnswerCheck> checks = check_answers(answers, view.traces);
     print(message(view.lesson.language, "answers_heading",
                   {{"file", shown}, {"lesson", view.lesson.header.name}, {"scene", view.scene_name}, {"w", std::to_string(view.w)},
@@ -206,10 +207,10 @@ int run_lesson(const LessonOptions& options) {
     view.format = options.format == "markdown" ? LessonFormat::markdown : LessonFormat::text;
     const char* no_color = std::getenv("NO_COLOR");
     view.color = view.format == LessonFormat::text && isatty(STDOUT_FILENO) == 1 && (no_color == nullptr || *no_color == '\0');
-    const ArticleWorld<double> world = article_world(scene);
+    const std::unique_ptr<Kernel> kernel = make_kernel(scene);
     const TraceHeader header = trace_header(scene, w);
-    for (const LessonPixel& pixel : pixels) view.traces.push_back(trace_pixel(world, header, pixel.i, pixel.j));
-    if (!options.answers.empty()) return run_answers(options, view, world, header);
+    for (const LessonPixel& pixel : pixels) view.traces.push_back(kernel->trace(header, pixel.i, pixel.j));
+    if (!options.answers.empty()) return run_answers(options, view, *kernel, header);
 
     // A worksheet shows blanks for the pixels' numbers and leaves the answers out (they are the teacher's).
     std::optional<Worksheet> worksheet;

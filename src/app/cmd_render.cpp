@@ -23,6 +23,7 @@
 #include "app/progress.hpp"
 #include "render/image_writer.hpp"
 #include "render/renderer.hpp"
+#include "render/stages.hpp"
 #include "render/trace_size.hpp"
 #include "util/errors.hpp"
 #include "util/printable.hpp"
@@ -116,7 +117,7 @@ std::string byte_size(double bytes) {
 }
 
 // A device or a FIFO named without an extension (-o /dev/null) gets PNG,
-// as does standard output; a file needs .png or .pgm.
+// as does standard output; a file needs .png, .pgm or .ppm.
 ImageFormat image_format(const RenderOptions& options, const OutputTarget& target) {
     ImageFormat format = ImageFormat::png;
     if (target.kind == OutputKind::file) {
@@ -129,10 +130,11 @@ ImageFormat image_format(const RenderOptions& options, const OutputTarget& targe
         }
     }
     if (options.plain) {
-        if (format != ImageFormat::pgm)
-            throw UsageError(fmt::format("--plain writes plain PGM (P2); it needs an -o FILE ending in .pgm, not '{}'",
+        if (format != ImageFormat::pgm && format != ImageFormat::ppm)
+            throw UsageError(fmt::format("--plain writes plain PGM (P2) or PPM (P3); it needs an -o FILE ending in "
+                                         ".pgm or .ppm, not '{}'",
                                          options.output));
-        format = ImageFormat::pgm_plain;
+        format = format == ImageFormat::pgm ? ImageFormat::pgm_plain : ImageFormat::ppm_plain;
     }
     return format;
 }
@@ -159,13 +161,18 @@ std::string image_description(const RenderOptions& options, const Scene& scene) 
                        options.w, options.scale, options.grid ? " with a grid" : "", scene.name);
 }
 
-// What the engine did, on stderr: rays by kind, intersection tests, pixels by branch.
-void print_stats(const RenderStats& stats) {
+// What the engine did, on stderr: the stages it ran, rays by kind,
+// intersection tests by shape, pixels by branch.
+void print_stats(const RenderStats& stats, const Scene& scene) {
+    std::string stages;
+    for (const std::string& id : effect_ids(scene, plan_stages(scene))) stages += (stages.empty() ? "" : ", ") + id;
     fmt::print(stderr, "statistics:\n");
-    fmt::print(stderr, "  rays cast: {} primary (one a pixel), 0 shadow\n", stats.primary_rays);
-    fmt::print(stderr, "  ray-sphere intersection tests: {}\n", stats.sphere_tests);
-    fmt::print(stderr, "  pixels: {} miss, {} dark, {} lit, {} non-finite\n", stats.count(Branch::miss),
-               stats.count(Branch::dark), stats.count(Branch::lit), stats.count(Branch::non_finite));
+    fmt::print(stderr, "  stages: {}\n", stages);
+    fmt::print(stderr, "  rays cast: {} primary (one a pixel), {} shadow\n", stats.primary_rays, stats.shadow_rays);
+    fmt::print(stderr, "  intersection tests: {} ray-sphere, {} ray-plane\n", stats.sphere_tests, stats.plane_tests);
+    fmt::print(stderr, "  pixels: {} miss, {} dark, {} lit, {} shadowed, {} non-finite\n", stats.count(Branch::miss),
+               stats.count(Branch::dark), stats.count(Branch::lit), stats.count(Branch::shadowed),
+               stats.count(Branch::non_finite));
 }
 
 int run_render(const RenderOptions& options) {
@@ -184,7 +191,9 @@ int run_render(const RenderOptions& options) {
     }
 
     const Scene scene = cli::load_scene_option(options.scene_file);
-    article_world(scene);  // reject a scene the engine cannot trace before creating any file
+    // A coloured scene needs an RGB format: refused before any file is created.
+    const int channels = image_channels(scene);
+    check_image_format(format, channels, options.output);
 
     // The size guard protects disks: it applies where the traces land in a
     // regular file (a path, or standard output redirected to one), not to a
@@ -205,7 +214,7 @@ int run_render(const RenderOptions& options) {
     std::optional<OutputFile> traces;
     if (traces_target) traces.emplace(*traces_target);
     const int side = static_cast<int>(scaled_side(options.w, options.scale, options.grid));
-    std::unique_ptr<ImageWriter> image = open_image_writer(image_file, format, side, side);
+    std::unique_ptr<ImageWriter> image = open_image_writer(image_file, format, side, side, channels);
     if (side != options.w) image = scale_image_writer(std::move(image), options.w, options.scale, options.grid);
 
     std::int64_t trace_count = 0;
@@ -240,7 +249,7 @@ int run_render(const RenderOptions& options) {
                    stats.first_non_finite_i, stats.first_non_finite_j, options.w,
                    options.scene_file.empty() ? "" : " --scene " + printable(options.scene_file));
     }
-    if (options.stats) print_stats(stats);
+    if (options.stats) print_stats(stats, scene);
     return 0;
 }
 
@@ -248,18 +257,21 @@ int run_render(const RenderOptions& options) {
 
 std::function<int()> setup_render(CLI::App& app) {
     auto options = std::make_shared<RenderOptions>();
-    CLI::App* cmd = app.add_subcommand("render", "Render the scene to an image (PNG or PGM), optionally with traces");
+    CLI::App* cmd = app.add_subcommand("render", "Render the scene to an image (PNG, PGM or PPM), optionally with traces");
     add_scene_option(*cmd, options->scene_file);
     cmd->add_option("-o,--output", options->output,
-                    "Image file: .png for PNG, .pgm for binary PGM (P5, add --plain for plain PGM, P2),\n"
-                    "or - for PNG on standard output")
+                    "Image file: .png for PNG, .pgm for binary PGM (P5, add --plain for plain PGM, P2;\n"
+                    "grey scenes only), .ppm for binary PPM (P6, add --plain for plain PPM, P3),\n"
+                    "or - for PNG on standard output; a coloured scene is written in RGB")
         ->type_name("FILE")
         ->check(non_empty())
         ->capture_default_str();
     cmd->add_flag("--stats", options->stats,
-                  "Print what the engine did on stderr: rays cast, intersection tests, pixels by branch");
+                  "Print what the engine did on stderr: the stages it ran, rays cast (primary, shadow),\n"
+                  "intersection tests (sphere, plane), pixels by branch");
     cmd->add_flag("--plain", options->plain,
-                  "With a .pgm output: write plain PGM (P2, grey levels as text) instead of binary PGM (P5)");
+                  "With a .pgm or .ppm output: write plain PGM (P2) or plain PPM (P3), numbers as text,\n"
+                  "instead of binary (P5, P6)");
     add_w_option(*cmd, options->w);
     cmd->add_option("--scale", options->scale,
                     "Draw each pixel as an N × N block, to show a small pane (w · N at most 32768)")

@@ -24,6 +24,18 @@ constexpr Vec3<Real> operator/(const Vec3<Real>& E, Real t) {
     return {E.x / t, E.y / t, E.z / t};
 }
 
+// -P: the opposite vector (exact: only the signs change).
+template <class Real>
+constexpr Vec3<Real> operator-(const Vec3<Real>& P) {
+    return {-P.x, -P.y, -P.z};
+}
+
+// a ⊙ b: channel by channel, for colours.
+template <class Real>
+constexpr Vec3<Real> operator*(const Vec3<Real>& a, const Vec3<Real>& b) {
+    return {a.x * b.x, a.y * b.y, a.z * b.z};
+}
+
 template <class Real>
 constexpr Vec3<Real> operator+(const Vec3<Real>& P, const Vec3<Real>& Q) {
     return {P.x + Q.x, P.y + Q.y, P.z + Q.z};

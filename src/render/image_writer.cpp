@@ -26,6 +26,12 @@ void check_size(int width, int height) {
     }
 }
 
+void check_channels(int channels) {
+    if (channels != 1 && channels != 3) {
+        throw std::invalid_argument(fmt::format("an image has 1 or 3 channels, not {}", channels));
+    }
+}
+
 }  // namespace
 
 ImageFormat image_format_for_path(const std::string& path) {
@@ -36,32 +42,51 @@ ImageFormat image_format_for_path(const std::string& path) {
     const std::string extension = dot == std::string::npos ? "" : lowercase(name.substr(dot + 1));
     if (extension == "png") return ImageFormat::png;
     if (extension == "pgm") return ImageFormat::pgm;
-    throw UsageError(fmt::format("unsupported image extension '{}': use .png or .pgm", path));
+    if (extension == "ppm") return ImageFormat::ppm;
+    throw UsageError(fmt::format("unsupported image extension '{}': use .png, .pgm or .ppm", path));
 }
 
-std::unique_ptr<ImageWriter> open_image_writer(OutputFile& file, ImageFormat format, int width, int height) {
+void check_image_format(ImageFormat format, int channels, const std::string& path) {
+    check_channels(channels);
+    if (channels == 3 && (format == ImageFormat::pgm || format == ImageFormat::pgm_plain)) {
+        throw UsageError(
+            fmt::format("{}: PGM holds grey levels only and this scene is coloured; write .png or .ppm", path));
+    }
+}
+
+std::unique_ptr<ImageWriter> open_image_writer(OutputFile& file, ImageFormat format, int width, int height,
+                                               int channels) {
+    check_image_format(format, channels, file.display_name());
     switch (format) {
         case ImageFormat::png:
-            return open_png_writer(file, width, height);
+            return open_png_writer(file, width, height, channels);
         case ImageFormat::pgm:
-            return open_pgm_writer(file, width, height, false);
+            return open_pgm_writer(file, width, height, false, channels);
         case ImageFormat::pgm_plain:
-            return open_pgm_writer(file, width, height, true);
+            return open_pgm_writer(file, width, height, true, channels);
+        case ImageFormat::ppm:
+            return open_ppm_writer(file, width, height, false, channels);
+        case ImageFormat::ppm_plain:
+            return open_ppm_writer(file, width, height, true, channels);
     }
     throw std::logic_error("unknown ImageFormat");
 }
 
-std::unique_ptr<ImageWriter> open_image_writer(const std::string& path, int width, int height) {
-    // Both checked before the file (its temporary) is created.
+std::unique_ptr<ImageWriter> open_image_writer(const std::string& path, int width, int height, int channels) {
+    // All checked before the file (its temporary) is created.
     const ImageFormat format = image_format_for_path(path);
+    check_image_format(format, channels, path);
     check_size(width, height);
     auto file = std::make_unique<OutputFile>(path);
-    std::unique_ptr<ImageWriter> writer = open_image_writer(*file, format, width, height);
+    std::unique_ptr<ImageWriter> writer = open_image_writer(*file, format, width, height, channels);
     writer->adopt(std::move(file));
     return writer;
 }
 
-ImageWriter::ImageWriter(int width, int height) : width_(width), height_(height) { check_size(width, height); }
+ImageWriter::ImageWriter(int width, int height, int channels) : width_(width), height_(height), channels_(channels) {
+    check_size(width, height);
+    check_channels(channels);
+}
 
 ImageWriter::~ImageWriter() = default;
 

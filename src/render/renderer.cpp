@@ -52,6 +52,7 @@ RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8
         for (int k = 0; k < n; ++k) out[j0 + k] = to_byte(I_P[k]);
     }
     RowCounts counts;
+    counts.sphere_tests = w;  // one sphere, one primary ray a pixel
     counts.branches[static_cast<int>(Branch::miss)] = miss;
     counts.branches[static_cast<int>(Branch::dark)] = dark;
     counts.branches[static_cast<int>(Branch::non_finite)] = non_finite;
@@ -68,11 +69,11 @@ RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8
 namespace {
 
 // Appends the selected pixels of row i as JSON Lines.
-void trace_row(const ArticleWorld<double>& world, const TraceHeader& header, const PixelSelection& traced, int i,
+void trace_row(const Kernel& kernel, const TraceHeader& header, const PixelSelection& traced, int i,
                std::string& out) {
     for (int j = 0; j < header.w; ++j) {
         if (!traced.contains(i, j)) continue;
-        append_trace_json(out, trace_pixel(world, header, i, j));
+        append_trace_json(out, kernel.trace(header, i, j));
         out += '\n';
     }
 }
@@ -96,6 +97,7 @@ struct Band {
     std::atomic<int> next_row{0};
 
     void start(int first, int rows_per_band, int w) {
+        // w: the pane's side; pixels hold w * channels bytes a row.
         first_row = first;
         count = std::min(rows_per_band, w - first);
         next_row = 0;
@@ -106,16 +108,17 @@ struct Band {
 // Computes the rows of bands; the first failure (or a signal) stops every thread.
 class BandWork {
 public:
-    BandWork(const ArticleWorld<double>& world, const TraceHeader& header, const PixelSelection& traced)
-        : world_(world), header_(header), traced_(traced) {}
+    BandWork(const Kernel& kernel, const TraceHeader& header, const PixelSelection& traced)
+        : kernel_(kernel), header_(header), traced_(traced) {}
 
     void operator()(Band& band) noexcept {
         const int w = header_.w;
         try {
             for (int k = band.next_row++; k < band.count && !stop_ && !interrupt_signal(); k = band.next_row++) {
                 const int i = band.first_row + k;
-                band.counts[k] = render_row(world_, w, i, &band.pixels[static_cast<std::size_t>(k) * w]);
-                if (traced_.row_has_any(i)) trace_row(world_, header_, traced_, i, band.traces[k]);
+                const std::size_t row_bytes = static_cast<std::size_t>(w) * kernel_.channels();
+                band.counts[k] = kernel_.row(w, i, &band.pixels[static_cast<std::size_t>(k) * row_bytes]);
+                if (traced_.row_has_any(i)) trace_row(kernel_, header_, traced_, i, band.traces[k]);
                 rows_done_.fetch_add(1, std::memory_order_relaxed);
             }
         } catch (...) {
@@ -133,7 +136,7 @@ public:
     }
 
 private:
-    const ArticleWorld<double>& world_;
+    const Kernel& kernel_;
     const TraceHeader& header_;
     const PixelSelection& traced_;
     std::atomic<bool> stop_{false};
@@ -169,15 +172,16 @@ private:
 void count(const Band& band, int w, RenderStats& stats) {
     for (int k = 0; k < band.count; ++k) {
         const RowCounts& row = band.counts[k];
-        for (int b = 0; b < 4; ++b) stats.branches[b] += row.branches[b];
+        for (int b = 0; b < branch_count; ++b) stats.branches[b] += row.branches[b];
+        stats.shadow_rays += row.shadow_rays;
+        stats.sphere_tests += row.sphere_tests;
+        stats.plane_tests += row.plane_tests;
         if (row.first_non_finite_j >= 0 && stats.first_non_finite_i < 0) {
             stats.first_non_finite_i = band.first_row + k;
             stats.first_non_finite_j = row.first_non_finite_j;
         }
     }
-    // The article's scene: one primary ray and one sphere test per pixel.
     stats.primary_rays += static_cast<long long>(band.count) * w;
-    stats.sphere_tests += static_cast<long long>(band.count) * w;
 }
 
 // Writes rows_computed when render() leaves, by return or by exception.
@@ -200,12 +204,14 @@ void deliver(Band& band, int w, RenderSink& sink, RenderStats& stats) {
 
 }  // namespace
 
+int image_channels(const Scene& scene) { return is_coloured(scene) ? 3 : 1; }
+
 void render(const Scene& scene, const RenderSettings& settings, const PixelSelection& traced, RenderSink& sink,
             RenderStats* stats) {
     RenderStats local_stats;
     RenderStats& out_stats = stats != nullptr ? *stats : local_stats;
     out_stats = RenderStats{};
-    const ArticleWorld<double> world = article_world(scene);
+    const std::unique_ptr<Kernel> kernel = make_kernel(scene);
     const int w = settings.w;
     const int threads = std::min(resolve_threads(settings.threads), w);
     const int rows_per_band = band_rows(w, threads, !traced.empty());
@@ -215,11 +221,11 @@ void render(const Scene& scene, const RenderSettings& settings, const PixelSelec
     // other to the sink (PNG compression, trace writing), then joins them.
     Band bands[2];
     for (Band& band : bands) {
-        band.pixels.resize(static_cast<std::size_t>(rows_per_band) * w);
+        band.pixels.resize(static_cast<std::size_t>(rows_per_band) * w * kernel->channels());
         band.traces.resize(static_cast<std::size_t>(rows_per_band));
         band.counts.resize(static_cast<std::size_t>(rows_per_band));
     }
-    BandWork work(world, header, traced);
+    BandWork work(*kernel, header, traced);
     const RowsComputed rows_computed{work, out_stats};
     Helpers helpers(work);
 

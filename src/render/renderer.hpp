@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string_view>
 
+#include "render/kernel.hpp"
 #include "render/pixel_selection.hpp"
 #include "render/tracer.hpp"
 #include "scene/scene.hpp"
@@ -15,7 +16,8 @@ namespace promyk {
 class RenderSink {
 public:
     virtual ~RenderSink() = default;
-    // `count` rows of w grey levels each, top first, in order.
+    // `count` rows of w pixels each (w grey levels, or w r, g, b triples for
+    // a coloured scene: image_channels), top first, in order.
     virtual void image_rows(const std::uint8_t* rows, int count) = 0;
     // JSON Lines of traced pixels, whole lines, in row order (i, then j).
     virtual void trace_lines(std::string_view lines) { (void)lines; }
@@ -27,18 +29,17 @@ public:
 struct RenderStats {
     long long rows_computed = 0;  // rows whose pixels were computed (also when interrupted)
     long long primary_rays = 0;   // one per pixel: the ray OE through the pixel's centre
-    long long sphere_tests = 0;   // ray-sphere intersection tests
-    long long branches[4] = {};   // pixels per Branch: miss, dark, lit, non_finite
+    long long shadow_rays = 0;    // one per light a hit faces, when the scene asks for shadows
+    long long sphere_tests = 0;   // ray-sphere intersection tests (primary and shadow rays)
+    long long plane_tests = 0;    // ray-plane intersection tests
+    long long branches[branch_count] = {};  // pixels per Branch
     int first_non_finite_i = -1, first_non_finite_j = -1;  // in row order; -1 if none
 
     long long count(Branch branch) const { return branches[static_cast<int>(branch)]; }
 };
 
-// One row's pixels per branch, and its first non-finite pixel's column.
-struct RowCounts {
-    int branches[4] = {};
-    int first_non_finite_j = -1;
-};
+// 1 for a grey scene, 3 for a coloured one (an RGB image).
+int image_channels(const Scene& scene);
 
 struct RenderSettings {
     int w = 512;
@@ -48,7 +49,8 @@ struct RenderSettings {
 // The number of threads a setting means (0: all cores).
 int resolve_threads(int threads);
 
-// Renders row i of the pane into out[0 .. w): the article's pixel loop body.
+// Renders row i of the pane into out[0 .. w): the article's pixel loop body
+// (the article's kernel; other scenes' rows are Kernel::row).
 RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out);
 
 // Renders the scene; traces the selected pixels. Throws InputError for a scene

@@ -2,7 +2,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "render/kernel.hpp"
 #include "render/quantize.hpp"
+#include "render/stages.hpp"
 #include "scene/scene_json.hpp"
 
 namespace promyk {
@@ -16,17 +18,27 @@ TraceHeader trace_header(const Scene& scene, int w) {
     // format, so the header never has to know the scene's shape.
     header.scene_content = nlohmann::ordered_json::parse(scene_to_json(scene)).dump();
     header.given.push_back({"z_E", scene.z_E});
-    for (const Sphere& sphere : scene.spheres) {
-        header.given.push_back({"S", sphere.S});
-        header.given.push_back({"r", sphere.r});
+    // The scene's values the steps use, by the article's names: unambiguous
+    // only for one sphere and one light (a lesson on several names the group).
+    if (scene.spheres.size() == 1) {
+        header.given.push_back({"S", scene.spheres[0].S});
+        header.given.push_back({"r", scene.spheres[0].r});
     }
-    for (const Light& light : scene.lights) {
-        header.given.push_back({"L", light.L});
-        header.given.push_back({"I", light.I});
+    if (scene.lights.size() == 1) {
+        header.given.push_back({"L", scene.lights[0].L});
+        header.given.push_back({"I", scene.lights[0].I});
     }
-    header.given.push_back({"background", scene.background.x});
+    if (is_grey(scene.background))
+        header.given.push_back({"background", scene.background.x});
+    else
+        header.given.push_back({"background", scene.background});
     header.w = w;
     header.z_E = scene.z_E;
+    const Stages stages = plan_stages(scene);
+    header.effects = effect_ids(scene, stages);
+    if (!stages.article)
+        for (const StageNote& note : stage_notes(scene, stages))
+            if (!note.runs) header.skipped.emplace_back(note.id, note.reason);
     return header;
 }
 
@@ -46,7 +58,7 @@ PixelTrace trace_pixel(const ArticleWorld<double>& world, const TraceHeader& hea
 }
 
 PixelTrace trace_pixel(const Scene& scene, int w, int i, int j) {
-    return trace_pixel(article_world(scene), trace_header(scene, w), i, j);
+    return make_kernel(scene)->trace(trace_header(scene, w), i, j);
 }
 
 }  // namespace promyk

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "render/kernel.hpp"
 #include "render/trace_pixel.hpp"
 #include "render/tracer.hpp"
 #include "trace/trace.hpp"
@@ -99,13 +100,13 @@ TraceSizeEstimate estimate_trace_size(const Scene& scene, int w, const TracedPix
     estimate.pixels = count_traced_pixels(traced, w);
     const auto sample = sample_traced_pixels(traced, w, samples);
     if (sample.empty()) return estimate;
-    const ArticleWorld<double> world = article_world(scene);
+    const std::unique_ptr<Kernel> kernel = make_kernel(scene);
     const TraceHeader header = trace_header(scene, w);
     std::string line;
     std::size_t total = 0;
     for (const auto& [i, j] : sample) {
         line.clear();
-        append_trace_json(line, trace_pixel(world, header, i, j));
+        append_trace_json(line, kernel->trace(header, i, j));
         total += line.size() + 1;  // the newline
     }
     estimate.bytes_per_trace = static_cast<double>(total) / static_cast<double>(sample.size());

@@ -26,7 +26,9 @@ struct ArticleWorld {
 };
 
 // Throws InputError unless the scene is one the article's program handles
-// (exactly one sphere and one light, eye outside the sphere).
+// (exactly one sphere and one light, eye outside the sphere). Other scenes
+// run the general tracer (render/general_tracer.hpp): render/kernel.hpp
+// chooses.
 ArticleWorld<double> article_world(const Scene& scene);
 
 template <class Real>
@@ -41,6 +43,12 @@ PixelResult<Real> trace_ray(const ArticleWorld<Real>& world, const Vec3<Real>& E
     record(Key::E, E);
     const auto t = intersect_sphere_article(E, world.S, world.r, record);
     if (!t) return {world.background, Branch::miss};
+    // The engine's convention: only a hit in front of the eye is drawn. The
+    // eye is outside the sphere here, so both roots are behind it too.
+    if (*t <= 0) {
+        if constexpr (Recorder::records) record(Key::found, "behind");
+        return {world.background, Branch::miss};
+    }
     // A t that is not finite (from a delta that was not) needs no test of its
     // own: it makes P, and so |K|^2 and D, non-finite, which shading checks.
     const Vec3<Real> P = hit_point(*t, E, record);

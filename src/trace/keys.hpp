@@ -27,11 +27,41 @@ enum class Key {
     K_len,       // |K| = sqrt(|K|^2), the distance from P to the light
     K_P,         // K / |K|: the unit direction to the light
     cos_alpha,   // N_P.K_P, the cosine of the angle between them
+    // The extensions (README: the engine's conventions). Several objects:
+    t_far,    // the far root (C + sqrt(delta)) / |E|^2, when the near one is not in front of the eye
+    found,    // what an object's test found: near, far, behind, miss, parallel (a word)
+    nearest,  // the object hit nearest the eye ("sphere 1", "plane 0"), a word
+    flipped,  // why the normal was turned to face the eye: inside, back (a word)
+    // Planes: n_hat = n / |n| and NQ = n_hat.Q, computed once per scene.
+    n_hat,  // the plane's unit normal
+    NQ,     // n_hat.Q
+    NE,     // n_hat.E, the denominator: 0 for a ray parallel to the plane
+    // Shadows: the segment P + sK, 0 < s < 1, towards the light.
+    b_s,      // K.(S - P)
+    c_s,      // |S - P|^2 - r^2
+    delta_s,  // b_s^2 - |K|^2 c_s
+    s_1,      // (b_s - sqrt(delta_s)) / |K|^2
+    s_2,      // (b_s + sqrt(delta_s)) / |K|^2
+    NK,       // n_hat.K, the shadow ray's denominator against a plane
+    s,        // (NQ - n_hat.P) / n_hat.K
+    s_own,    // 2D / |K|^2: where the ray from inside meets its own sphere again
+    blocker,  // the first object between P and the light, or "none" (a word)
+    // Lighting of one light.
+    diffuse,   // I D / (r sqrt(|K|^2)), the article's term
+    V_hat,     // -P / |P|: the unit direction to the eye
+    R_hat,     // 2 cos_alpha N_P - K_P: the mirror of K_P about the normal
+    RV,        // R_hat.V_hat
+    RV_n,      // RV^n, by repeated squaring
+    specular,  // I k_s RV^n
+    contribution,  // c (m (k_a I + k_d diffuse) + specular)
 };
 
-inline constexpr std::array<std::string_view, 17> key_names = {
-    "E", "EE", "SS", "C", "delta", "t", "P", "N", "K", "KK", "D",
-    "Delta", "sqrt_Delta", "N_P", "K_len", "K_P", "cos_alpha",
+inline constexpr std::array<std::string_view, 40> key_names = {
+    "E",       "EE",     "SS",    "C",     "delta",   "t",     "P",       "N",        "K",
+    "KK",      "D",      "Delta", "sqrt_Delta", "N_P", "K_len", "K_P",   "cos_alpha", "t_far",
+    "found",   "nearest", "flipped", "n_hat", "NQ",   "NE",    "b_s",     "c_s",      "delta_s",
+    "s_1",     "s_2",    "NK",    "s",     "s_own",   "blocker", "diffuse", "V_hat",  "R_hat",
+    "RV",      "RV_n",   "specular", "contribution",
 };
 
 // The article's program's own steps, as opposed to the lessons' extra ones.
@@ -43,11 +73,14 @@ constexpr std::string_view key_name(Key key) { return key_names[static_cast<std:
 enum class Branch {
     miss,  // delta <= 0: the ray misses (a tangent ray misses too, as in the article)
     dark,  // D <= 0: the hit point is on the sphere's dark side
-    lit,   // D > 0: lit, I_P = I D / (r sqrt(K))
+    lit,   // D > 0: lit, I_P = I D / (r sqrt(K)) (some light reaches the lit side)
     // A value that decides the branch (delta, |K|^2, D) or the result is NaN
     // or infinite: no comparison with it may pass for a miss, dark or lit.
     non_finite,
+    shadowed,  // the hit faces some light and every light it faces is blocked
 };
+
+inline constexpr int branch_count = 5;
 
 constexpr std::string_view branch_name(Branch branch) {
     switch (branch) {
@@ -59,6 +92,8 @@ constexpr std::string_view branch_name(Branch branch) {
             return "lit";
         case Branch::non_finite:
             return "non-finite";
+        case Branch::shadowed:
+            return "shadowed";
     }
     return "?";
 }

@@ -65,4 +65,24 @@ std::vector<std::string> message_ids(Language language) {
     return ids;
 }
 
+std::string group_text(Language language, std::string_view kind, int index) {
+    const std::string id = (kind == "light" ? "group_" : "object_") + std::string(kind);
+    if (table(language).count(id) == 0) return std::string(kind) + " " + std::to_string(index);
+    return message(language, id, {{"index", std::to_string(index)}});
+}
+
+std::string word_text(Language language, std::string_view word) {
+    for (std::string_view kind : {"sphere", "plane"}) {
+        const std::string prefix = std::string(kind) + " ";
+        if (word.substr(0, prefix.size()) == prefix) {
+            const std::string_view digits = word.substr(prefix.size());
+            if (!digits.empty() && digits.find_first_not_of("0123456789") == std::string_view::npos)
+                return group_text(language, kind, std::stoi(std::string(digits)));
+        }
+    }
+    const std::string id = "word_" + std::string(word);
+    if (table(language).count(id) == 0) return std::string(word);
+    return message(language, id);
+}
+
 }  // namespace promyk

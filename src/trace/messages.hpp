@@ -18,6 +18,14 @@ using MessageArgs = std::vector<std::pair<std::string_view, std::string>>;
 // Throws std::logic_error for an id messages.json lacks (a bug, caught by tests).
 std::string message(Language language, std::string_view id, const MessageArgs& args = {});
 
+// A word a trace step holds (what an object's test found, the nearest
+// object, a blocker) in `language`: "sphere 1" -> "kula 1", "far" -> the
+// message word_far. A word messages.json does not know is returned as it is.
+std::string word_text(Language language, std::string_view word);
+
+// A group's title ("sphere 1", "light 0") in `language`.
+std::string group_text(Language language, std::string_view kind, int index);
+
 // Every message id, for tests: each must exist in every language.
 std::vector<std::string> message_ids(Language language);
 

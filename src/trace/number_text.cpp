@@ -1,4 +1,5 @@
 #include "trace/number_text.hpp"
+#include "trace/messages.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -45,9 +46,10 @@ std::string number_text(double value, Language language, int decimals) {
 
 std::string value_text(const StepValue& value, const std::string& kind, Language language, int decimals) {
     if (const double* number = std::get_if<double>(&value)) return number_text(*number, language, decimals);
+    if (const std::string* word = std::get_if<std::string>(&value)) return word_text(language, *word);
     const Vec3d& v = std::get<Vec3d>(value);
-    const char* open = kind == "vector" ? "[" : "(";
-    const char* close = kind == "vector" ? "]" : ")";
+    const char* open = kind == "vector" || kind == "colour" ? "[" : "(";
+    const char* close = kind == "vector" || kind == "colour" ? "]" : ")";
     const char* separator = language == Language::pl ? "; " : ", ";
     return fmt::format("{}{}{}{}{}{}{}", open, number_text(v.x, language, decimals), separator,
                        number_text(v.y, language, decimals), separator, number_text(v.z, language, decimals), close);

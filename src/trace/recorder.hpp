@@ -4,6 +4,8 @@
 // tracing and traced and untraced results are identical bit for bit.
 #pragma once
 
+#include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -19,26 +21,52 @@ struct NullRecorder {
 
     template <class Value>
     constexpr void operator()(Key, const Value&) const noexcept {}
+    constexpr void begin_group(std::string_view, int) const noexcept {}
+    constexpr void end_group() const noexcept {}
 };
 
-using StepValue = std::variant<double, Vec3d>;
+// A step's value: a number, a point or vector (or an RGB colour), or a word
+// (the nearest object, a blocker, what an object's test found).
+using StepValue = std::variant<double, Vec3d, std::string>;
 
 struct Step {
     Key key;
     StepValue value;
+    int group = -1;  // index into the trace's groups; -1: the top level
+};
+
+// A group of steps: one object tested, one light, one object a shadow ray is
+// tested against (PRODUCT.md section 9: {"group": "sphere", "index": 0}).
+struct TraceGroup {
+    std::string kind;  // sphere, plane, light
+    int index = 0;     // the object's or light's index in the scene
+    int parent = -1;   // the enclosing group, -1 for the top level
 };
 
 class RecordingRecorder {
 public:
     static constexpr bool records = true;
 
-    void operator()(Key key, double value) { steps_.push_back({key, value}); }
-    void operator()(Key key, const Vec3d& value) { steps_.push_back({key, value}); }
+    void operator()(Key key, double value) { steps_.push_back({key, value, current_}); }
+    void operator()(Key key, const Vec3d& value) { steps_.push_back({key, value, current_}); }
+    void operator()(Key key, std::string_view word) { steps_.push_back({key, std::string(word), current_}); }
+
+    void begin_group(std::string_view kind, int index) {
+        groups_.push_back({std::string(kind), index, current_});
+        current_ = static_cast<int>(groups_.size()) - 1;
+    }
+    void end_group() { current_ = groups_.at(static_cast<std::size_t>(current_)).parent; }
 
     std::vector<Step> take_steps() { return std::move(steps_); }
+    std::vector<TraceGroup> take_groups() { return std::move(groups_); }
 
 private:
     std::vector<Step> steps_;
+    std::vector<TraceGroup> groups_;
+    int current_ = -1;
 };
+
+// A group's title as the text trace and messages write it: "sphere 1".
+inline std::string group_title(const TraceGroup& group) { return group.kind + " " + std::to_string(group.index); }
 
 }  // namespace promyk

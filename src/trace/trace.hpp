@@ -3,9 +3,12 @@
 // described by src/trace/trace.schema.json.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <utility>
 
 #include "trace/keys.hpp"
 #include "trace/recorder.hpp"
@@ -32,15 +35,22 @@ struct TraceHeader {
     std::string real = "double";
     std::string formula = "article";
     int spp = 1;
-    std::vector<std::string> effects = {"lambert"};
+    std::vector<std::string> effects = {"lambert"};  // the stages that ran, in order
+    // The stages that did not run, each with the id of the message (in
+    // lessons/messages.json) that says why: {"shadows", "stage_skip_shadows"}.
+    std::vector<std::pair<std::string, std::string>> skipped;
 };
 
 struct PixelTrace {
     TraceHeader header;
     std::vector<Step> steps;
+    std::vector<TraceGroup> groups;  // the groups steps refer to (Step::group)
     Branch branch = Branch::miss;
-    double result = 0;
-    int grey = 0;  // the pixel's 8-bit grey level in the image
+    std::string hit_object;  // "sphere 1", "plane 0"; empty for a miss (and the article's kernel)
+    double result = 0;       // the intensity; for a coloured scene its red channel
+    std::optional<Vec3d> result_rgb;  // a coloured scene's [r, g, b]
+    int grey = 0;  // the pixel's 8-bit grey level in the image (a coloured scene: red)
+    std::array<int, 3> rgb{};  // a coloured scene's 8-bit r, g, b
     // The index into steps of the first value that is NaN or infinite.
     std::optional<std::size_t> first_non_finite;
 };

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "trace/json_text.hpp"
+#include "trace/messages.hpp"
 #include "trace/trace.hpp"
 
 namespace promyk {
@@ -48,6 +49,11 @@ void append_value(std::string& out, const Vec3d& value) {
     }
 }
 
+void append_value(std::string& out, const std::string& word) {
+    out += "\"value\":";
+    append_string(out, word);
+}
+
 void append_header(std::string& out, const TraceHeader& h) {
     fmt::format_to(std::back_inserter(out), "{{\"schema\":{},\"promyk\":", trace_schema_version);
     append_string(out, PROMYK_VERSION);
@@ -73,23 +79,69 @@ void append_header(std::string& out, const TraceHeader& h) {
         append_string(out, h.effects[k]);
     }
     out += ']';
+    if (!h.skipped.empty()) {
+        out += ",\"skipped\":[";
+        for (std::size_t k = 0; k < h.skipped.size(); ++k) {
+            if (k) out += ',';
+            out += "{\"stage\":";
+            append_string(out, h.skipped[k].first);
+            out += ",\"why\":";
+            append_string(out, message(Language::en, h.skipped[k].second));
+            out += '}';
+        }
+        out += ']';
+    }
 }
 
-}  // namespace
+// The chain of groups from the top level down to `group` (empty for -1).
+std::vector<int> group_chain(const std::vector<TraceGroup>& groups, int group) {
+    std::vector<int> chain;
+    for (int g = group; g >= 0; g = groups[static_cast<std::size_t>(g)].parent) chain.insert(chain.begin(), g);
+    return chain;
+}
 
-void append_trace_json(std::string& out, const PixelTrace& trace) {
-    append_header(out, trace.header);
+// Steps in order, nested in their groups: a group's steps are recorded
+// together, so opening and closing groups as the chain changes rebuilds the
+// tree ({"group": "sphere", "index": 0, "steps": [...]}).
+void append_steps(std::string& out, const PixelTrace& trace) {
     out += ",\"steps\":[";
-    for (std::size_t k = 0; k < trace.steps.size(); ++k) {
-        const Step& step = trace.steps[k];
-        if (k) out += ',';
+    std::vector<int> open;   // the groups open now, outermost first
+    bool first = true;       // no element yet in the innermost open array
+    for (const Step& step : trace.steps) {
+        const std::vector<int> chain = group_chain(trace.groups, step.group);
+        std::size_t common = 0;
+        while (common < open.size() && common < chain.size() && open[common] == chain[common]) ++common;
+        while (open.size() > common) {
+            out += "]}";
+            open.pop_back();
+            first = false;
+        }
+        for (std::size_t k = common; k < chain.size(); ++k) {
+            const TraceGroup& group = trace.groups[static_cast<std::size_t>(chain[k])];
+            if (!first) out += ',';
+            out += "{\"group\":";
+            append_string(out, group.kind);
+            fmt::format_to(std::back_inserter(out), ",\"index\":{},\"steps\":[", group.index);
+            open.push_back(chain[k]);
+            first = true;
+        }
+        if (!first) out += ',';
+        first = false;
         out += "{\"key\":";
         append_string(out, key_name(step.key));
         out += ',';
         std::visit([&out](const auto& value) { append_value(out, value); }, step.value);
         out += '}';
     }
+    for (std::size_t k = 0; k < open.size(); ++k) out += "]}";
     out += ']';
+}
+
+}  // namespace
+
+void append_trace_json(std::string& out, const PixelTrace& trace) {
+    append_header(out, trace.header);
+    append_steps(out, trace);
     if (trace.first_non_finite) {
         const std::size_t k = *trace.first_non_finite;
         fmt::format_to(std::back_inserter(out), ",\"first_non_finite\":{{\"index\":{},\"key\":", k);
@@ -98,6 +150,35 @@ void append_trace_json(std::string& out, const PixelTrace& trace) {
     }
     out += ",\"branch\":";
     append_string(out, branch_name(trace.branch));
+    if (!trace.hit_object.empty()) {
+        out += ",\"hit\":";
+        append_string(out, trace.hit_object);
+    }
+    if (trace.result_rgb) {
+        // A coloured scene: [r, g, b], with text beside non-finite channels.
+        out += ",\"result\":[";
+        const Vec3d& c = *trace.result_rgb;
+        append_number(out, c.x);
+        out += ',';
+        append_number(out, c.y);
+        out += ',';
+        append_number(out, c.z);
+        out += ']';
+        if (!finite(c)) {
+            out += ",\"result_text\":[";
+            const double channels[3] = {c.x, c.y, c.z};
+            for (int k = 0; k < 3; ++k) {
+                if (k) out += ',';
+                if (std::isfinite(channels[k]))
+                    out += "null";
+                else
+                    append_string(out, non_finite_text(channels[k]));
+            }
+            out += ']';
+        }
+        fmt::format_to(std::back_inserter(out), ",\"rgb\":[{},{},{}]}}", trace.rgb[0], trace.rgb[1], trace.rgb[2]);
+        return;
+    }
     out += ",\"result\":";
     append_number(out, trace.result);
     if (!std::isfinite(trace.result)) {
@@ -111,10 +192,13 @@ std::optional<std::size_t> first_non_finite_step(const std::vector<Step>& steps)
     for (std::size_t k = 0; k < steps.size(); ++k) {
         const bool ok = std::visit(
             [](const auto& v) {
-                if constexpr (std::is_same_v<std::decay_t<decltype(v)>, double>)
+                using V = std::decay_t<decltype(v)>;
+                if constexpr (std::is_same_v<V, double>)
                     return std::isfinite(v);
-                else
+                else if constexpr (std::is_same_v<V, Vec3d>)
                     return finite(v);
+                else
+                    return true;  // a word
             },
             steps[k].value);
         if (!ok) return k;

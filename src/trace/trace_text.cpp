@@ -73,6 +73,16 @@ std::string header_text(const PixelTrace& trace, const Vocabulary& vocabulary, L
     out += message(language, "trace_numbers", {{"real", h.real}, {"formula", h.formula}, {"spp", std::to_string(h.spp)}}) +
            "\n";
     const std::string separator = language == Language::pl ? "; " : ", ";
+    if (!h.skipped.empty()) {
+        // A scene beyond the article's: what the engine ran and what not, and why.
+        std::string stages;
+        for (const std::string& id : h.effects) stages += (stages.empty() ? "" : separator) + id;
+        const std::string lead = message(language, "trace_stages");
+        out += wrap(lead, stages, display_width(lead), separator);
+        const std::string skipped = message(language, "trace_skipped");
+        for (const auto& [id, reason] : h.skipped)
+            out += wrap(skipped, id + " — " + message(language, reason), display_width(skipped));
+    }
     std::string given;
     for (const GivenValue& value : h.given) {
         given += (given.empty() ? "" : separator) + symbol_of(vocabulary, value.key) + " = " +
@@ -83,18 +93,43 @@ std::string header_text(const PixelTrace& trace, const Vocabulary& vocabulary, L
     return out + '\n';
 }
 
+// The chain of groups from the top level down to `group` (empty for -1).
+std::vector<int> chain_of(const std::vector<TraceGroup>& groups, int group) {
+    std::vector<int> chain;
+    for (int g = group; g >= 0; g = groups[static_cast<std::size_t>(g)].parent) chain.insert(chain.begin(), g);
+    return chain;
+}
+
+// Titles of the groups a step opens ("sphere 1", "light 0"), each on its own
+// line, indented two spaces a level; `open` becomes the step's chain.
+std::string group_titles(const PixelTrace& trace, const Step& step, std::vector<int>& open, Language language) {
+    const std::vector<int> chain = chain_of(trace.groups, step.group);
+    std::size_t common = 0;
+    while (common < open.size() && common < chain.size() && open[common] == chain[common]) ++common;
+    std::string out;
+    for (std::size_t k = common; k < chain.size(); ++k) {
+        const TraceGroup& group = trace.groups[static_cast<std::size_t>(chain[k])];
+        out += std::string(2 * k, ' ') + "▸ " + group_text(language, group.kind, group.index) + "\n";
+    }
+    open = chain;
+    return out;
+}
+
 std::string narrow_steps(const PixelTrace& trace, const Vocabulary& vocabulary, const TraceTextOptions& options) {
     std::size_t key_width = 0;
     for (const Step& step : trace.steps) key_width = std::max(key_width, key_name(step.key).size());
     const std::size_t number_width = std::to_string(trace.steps.size()).size();
-    const std::size_t indent = number_width + 2 + key_width + 2;
     std::string out;
+    std::vector<int> open;
     for (std::size_t k = 0; k < trace.steps.size(); ++k) {
         const Step& step = trace.steps[k];
+        out += group_titles(trace, step, open, options.language);
+        const std::string margin(2 * open.size(), ' ');
+        const std::size_t indent = margin.size() + number_width + 2 + key_width + 2;
         const std::string key(key_name(step.key));
         const VocabularyEntry* entry = vocabulary.find(key);
         const std::string symbol = entry ? entry->symbol : key;
-        const std::string lead = fmt::format("{:>{}}  {}", k + 1, number_width, pad(key, key_width + 2));
+        const std::string lead = fmt::format("{}{:>{}}  {}", margin, k + 1, number_width, pad(key, key_width + 2));
         out += wrap(lead, entry && !entry->formula.empty() ? symbol + " = " + entry->formula : symbol, indent);
         if (options.explain && entry)
             out += wrap(std::string(indent, ' '), options.language == Language::pl ? entry->pl : entry->en, indent);
@@ -114,10 +149,16 @@ std::string wide_steps(const PixelTrace& trace, const Vocabulary& vocabulary, co
                               message(language, "trace_column_value")}};
     for (std::size_t k = 0; k < trace.steps.size(); ++k) {
         const Step& step = trace.steps[k];
-        const std::string key(key_name(step.key));
-        const VocabularyEntry* entry = vocabulary.find(key);
+        // A step in a group is named by its path: "sphere 1 / t".
+        std::string key(key_name(step.key));
+        const std::string bare = key;
+        for (auto it = chain_of(trace.groups, step.group); !it.empty(); it.pop_back()) {
+            const TraceGroup& group = trace.groups[static_cast<std::size_t>(it.back())];
+            key = group_text(language, group.kind, group.index) + " / " + key;
+        }
+        const VocabularyEntry* entry = vocabulary.find(bare);
         rows.push_back({std::to_string(k + 1), key, entry ? entry->symbol : key, entry ? entry->formula : "",
-                        value_of(step.value, vocabulary, key, language)});
+                        value_of(step.value, vocabulary, bare, language)});
     }
     std::size_t widths[4] = {0, 0, 0, 0};
     for (const Row& row : rows) {
@@ -142,9 +183,17 @@ std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, L
     std::string out = "\n" + wrap(branch_lead, branch + (about ? " — " + about_text : ""), display_width(branch_lead));
     const VocabularyEntry* result = vocabulary.find("I_P");
     const std::string I_P = result ? result->symbol : "I_P";
-    const std::string value = number_text(trace.result, language);
+    const std::string value = trace.result_rgb ? value_text(StepValue{*trace.result_rgb}, "colour", language)
+                                               : number_text(trace.result, language);
+    if (!trace.hit_object.empty())
+        out += message(language, "trace_hit") + word_text(language, trace.hit_object) + "\n";
+    // The article's kernel's result is its formula; a general scene's is a sum.
+    const std::string formula = trace.hit_object.empty() ? (result ? result->formula : "")
+                                                         : message(language, "trace_result_sum");
     out += message(language, "trace_result") + I_P + " = " +
-           (trace.branch == Branch::lit && result ? result->formula + " = " : "") + value + "\n";
+           ((trace.branch == Branch::lit || trace.branch == Branch::shadowed) && !formula.empty() ? formula + " = "
+                                                                                                  : "") +
+           value + "\n";
     if (trace.first_non_finite && *trace.first_non_finite < trace.steps.size()) {
         const std::size_t k = *trace.first_non_finite;
         const std::string key(key_name(trace.steps[k].key));
@@ -156,8 +205,10 @@ std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, L
                              {"value", value_of(trace.steps[k].value, vocabulary, key, language)}}),
                     2);
     }
+    const std::string levels = trace.result_rgb ? fmt::format("({}, {}, {})", trace.rgb[0], trace.rgb[1], trace.rgb[2])
+                                                : std::to_string(trace.grey);
     out += wrap(message(language, "trace_grey"),
-                message(language, "trace_grey_rule", {{"grey", std::to_string(trace.grey)}, {"I_P", I_P}}) +
+                message(language, "trace_grey_rule", {{"grey", levels}, {"I_P", I_P}}) +
                     (trace.result != trace.result ? message(language, "trace_grey_nan") : ""),
                 2);
     return out + "\n" + message(language, "trace_note") + "\n";

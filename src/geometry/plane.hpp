@@ -1,0 +1,43 @@
+// Intersecting a plane through Q with unit normal n_hat: the points X with
+// n_hat.X = NQ (NQ = n_hat.Q, computed once per scene). The ray tE meets it
+// at t = NQ / (n_hat.E); a ray parallel to the plane (n_hat.E = 0) misses it
+// without a division, so no infinity or NaN reaches the trace.
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "math/vec3.hpp"
+#include "trace/keys.hpp"
+
+namespace promyk {
+
+template <class Real>
+struct PlaneRoot {
+    Real t;   // > 0 and finite
+    Real NE;  // n_hat.E: > 0 when the eye sees the plane's back
+};
+
+template <class Real, class Recorder>
+std::optional<PlaneRoot<Real>> intersect_plane(const Vec3<Real>& E, const Vec3<Real>& n_hat, Real NQ,
+                                               Recorder& record) {
+    const Real NE = dot(n_hat, E);
+    record(Key::NE, NE);
+    if (NE == 0) {
+        if constexpr (Recorder::records) record(Key::found, "parallel");
+        return std::nullopt;
+    }
+    const Real t = NQ / NE;
+    record(Key::t, t);
+    // t may overflow for a ray all but parallel: the hit is beyond every
+    // double, at the horizon, and is not drawn.
+    if (t > 0 && t <= std::numeric_limits<Real>::max()) {
+        if constexpr (Recorder::records) record(Key::found, "near");
+        return PlaneRoot<Real>{t, NE};
+    }
+    if constexpr (Recorder::records) record(Key::found, t > 0 ? "horizon" : "behind");
+    return std::nullopt;
+}
+
+}  // namespace promyk

@@ -1,0 +1,53 @@
+// Shadow rays: does an object lie strictly between the hit point P and the
+// light, on the segment P + sK with 0 < s < 1? The object that was hit is not
+// tested here: shading/shadow.hpp decides it exactly (no shadow acne).
+#pragma once
+
+#include <cmath>
+
+#include "math/vec3.hpp"
+#include "trace/keys.hpp"
+
+namespace promyk {
+
+// What a segment test found: blocked, or not, or undecided (a value that
+// decides it is NaN or infinite).
+enum class Blocks { no, yes, undecided };
+
+// A sphere blocks when the segment crosses its surface: a root of
+// |P + sK - S|^2 = r^2 in (0, 1).
+template <class Real, class Recorder>
+Blocks sphere_blocks(const Vec3<Real>& P, const Vec3<Real>& K, Real KK, const Vec3<Real>& S, Real r,
+                     Recorder& record) {
+    using std::sqrt;
+    const Vec3<Real> SP = S - P;
+    const Real b_s = dot(K, SP);
+    record(Key::b_s, b_s);
+    const Real c_s = length_squared(SP) - r * r;
+    record(Key::c_s, c_s);
+    const Real delta_s = b_s * b_s - KK * c_s;
+    record(Key::delta_s, delta_s);
+    if (!(delta_s * Real(0) == Real(0))) return Blocks::undecided;
+    if (delta_s <= 0) return Blocks::no;
+    const Real q = sqrt(delta_s);
+    const Real s_1 = (b_s - q) / KK;
+    record(Key::s_1, s_1);
+    const Real s_2 = (b_s + q) / KK;
+    record(Key::s_2, s_2);
+    return (s_1 > 0 && s_1 < 1) || (s_2 > 0 && s_2 < 1) ? Blocks::yes : Blocks::no;
+}
+
+// A plane blocks when the segment crosses it: s = (NQ - n_hat.P) / n_hat.K
+// in (0, 1). A segment parallel to the plane never crosses it.
+template <class Real, class Recorder>
+Blocks plane_blocks(const Vec3<Real>& P, const Vec3<Real>& K, const Vec3<Real>& n_hat, Real NQ, Recorder& record) {
+    const Real NK = dot(n_hat, K);
+    record(Key::NK, NK);
+    if (NK == 0) return Blocks::no;
+    const Real s = (NQ - dot(n_hat, P)) / NK;
+    record(Key::s, s);
+    if (!(s * Real(0) == Real(0))) return Blocks::undecided;
+    return s > 0 && s < 1 ? Blocks::yes : Blocks::no;
+}
+
+}  // namespace promyk

@@ -1,0 +1,51 @@
+// Intersecting a sphere when the eye may be anywhere: the article's near root
+// first (sphere_article.hpp, unchanged), then, when it is not in front of the
+// eye, the far root. Only a root with t > 0 is a hit (README: the engine's
+// conventions): a sphere behind the eye is not drawn, and an eye inside the
+// sphere sees its inside.
+#pragma once
+
+#include <cmath>
+#include <optional>
+
+#include "geometry/sphere_article.hpp"
+#include "math/vec3.hpp"
+#include "trace/keys.hpp"
+
+namespace promyk {
+
+template <class Real>
+struct SphereRoot {
+    Real t;       // the root taken, > 0, or NaN/inf when delta was not finite
+    bool inside;  // the far root: the ray leaves the sphere there (the eye is inside)
+};
+
+template <class Real, class Recorder>
+std::optional<SphereRoot<Real>> intersect_sphere(const Vec3<Real>& E, const Vec3<Real>& S, Real r,
+                                                 Recorder& record) {
+    const std::optional<Real> t = intersect_sphere_article(E, S, r, record);
+    if (!t) {
+        if constexpr (Recorder::records) record(Key::found, "miss");
+        return std::nullopt;
+    }
+    // A NaN t (delta not finite) passes on, to be reported as non-finite.
+    if (!(*t <= 0)) {
+        if constexpr (Recorder::records) record(Key::found, "near");
+        return SphereRoot<Real>{*t, false};
+    }
+    // The same EE, C and delta as the near root's (the compiler shares them).
+    using std::sqrt;
+    const Real EE = length_squared(E);
+    const Real C = dot(E, S);
+    const Real delta = C * C - EE * (length_squared(S) - r * r);
+    const Real t_far = (C + sqrt(delta)) / EE;
+    record(Key::t_far, t_far);
+    if (t_far > 0) {
+        if constexpr (Recorder::records) record(Key::found, "far");
+        return SphereRoot<Real>{t_far, true};
+    }
+    if constexpr (Recorder::records) record(Key::found, "behind");
+    return std::nullopt;
+}
+
+}  // namespace promyk

@@ -1,0 +1,52 @@
+// A scene compiled for the engine, with the row kernel chosen for it once,
+// before any pixel: the article's kernel for the article's world, else the
+// general tracer instantiated with exactly the stages the scene calls for
+// (render/stages.hpp). The renderer and the tracing of single pixels both go
+// through it, so an image and its traces always come from the same code.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+
+#include "render/stages.hpp"
+#include "scene/scene.hpp"
+#include "trace/keys.hpp"
+#include "trace/trace.hpp"
+
+namespace promyk {
+
+// One row's pixels per branch, its first non-finite pixel's column, and the
+// work done (rays and intersection tests).
+struct RowCounts {
+    int branches[branch_count] = {};
+    int first_non_finite_j = -1;
+    long long shadow_rays = 0;
+    long long sphere_tests = 0;
+    long long plane_tests = 0;
+};
+
+class Kernel {
+public:
+    virtual ~Kernel() = default;
+    // 1 for a grey image, 3 for RGB.
+    virtual int channels() const = 0;
+    // Renders row i of the w x w pane into out[0 .. w * channels()).
+    virtual RowCounts row(int w, int i, std::uint8_t* out) const = 0;
+    // Pixel (i, j)'s intensity as rendering computes it (no recorder): the
+    // grey level in all three channels, or r, g, b; and its branch. For
+    // tests and benchmarks: traced and untraced must agree bit for bit.
+    virtual Vec3d intensity(int w, int i, int j, Branch* branch = nullptr) const = 0;
+    // Traces pixel (i, j) of the header's pane (header.w).
+    virtual PixelTrace trace(const TraceHeader& header, int i, int j) const = 0;
+    const Stages& stages() const { return stages_; }
+
+protected:
+    explicit Kernel(const Stages& stages) : stages_(stages) {}
+
+private:
+    Stages stages_;
+};
+
+std::unique_ptr<Kernel> make_kernel(const Scene& scene);
+
+}  // namespace promyk
