@@ -31,7 +31,7 @@ std::string_view stage_formula(std::string_view id) {
     if (id == "sphere") return "Δ/4 = C² − |E|²·(|S|² − r²), a miss when ≤ 0; t = (C − √(Δ/4))/|E|², the far root when t ≤ 0";
     if (id == "plane") return "t = (n̂·Q)/(n̂·E), a miss when n̂·E = 0";
     if (id == "nearest") return "the smallest t > 0, ties going to the earlier object";
-    if (id == "lambert") return "I·D/(r·√|K|²) where D = N·K > 0";
+    if (id == "lambert") return "D = N·K, K = L − P, for each light with D > 0";
     if (id == "ambient") return "k_a·I for each light";
     if (id == "shadows") return "P + s·K, 0 < s < 1, against every object";
     if (id == "phong") return "I·k_s·(R̂·V̂)ⁿ when R̂·V̂ > 0";
@@ -176,7 +176,7 @@ void add_stages(const Scene& scene, SceneReport& report) {
     for (const StageNote& note : stage_notes(scene, stages)) {
         const std::string why = message(Language::en, note.reason);
         if (note.runs)
-            report.stages.push_back(fmt::format("{}: {}; {}", note.id, stage_formula(note.id), why));
+            report.stages.push_back(fmt::format("{}: {} ({})", note.id, why, stage_formula(note.id)));
         else
             report.skipped.push_back(fmt::format("{}: {}", note.id, why));
     }

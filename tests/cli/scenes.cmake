@@ -34,9 +34,9 @@ promyk_cli_test(scene_check_hidden ARGS scene check ${scenes}/hidden_sphere.json
 
 # The stages: what runs, what is skipped and why.
 promyk_cli_test(scene_check_everything ARGS scene check ${PROJECT_SOURCE_DIR}/lessons/scenes/everything.json EXIT 0
-                STDOUT "3 spheres, 1 plane, 2 lights, 4 materials; shadows on\n.*plane 0: Q = \\(0, -1.1, 0\\), n = \\(0, 1, 0\\), material 3\n.*the engine runs.*  - nearest: .*every object is tested; the nearest hit wins\n.*  - shadows: .*  - phong: .*  - colour: ")
+                STDOUT "3 spheres, 1 plane, 2 lights, 4 materials; shadows on\n.*plane 0: Q = \\(0, -1.1, 0\\), n = \\(0, 1, 0\\), material 3\n.*the engine runs.*  - nearest: .*every object is tested; the nearest hit wins .*  - shadows: .*  - phong: .*  - colour: ")
 promyk_cli_test(scene_check_floor ARGS scene check ${PROJECT_SOURCE_DIR}/lessons/scenes/floor.json EXIT 0
-                STDOUT "  - plane: t = .*and skips:\n  - ambient: .*  - shadows: no shadow ray: the scene does not ask for shadows\n  - phong: .*  - colour: one channel")
+                STDOUT "  - plane: the ray is intersected with every plane \\(t = .*and skips:\n  - ambient: .*  - shadows: no shadow ray: the scene does not ask for shadows\n  - phong: .*  - colour: one channel")
 foreach(name floor everything colour phong shadows two_lights two_spheres)
   promyk_cli_test(scene_check_${name}_no_warning ARGS scene check ${PROJECT_SOURCE_DIR}/lessons/scenes/${name}.json EXIT 0)
   set_tests_properties(cli.scene_check_${name}_no_warning PROPERTIES FAIL_REGULAR_EXPRESSION "warnings")
