@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,8 @@
 #include "render/renderer.hpp"
 #include "render/trace_pixel.hpp"
 #include "scene/scene.hpp"
+#include "scene/scene_json.hpp"
+#include "render/stages.hpp"
 
 using namespace promyk;
 
@@ -272,5 +275,95 @@ TEST_CASE("no shadow acne at any scale: a surface never shadows its own lit side
         if (scale >= 1e12) CHECK(naive_acne > lit_side / 10);
         // The naive test's other failure, at small scales: with an epsilon
         // larger than the scene it would miss real shadows (not tested here).
+    }
+}
+
+namespace {
+
+std::vector<Scene> example_scene_files() {
+    std::vector<Scene> scenes;
+    for (const char* name : {"article", "two_spheres", "two_lights", "floor", "shadows", "phong", "colour", "everything"})
+        scenes.push_back(load_scene_file(std::string(PROMYK_SOURCE_DIR "/lessons/scenes/") + name + ".json"));
+    return scenes;
+}
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+}  // namespace
+
+TEST_CASE("traced equals untraced, bit for bit, on every example scene", "[effects]") {
+    for (const Scene& scene : example_scene_files()) {
+        const auto kernel = make_kernel(scene);
+        constexpr int w = 24;
+        const TraceHeader header = trace_header(scene, w);
+        std::vector<std::uint8_t> row(static_cast<std::size_t>(w) * kernel->channels());
+        for (int i = 0; i < w; ++i) {
+            kernel->row(w, i, row.data());
+            for (int j = 0; j < w; ++j) {
+                Branch branch;
+                const Vec3d untraced = kernel->intensity(w, i, j, &branch);
+                const PixelTrace trace = kernel->trace(header, i, j);
+                INFO(scene.name << " (" << i << ", " << j << ")");
+                CHECK(trace.branch == branch);
+                if (trace.result_rgb) {
+                    CHECK(same_bits(trace.result_rgb->x, untraced.x));
+                    CHECK(same_bits(trace.result_rgb->y, untraced.y));
+                    CHECK(same_bits(trace.result_rgb->z, untraced.z));
+                    CHECK(row[3 * j] == trace.rgb[0]);
+                    CHECK(row[3 * j + 2] == trace.rgb[2]);
+                } else {
+                    CHECK(same_bits(trace.result, untraced.x));
+                    CHECK(row[j] == trace.grey);
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("each scene runs exactly the stages it calls for", "[effects]") {
+    const std::vector<Scene> scenes = example_scene_files();
+    auto stages_of = [](const Scene& scene) {
+        std::string out;
+        for (const std::string& id : effect_ids(scene, plan_stages(scene))) out += (out.empty() ? "" : " ") + id;
+        return out;
+    };
+    CHECK(plan_stages(scenes[0]).article);
+    CHECK(stages_of(scenes[0]) == "lambert");
+    CHECK(stages_of(scenes[1]) == "sphere nearest lambert");
+    CHECK(stages_of(scenes[2]) == "sphere lambert");
+    CHECK(stages_of(scenes[3]) == "sphere plane nearest lambert");
+    CHECK(stages_of(scenes[4]) == "sphere plane nearest lambert shadows");
+    CHECK(stages_of(scenes[5]) == "sphere lambert phong");
+    CHECK(stages_of(scenes[6]) == "sphere nearest lambert colour");
+    CHECK(stages_of(scenes[7]) == "sphere plane nearest lambert ambient shadows phong colour");
+    for (std::size_t k = 1; k < scenes.size(); ++k) CHECK_FALSE(plan_stages(scenes[k]).article);
+    CHECK(make_kernel(scenes[6])->channels() == 3);
+    CHECK(make_kernel(scenes[5])->channels() == 1);
+    // A grey colour is still grey: one channel.
+    Scene grey = scenes[1];
+    grey.lights[0].colour = {0.5, 0.5, 0.5};
+    CHECK_FALSE(plan_stages(grey).colour);
+}
+
+TEST_CASE("the general tracer with the article's defaults gives the article's pixels bit for bit", "[effects]") {
+    // Shadows on: the article's scene leaves the article's kernel for the
+    // general one (one sphere cannot shadow its lit side), and every value
+    // must stay the same: the defaults reduce the lighting to I D / (r sqrt(K)).
+    Scene general = article_scene();
+    general.shadows = true;
+    const auto article = make_kernel(article_scene());
+    const auto kernel = make_kernel(general);
+    REQUIRE(article->stages().article);
+    REQUIRE_FALSE(kernel->stages().article);
+    constexpr int w = 64;
+    for (int i = 0; i < w; ++i) {
+        for (int j = 0; j < w; ++j) {
+            Branch a, b;
+            const double expected = article->intensity(w, i, j, &a).x;
+            const double got = kernel->intensity(w, i, j, &b).x;
+            INFO("(" << i << ", " << j << ")");
+            CHECK(same_bits(expected, got));
+            CHECK(a == b);
+        }
     }
 }
