@@ -76,7 +76,7 @@ TEST_CASE("a ray straight onto a plane facing the eye: t, P and cos alpha = 1 by
     scene.lights = {Light{{0, 0, 1}, 0.8}};          // on the ray, between eye and plane
     const PixelTrace trace = trace_pixel(scene, 1, 0, 0);  // E = (0, 0, 1)
     CHECK(number(trace, Key::NE, "plane 0") == -1);
-    CHECK(number(trace, Key::t, "plane 0") == 5);
+    CHECK(number(trace, Key::t_plane, "plane 0") == 5);
     CHECK(word(trace, Key::nearest) == "plane 0");
     CHECK(vector(trace, Key::P) == Vec3d{0, 0, 5});
     CHECK(find_step(trace, Key::flipped) == nullptr);
@@ -91,7 +91,7 @@ TEST_CASE("a ray straight onto a plane facing the eye: t, P and cos alpha = 1 by
         const PixelTrace back = trace_pixel(scene, 1, 0, 0);
         CHECK(number(back, Key::NE, "plane 0") == 1);
         CHECK(word(back, Key::flipped) == "back");
-        CHECK(vector(back, Key::N) == Vec3d{0, 0, -1});
+        CHECK(vector(back, Key::N_plane) == Vec3d{0, 0, -1});
         CHECK(back.result == 0.8);
     }
 }
@@ -105,7 +105,7 @@ TEST_CASE("a ray parallel to a plane misses it without a division", "[effects]")
         const PixelTrace trace = trace_pixel(scene, 3, 1, j);
         CHECK(number(trace, Key::NE, "plane 0") == 0);
         CHECK(word(trace, Key::found, "plane 0") == "parallel");
-        CHECK(find_step(trace, Key::t, "plane 0") == nullptr);
+        CHECK(find_step(trace, Key::t_plane, "plane 0") == nullptr);
         CHECK(trace.branch == Branch::miss);
         CHECK_FALSE(trace.first_non_finite.has_value());
     }
@@ -116,7 +116,7 @@ TEST_CASE("a ray parallel to a plane misses it without a division", "[effects]")
 
 TEST_CASE("a light straight above a point of the floor: cos alpha = 1, I_P = I", "[effects]") {
     const PixelTrace trace = trace_pixel(floor_scene(), 2, 1, 0);
-    CHECK(number(trace, Key::t, "plane 0") == 2);
+    CHECK(number(trace, Key::t_plane, "plane 0") == 2);
     CHECK(vector(trace, Key::P) == Vec3d{-1, -1, 2});
     CHECK(vector(trace, Key::K, "light 0") == Vec3d{0, 3, 0});
     CHECK(number(trace, Key::cos_alpha, "light 0") == 1);

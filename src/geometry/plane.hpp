@@ -34,7 +34,7 @@ std::optional<PlaneRoot<Real>> intersect_plane(const Vec3<Real>& E, const Vec3<R
         return std::nullopt;
     }
     const Real t = NQ / NE;
-    record(Key::t, t);
+    record(Key::t_plane, t);
     // t may overflow for a ray all but parallel: the hit is beyond every
     // double, at the horizon, and is not drawn.
     if (t > 0 && t <= std::numeric_limits<Real>::max()) {

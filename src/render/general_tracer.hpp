@@ -124,7 +124,7 @@ GeneralResult<typename World<Real, Rgb>::Intensity> trace_general(const World<Re
     if (undecided) return Result{nan_of<Real, Rgb>(), Branch::non_finite};
     if (kind == 0) return Result{world.background, Branch::miss};
     if constexpr (Recorder::records) record(Key::nearest, object_name(kind, index));
-    record(Key::t, best_t);
+    record(Key::t_hit, best_t);
 
     // The hit: P, and the normal N facing the eye, of length r (1 for a plane).
     const Vec3<Real> P = best_t * E;
@@ -151,8 +151,12 @@ GeneralResult<typename World<Real, Rgb>::Intensity> trace_general(const World<Re
             if constexpr (Recorder::records) record(Key::flipped, "back");
         }
     }
-    record(Key::N, N);
-    if constexpr (Recorder::records) record(Key::N_P, N / r);
+    if (kind == 1) {
+        record(Key::N, N);
+        if constexpr (Recorder::records) record(Key::N_P, N / r);
+    } else {
+        record(Key::N_plane, N);  // already of length 1
+    }
     const auto& surface = world.materials[static_cast<std::size_t>(material)];
     Vec3<Real> V_hat{};
     if constexpr (Sw::phong) {
