@@ -98,3 +98,57 @@ TEST_CASE("a signal stops the threads inside a band, before its rows are compute
     REQUIRE(WIFEXITED(status));
     CHECK(WEXITSTATUS(status) == 0);
 }
+
+namespace {
+
+// Two spheres on a floor, two lights: every kind of work and branch.
+Scene busy_scene(bool shadows) {
+    Scene scene;
+    scene.name = "busy";
+    scene.shadows = shadows;
+    scene.spheres = {Sphere{{-0.5, -0.3, 3.2}, 0.8}, Sphere{{0.8, 0.2, 4.5}, 1.1}};
+    scene.planes = {Plane{{0, -1.1, 0}, {0, 1, 0}}};
+    scene.lights = {Light{{1.5, 3, 1}, 0.7}, Light{{-3, 1, 2}, 0.4}};
+    return scene;
+}
+
+}  // namespace
+
+TEST_CASE("render counts shadow rays and tests by shape exactly, as the traces account for them",
+          "[render-stats][effects]") {
+    for (const bool shadows : {false, true}) {
+        const Scene scene = busy_scene(shadows);
+        constexpr int w = 24;
+        // Expected from the traces: one shadow ray for every light a hit faces
+        // (D > 0 in its light group), and every ray tests every object.
+        long long faced = 0;
+        long long branches[branch_count] = {};
+        for (int i = 0; i < w; ++i) {
+            for (int j = 0; j < w; ++j) {
+                const PixelTrace trace = trace_pixel(scene, w, i, j);
+                ++branches[static_cast<int>(trace.branch)];
+                for (const Step& step : trace.steps)
+                    if (step.key == Key::D && step.group >= 0 && trace.groups[step.group].kind == "light" &&
+                        std::get<double>(step.value) > 0)
+                        ++faced;
+            }
+        }
+        for (const int threads : {1, 2}) {
+            NullSink sink;
+            RenderStats stats;
+            render(scene, {w, threads}, PixelSelection{}, sink, &stats);
+            INFO("shadows " << shadows << ", threads " << threads);
+            const long long pixels = w * w;
+            CHECK(stats.primary_rays == pixels);
+            CHECK(stats.shadow_rays == (shadows ? faced : 0));
+            CHECK(stats.sphere_tests == (stats.primary_rays + stats.shadow_rays) * 2);
+            CHECK(stats.plane_tests == (stats.primary_rays + stats.shadow_rays) * 1);
+            for (int b = 0; b < branch_count; ++b) CHECK(stats.branches[b] == branches[b]);
+        }
+        CHECK(faced > 200);
+        CHECK(branches[static_cast<int>(Branch::shadowed)] > (shadows ? 10 : -1));
+        if (!shadows) CHECK(branches[static_cast<int>(Branch::shadowed)] == 0);
+        CHECK(branches[static_cast<int>(Branch::miss)] > 0);
+        CHECK(branches[static_cast<int>(Branch::dark)] > 0);
+    }
+}

@@ -71,6 +71,30 @@ TEST_CASE("every field of a scene changes its hash", "[scene-hash]") {
         {"L.y", [](Scene& s) { s.lights[0].L.y = 1.25; }},
         {"L.z", [](Scene& s) { s.lights[0].L.z = 1.25; }},
         {"I", [](Scene& s) { s.lights[0].I = 0.75; }},
+        // The fields the format grew; each is at its default in the article.
+        {"background colour", [](Scene& s) { s.background = {0.5, 0.5, 0.25}; }},
+        {"background grey and -0", [](Scene& s) { s.background = {0, -0.0, 0}; }},
+        {"shadows", [](Scene& s) { s.shadows = true; }},
+        {"light colour", [](Scene& s) { s.lights[0].colour = {1, 1, 0.5}; }},
+        {"a second light", [](Scene& s) { s.lights.push_back(s.lights[0]); }},
+        {"a second sphere", [](Scene& s) { s.spheres.push_back(s.spheres[0]); }},
+        {"a plane", [](Scene& s) { s.planes = {promyk::Plane{{0, -1, 0}, {0, 1, 0}}}; }},
+        {"plane Q", [](Scene& s) { s.planes = {promyk::Plane{{0, -1.5, 0}, {0, 1, 0}}}; }},
+        {"plane n", [](Scene& s) { s.planes = {promyk::Plane{{0, -1, 0}, {0, 2, 0}}}; }},
+        {"plane material", [](Scene& s) {
+             s.materials = {promyk::Material{}};
+             s.planes = {promyk::Plane{{0, -1, 0}, {0, 1, 0}, 0}};
+         }},
+        {"a default material, unused", [](Scene& s) { s.materials = {promyk::Material{}}; }},
+        {"sphere material", [](Scene& s) {
+             s.materials = {promyk::Material{}};
+             s.spheres[0].material = 0;
+         }},
+        {"ambient", [](Scene& s) { s.materials = {promyk::Material{0.25, 1, 0, 10, promyk::white}}; }},
+        {"diffuse", [](Scene& s) { s.materials = {promyk::Material{0, 0.5, 0, 10, promyk::white}}; }},
+        {"specular", [](Scene& s) { s.materials = {promyk::Material{0, 1, 0.5, 10, promyk::white}}; }},
+        {"exponent", [](Scene& s) { s.materials = {promyk::Material{0, 1, 0, 11, promyk::white}}; }},
+        {"material colour", [](Scene& s) { s.materials = {promyk::Material{0, 1, 0, 10, {1, 0.5, 1}}}; }},
     };
     std::set<std::string> hashes = {promyk::scene_hash(article)};
     for (const Change& change : changes) {
@@ -84,6 +108,15 @@ TEST_CASE("every field of a scene changes its hash", "[scene-hash]") {
     // One ulp of r is a different image, so a different hash.
     Scene scene = article;
     scene.spheres[0].r = std::nextafter(scene.spheres[0].r, 2.0);
+    CHECK(promyk::scene_hash(scene) != promyk::scene_hash(article));
+    // The defaults, set explicitly, are the article's scene: the same hash.
+    scene = article;
+    scene.shadows = false;
+    scene.lights[0].colour = promyk::white;
+    scene.spheres[0].material = promyk::no_material;
+    CHECK(promyk::scene_hash(scene) == promyk::scene_hash(article));
+    // A colour channel's last bit changes it.
+    scene.lights[0].colour.z = std::nextafter(1.0, 0.0);
     CHECK(promyk::scene_hash(scene) != promyk::scene_hash(article));
     // The source file name is not part of the scene's image.
     scene = article;
@@ -105,6 +138,61 @@ TEST_CASE("the scene writer writes the article's scene as the documented text", 
         "  ]\n"
         "}\n";
     CHECK(promyk::scene_to_json(promyk::article_scene()) == expected);
+}
+
+TEST_CASE("the scene writer writes every new field in the documented order and form", "[scene-json]") {
+    promyk::Scene scene = promyk::article_scene();
+    scene.name = "rich";
+    scene.background = {0.25, 0.5, 1};
+    scene.shadows = true;
+    scene.materials = {promyk::Material{0.1, 0.8, 0.4, 30, {0.9, 0.25, 0.2}}, promyk::Material{}};
+    scene.spheres[0].material = 1;
+    scene.spheres.push_back(promyk::Sphere{{1, 0, 5}, 0.5});
+    scene.planes = {promyk::Plane{{0, -1.1, 0}, {0, 1, 0}, 0}};
+    scene.lights[0].colour = {1, 0.95, 0.8};
+    scene.lights.push_back(promyk::Light{{-2, 1, 0}, 0.5});
+    const std::string expected =
+        "{\n"
+        "  \"name\": \"rich\",\n"
+        "  \"z_E\": 2,\n"
+        "  \"background\": [0.25, 0.5, 1],\n"
+        "  \"shadows\": true,\n"
+        "  \"spheres\": [\n"
+        "    {\"S\": [0, 0, 3.2], \"r\": 1.1, \"material\": 1},\n"
+        "    {\"S\": [1, 0, 5], \"r\": 0.5}\n"
+        "  ],\n"
+        "  \"planes\": [\n"
+        "    {\"Q\": [0, -1.1, 0], \"n\": [0, 1, 0], \"material\": 0}\n"
+        "  ],\n"
+        "  \"lights\": [\n"
+        "    {\"L\": [1.5, 1, 1], \"I\": 1, \"colour\": [1, 0.95, 0.8]},\n"
+        "    {\"L\": [-2, 1, 0], \"I\": 0.5}\n"
+        "  ],\n"
+        "  \"materials\": [\n"
+        "    {\"ambient\": 0.1, \"diffuse\": 0.8, \"specular\": 0.4, \"exponent\": 30, \"colour\": [0.9, 0.25, 0.2]},\n"
+        "    {\"ambient\": 0, \"diffuse\": 1, \"specular\": 0, \"exponent\": 10, \"colour\": [1, 1, 1]}\n"
+        "  ]\n"
+        "}\n";
+    CHECK(promyk::scene_to_json(scene) == expected);
+}
+
+TEST_CASE("the scene writer with every default written out", "[scene-json]") {
+    const std::string expected =
+        "{\n"
+        "  \"name\": \"article\",\n"
+        "  \"z_E\": 2,\n"
+        "  \"background\": 0.5,\n"
+        "  \"shadows\": false,\n"
+        "  \"spheres\": [\n"
+        "    {\"S\": [0, 0, 3.2], \"r\": 1.1}\n"
+        "  ],\n"
+        "  \"planes\": [],\n"
+        "  \"lights\": [\n"
+        "    {\"L\": [1.5, 1, 1], \"I\": 1, \"colour\": [1, 1, 1]}\n"
+        "  ],\n"
+        "  \"materials\": []\n"
+        "}\n";
+    CHECK(promyk::scene_to_json(promyk::article_scene(), promyk::SceneDefaults::written) == expected);
 }
 
 TEST_CASE("the scene writer writes a hand-written scene file back as it was written", "[scene-json]") {

@@ -50,23 +50,43 @@ void check_same_number(double a, double b) {
     CHECK(bits(a) == bits(b));
 }
 
+void check_same_vector(const promyk::Vec3d& a, const promyk::Vec3d& b) {
+    check_same_number(a.x, b.x);
+    check_same_number(a.y, b.y);
+    check_same_number(a.z, b.z);
+}
+
+// Every field of the model (not `source`), down to the bits.
 void check_same_scene(const Scene& a, const Scene& b) {
     CHECK(a.name == b.name);
     check_same_number(a.z_E, b.z_E);
-    check_same_number(a.background.x, b.background.x);
+    check_same_vector(a.background, b.background);
+    CHECK(a.shadows == b.shadows);
     REQUIRE(a.spheres.size() == b.spheres.size());
     for (std::size_t k = 0; k < a.spheres.size(); ++k) {
-        check_same_number(a.spheres[k].S.x, b.spheres[k].S.x);
-        check_same_number(a.spheres[k].S.y, b.spheres[k].S.y);
-        check_same_number(a.spheres[k].S.z, b.spheres[k].S.z);
+        check_same_vector(a.spheres[k].S, b.spheres[k].S);
         check_same_number(a.spheres[k].r, b.spheres[k].r);
+        CHECK(a.spheres[k].material == b.spheres[k].material);
+    }
+    REQUIRE(a.planes.size() == b.planes.size());
+    for (std::size_t k = 0; k < a.planes.size(); ++k) {
+        check_same_vector(a.planes[k].Q, b.planes[k].Q);
+        check_same_vector(a.planes[k].n, b.planes[k].n);
+        CHECK(a.planes[k].material == b.planes[k].material);
     }
     REQUIRE(a.lights.size() == b.lights.size());
     for (std::size_t k = 0; k < a.lights.size(); ++k) {
-        check_same_number(a.lights[k].L.x, b.lights[k].L.x);
-        check_same_number(a.lights[k].L.y, b.lights[k].L.y);
-        check_same_number(a.lights[k].L.z, b.lights[k].L.z);
+        check_same_vector(a.lights[k].L, b.lights[k].L);
         check_same_number(a.lights[k].I, b.lights[k].I);
+        check_same_vector(a.lights[k].colour, b.lights[k].colour);
+    }
+    REQUIRE(a.materials.size() == b.materials.size());
+    for (std::size_t k = 0; k < a.materials.size(); ++k) {
+        check_same_number(a.materials[k].ambient, b.materials[k].ambient);
+        check_same_number(a.materials[k].diffuse, b.materials[k].diffuse);
+        check_same_number(a.materials[k].specular, b.materials[k].specular);
+        CHECK(a.materials[k].exponent == b.materials[k].exponent);
+        check_same_vector(a.materials[k].colour, b.materials[k].colour);
     }
 }
 
@@ -133,10 +153,74 @@ TEST_CASE("fields left out take their documented defaults", "[scene]") {
         parse_scene(R"({"spheres": [{"S": [0, 0, 3], "r": 1}], "lights": [{"L": [1, 2, 3]}]})", "test.json");
     CHECK(scene.name == "untitled");
     CHECK(scene.z_E == 2);
-    CHECK(scene.background.x == 0.5);
+    CHECK(scene.background == promyk::Colour{0.5, 0.5, 0.5});
+    CHECK_FALSE(scene.shadows);
+    CHECK(scene.planes.empty());
+    CHECK(scene.materials.empty());
     CHECK(scene.source == "test.json");
+    REQUIRE(scene.spheres.size() == 1);
+    CHECK(scene.spheres[0].material == promyk::no_material);
     REQUIRE(scene.lights.size() == 1);
     CHECK(scene.lights[0].I == 1);
+    CHECK(scene.lights[0].colour == promyk::Colour{1, 1, 1});
+
+    // A plane's material, and a material's fields.
+    const Scene other = parse_scene(
+        R"({"planes": [{"Q": [0, -1, 0], "n": [0, 2, 0]}], "lights": [{"L": [1, 2, 3]}], "materials": [{}]})",
+        "test.json");
+    CHECK(other.spheres.empty());
+    REQUIRE(other.planes.size() == 1);
+    CHECK(other.planes[0].material == promyk::no_material);
+    CHECK(other.planes[0].n == promyk::Vec3d{0, 2, 0});  // kept as written: the engine normalises it
+    REQUIRE(other.materials.size() == 1);
+    CHECK(other.materials[0].ambient == 0);
+    CHECK(other.materials[0].diffuse == 1);
+    CHECK(other.materials[0].specular == 0);
+    CHECK(other.materials[0].exponent == 10);
+    CHECK(other.materials[0].colour == promyk::Colour{1, 1, 1});
+}
+
+TEST_CASE("every example scene in lessons/scenes loads, as its file says", "[scene]") {
+    const std::string folder = std::string(PROMYK_SOURCE_DIR) + "/lessons/scenes/";
+    int loaded = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+        const std::string name = entry.path().filename().string();
+        if (entry.path().extension() != ".json" || name == "scene.schema.json") continue;
+        INFO(name);
+        CHECK_NOTHROW(promyk::load_scene_file(entry.path().string()));
+        ++loaded;
+    }
+    CHECK(loaded >= 8);
+
+    const Scene everything = promyk::load_scene_file(folder + "everything.json");
+    CHECK(everything.name == "everything");
+    CHECK(everything.shadows);
+    CHECK(everything.background == promyk::Colour{0.5, 0.6, 0.75});
+    REQUIRE(everything.spheres.size() == 3);
+    CHECK(everything.spheres[1].S == promyk::Vec3d{0.9, 0.1, 4.2});
+    CHECK(everything.spheres[1].r == 1.0);
+    CHECK(everything.spheres[2].material == 2);
+    REQUIRE(everything.planes.size() == 1);
+    CHECK(everything.planes[0].Q == promyk::Vec3d{0, -1.1, 0});
+    CHECK(everything.planes[0].n == promyk::Vec3d{0, 1, 0});
+    CHECK(everything.planes[0].material == 3);
+    REQUIRE(everything.lights.size() == 2);
+    CHECK(everything.lights[1].L == promyk::Vec3d{-3, 1.5, 2});
+    CHECK(everything.lights[1].I == 0.4);
+    CHECK(everything.lights[1].colour == promyk::Colour{0.6, 0.7, 1});
+    REQUIRE(everything.materials.size() == 4);
+    CHECK(everything.materials[1].ambient == 0.1);
+    CHECK(everything.materials[1].diffuse == 0.7);
+    CHECK(everything.materials[1].specular == 0.6);
+    CHECK(everything.materials[1].exponent == 80);
+    CHECK(everything.materials[1].colour == promyk::Colour{0.25, 0.45, 0.9});
+    CHECK(everything.materials[2].specular == 0);  // left out: the default
+    CHECK(everything.materials[2].exponent == 10);
+
+    const Scene colour = promyk::load_scene_file(folder + "colour.json");
+    CHECK(colour.background == promyk::Colour{0.55, 0.7, 0.9});
+    CHECK(colour.lights.at(0).colour == promyk::Colour{1, 0.95, 0.8});
+    CHECK_FALSE(colour.shadows);
 }
 
 TEST_CASE("limits that are allowed load", "[scene]") {
@@ -149,7 +233,16 @@ TEST_CASE("limits that are allowed load", "[scene]") {
     for (int k = 0; k < 200; ++k) polish += "\xC5\x9B";  // ś
     check_accepted(scene_text(R"("name": ")" + polish + R"(",)"));
     check_accepted("\xEF\xBB\xBF" + scene_text());                   // a byte order mark
-    check_accepted(scene_text("", R"({"S": [0, 0, -3], "r": 1})"));  // behind the eye: the article does not check
+    check_accepted(scene_text("", R"({"S": [0, 0, -3], "r": 1})"));  // behind the eye: not drawn, but legal
+    check_accepted(scene_text(R"("background": [0, 1, 0.5],)"));
+    check_accepted(scene_text(R"("background": [0, 0, 0], "shadows": false,)"));
+    check_accepted(scene_text(R"("materials": [{"ambient": 0, "diffuse": 0, "specular": 1e300, "exponent": 1}],)",
+                              R"({"S": [0, 0, 3.2], "r": 1.1, "material": 0})"));
+    check_accepted(scene_text(R"("materials": [{"exponent": 10000}, {"exponent": 20.0}],)",
+                              R"({"S": [0, 0, 3.2], "r": 1.1, "material": 1.0})"));
+    check_accepted(scene_text("", article_sphere, R"({"L": [1, 1, 1], "colour": [0, 0, 1]})"));
+    check_accepted(scene_text(R"("planes": [{"Q": [0, 0, 0], "n": [1e-150, 0, 0]}],)"));  // n·n = 1e-300
+    check_accepted(scene_text(R"("planes": [{"Q": [0, -1, 0], "n": [0, 1e150, 0]}],)"));
 }
 
 TEST_CASE("a scene that is not a JSON object is rejected", "[scene]") {
@@ -249,26 +342,183 @@ TEST_CASE("duplicate keys are rejected at the second occurrence", "[scene]") {
     check_rejected(R"({"spheres": [], "spheres": []})", "/spheres", {"duplicate"});
 }
 
-TEST_CASE("this version needs exactly one sphere and one light", "[scene]") {
-    check_rejected(scene_text("", article_sphere + ", " + article_sphere), "/spheres", {"exactly one sphere", "got 2"});
-    check_rejected(R"({"spheres": [], "lights": [{"L": [1, 1, 1]}]})", "/spheres", {"exactly one sphere", "got 0"});
-    check_rejected(scene_text("", article_sphere, article_light + ", " + article_light), "/lights",
-                   {"exactly one light", "got 2"});
-    check_rejected(R"({"spheres": [{"S": [0, 0, 3], "r": 1}], "lights": []})", "/lights", {"exactly one light"});
-    check_rejected(R"({"lights": [{"L": [1, 1, 1]}]})", "/spheres", {"missing", "spheres"});
+TEST_CASE("a scene needs at least one object and at least one light", "[scene]") {
+    const Scene many = parse_scene(scene_text("", article_sphere + ", " + article_sphere + ", " + article_sphere,
+                                              article_light + ", " + article_light),
+                                   "test.json");
+    CHECK(many.spheres.size() == 3);
+    CHECK(many.lights.size() == 2);
+    const Scene plane_only =
+        parse_scene(R"({"planes": [{"Q": [0, -1, 0], "n": [0, 1, 0]}], "lights": [{"L": [1, 1, 1]}]})", "test.json");
+    CHECK(plane_only.spheres.empty());
+    CHECK(plane_only.planes.size() == 1);
+    check_rejected(R"({"spheres": [], "lights": [{"L": [1, 1, 1]}]})", "/spheres",
+                   {"no objects", "sphere", "plane"});
+    check_rejected(R"({"spheres": [], "planes": [], "lights": [{"L": [1, 1, 1]}]})", "/spheres", {"no objects"});
+    check_rejected(R"({"lights": [{"L": [1, 1, 1]}]})", "/spheres", {"no objects", "\"spheres\"", "\"planes\""});
+    check_rejected(R"({"spheres": [{"S": [0, 0, 3], "r": 1}], "lights": []})", "/lights",
+                   {"at least one light", "got none"});
     check_rejected(R"({"spheres": [{"S": [0, 0, 3], "r": 1}]})", "/lights", {"missing", "lights"});
+    check_rejected(R"({"spheres": [{"S": [0, 0, 3], "r": 1}], "planes": {}, "lights": []})", "/planes",
+                   {"planes must be an array of planes", "object"});
+    check_rejected(R"({"spheres": [{"S": [0, 0, 3], "r": 1}], "materials": 1, "lights": []})", "/materials",
+                   {"materials must be an array of materials", "number"});
     check_rejected(scene_text("", R"({"r": 1})"), "/spheres/0/S", {"missing", "'S'"});
     check_rejected(scene_text("", R"({"S": [0, 0, 3]})"), "/spheres/0/r", {"missing", "'r'"});
     check_rejected(scene_text("", article_sphere, R"({"I": 1})"), "/lights/0/L", {"missing", "'L'"});
 }
 
-TEST_CASE("the eye inside or on the sphere is rejected", "[scene]") {
-    check_rejected(scene_text("", R"({"S": [0, 0, 1], "r": 2})"), "/spheres/0", {"inside or on", "article"});
-    check_rejected(scene_text("", R"({"S": [0, 0, 3.2], "r": 3.2})"), "/spheres/0", {"inside or on"});
-    check_rejected(scene_text("", R"({"S": [0, 0, 1e-200], "r": 1e-201})"), "/spheres/0",
-                   {"inside or on"});  // |S|² − r² underflows to 0 in double
+TEST_CASE("the eye inside or on a sphere is accepted; |S|² − r² must be finite", "[scene]") {
+    // The engine sees the inside (the far root); scene check warns.
+    const Scene inside = parse_scene(scene_text("", R"({"S": [0, 0, 1], "r": 2})"), "test.json");
+    CHECK(inside.spheres.at(0).r == 2);
+    check_accepted(scene_text("", R"({"S": [0, 0, 3.2], "r": 3.2})"));
+    check_accepted(scene_text("", R"({"S": [0, 0, 1e-200], "r": 1e-201})"));  // |S|² − r² underflows to 0
     check_accepted(scene_text("", R"({"S": [0, 0, 3.2], "r": 3.1999999999999997})"));
-    check_rejected(scene_text("", R"({"S": [0, 0, 1e200], "r": 1})"), "/spheres/0", {"not finite"});
+    check_rejected(scene_text("", R"({"S": [0, 0, 1e200], "r": 1})"), "/spheres/0", {"not finite", "|S|² − r²"});
+    check_rejected(scene_text("", article_sphere + R"(, {"S": [0, 0, 3], "r": 1e155})"), "/spheres/1",
+                   {"too far or too large", "not finite"});
+}
+
+TEST_CASE("planes: Q and n are required, n must be a usable direction", "[scene]") {
+    const auto plane = [](const std::string& body) { return scene_text(R"("planes": [)" + body + "],"); };
+    check_rejected(plane("3"), "/planes/0", {"a plane must be an object", "\"Q\"", "number"});
+    check_rejected(plane(R"({"n": [0, 1, 0]})"), "/planes/0/Q", {"missing required key 'Q'", "point"});
+    check_rejected(plane(R"({"Q": [0, 0, 0]})"), "/planes/0/n", {"missing required key 'n'", "normal"});
+    check_rejected(plane(R"({"Q": [0, 0], "n": [0, 1, 0]})"), "/planes/0/Q", {"3 numbers", "got 2"});
+    check_rejected(plane(R"({"Q": [0, 0, 0], "n": [0, "1", 0]})"), "/planes/0/n/1", {"n[1] (y)", "number"});
+    check_rejected(plane(R"({"Q": [0, 0, 0], "n": [0, 0, 0]})"), "/planes/0/n", {"zero vector", "normal"});
+    check_rejected(plane(R"({"Q": [0, 0, 0], "n": [-0.0, 0, 0]})"), "/planes/0/n", {"zero vector"});
+    check_rejected(plane(R"({"Q": [0, 0, 0], "n": [1e200, 0, 0]})"), "/planes/0/n",
+                   {"too long", "n·n is not finite"});
+    check_rejected(plane(R"({"Q": [0, 0, 0], "n": [0, 1e-200, 0]})"), "/planes/0/n",
+                   {"too short", "n·n underflows to 0"});
+    check_rejected(plane(R"({"Q": [1.5e308, 1.5e308, 0], "n": [1, 1, 0]})"), "/planes/0",
+                   {"too far", "n̂·Q", "not finite"});
+    // The second plane is named by its index.
+    check_rejected(plane(R"({"Q": [0, 0, 0], "n": [0, 1, 0]}, {"Q": [0, 0, 0], "n": [0, 0, 0]})"), "/planes/1/n",
+                   {"zero vector"});
+}
+
+TEST_CASE("materials: coefficients >= 0, a whole exponent from 1 to 10000, a colour", "[scene]") {
+    const auto material = [](const std::string& body) { return scene_text(R"("materials": [)" + body + "],"); };
+    check_rejected(material("[]"), "/materials/0", {"a material must be an object", "array"});
+    check_rejected(material(R"({"ambient": -0.1})"), "/materials/0/ambient", {"ambient", ">= 0", "got -0.1"});
+    check_rejected(material(R"({"diffuse": -1})"), "/materials/0/diffuse", {"diffuse", ">= 0", "got -1"});
+    check_rejected(material(R"({"specular": -2e-300})"), "/materials/0/specular", {"specular", ">= 0"});
+    check_rejected(material(R"({"diffuse": "1"})"), "/materials/0/diffuse", {"diffuse must be a number", "string"});
+    check_rejected(material(R"({"specular": 1e400})"), "/materials/0/specular", {"not finite"});
+    for (const char* bad : {"0", "2.5", "10001", "1e300", "-3", "0.5"}) {
+        INFO("exponent " << bad);
+        check_rejected(material(std::string(R"({"exponent": )") + bad + "}"), "/materials/0/exponent",
+                       {"exponent", "whole number from 1 to 10000"});
+    }
+    check_rejected(material(R"({"exponent": 2.5})"), "/materials/0/exponent", {"got 2.5"});
+    check_rejected(material(R"({"exponent": 10001})"), "/materials/0/exponent", {"got 10001"});
+    check_rejected(material(R"({"exponent": "20"})"), "/materials/0/exponent", {"must be a number", "string"});
+    check_rejected(material(R"({}, {"colour": [1, 0.5]})"), "/materials/1/colour",
+                   {"colour", "3 numbers [r, g, b]", "got 2 elements"});
+    check_rejected(material(R"({"colour": [1, 0.5, 1.5]})"), "/materials/0/colour/2",
+                   {"colour[2] (blue)", "between 0 and 1", "got 1.5"});
+    check_rejected(material(R"({"colour": [-0.5, 0, 0]})"), "/materials/0/colour/0", {"colour[0] (red)", "got -0.5"});
+    check_rejected(material(R"({"colour": 0.5})"), "/materials/0/colour", {"3 numbers [r, g, b]", "number"});
+}
+
+TEST_CASE("an object's material index must be a whole number naming a material", "[scene]") {
+    const std::string two = R"("materials": [{"diffuse": 0.5}, {"specular": 1}],)";
+    const auto sphere = [](const std::string& index) {
+        return R"({"S": [0, 0, 3.2], "r": 1.1, "material": )" + index + "}";
+    };
+    const Scene scene = parse_scene(scene_text(two, sphere("1") + ", " + article_sphere), "test.json");
+    CHECK(scene.spheres.at(0).material == 1);
+    CHECK(scene.spheres.at(1).material == promyk::no_material);
+    check_rejected(scene_text(two, sphere("2")), "/spheres/0/material",
+                   {"material 2 does not exist: the scene has 2 materials (0 and 1)"});
+    check_rejected(scene_text(two, article_sphere + ", " + sphere("3")), "/spheres/1/material",
+                   {"material 3 does not exist", "2 materials (0 and 1)"});
+    check_rejected(scene_text("", sphere("0")), "/spheres/0/material",
+                   {"material 0 does not exist: the scene has no materials"});
+    check_rejected(scene_text(R"("materials": [{}],)", sphere("1")), "/spheres/0/material",
+                   {"the scene has 1 material (0)"});
+    check_rejected(scene_text(R"("materials": [{}, {}, {}],)", sphere("7")), "/spheres/0/material",
+                   {"the scene has 3 materials (0 to 2)"});
+    check_rejected(scene_text(two, sphere("-1")), "/spheres/0/material", {"material must be >= 0", "got -1"});
+    check_rejected(scene_text(two, sphere("0.5")), "/spheres/0/material", {"whole number", "got 0.5"});
+    check_rejected(scene_text(two, sphere("1e300")), "/spheres/0/material", {"does not exist"});
+    check_rejected(scene_text(two, sphere("null")), "/spheres/0/material", {"whole number", "null"});
+    check_rejected(scene_text(two, sphere("\"0\"")), "/spheres/0/material", {"whole number", "string"});
+    check_rejected(scene_text(two + R"("planes": [{"Q": [0, -1, 0], "n": [0, 1, 0], "material": 2}],)"),
+                   "/planes/0/material", {"material 2 does not exist"});
+    // The materials are read before the objects that refer to them.
+    check_rejected(scene_text(R"("materials": [{"exponent": 0}],)", sphere("5")), "/materials/0/exponent",
+                   {"whole number from 1 to 10000"});
+}
+
+TEST_CASE("background, shadows and light colours", "[scene]") {
+    const Scene grey = parse_scene(scene_text(R"("background": [0.25, 0.25, 0.25], "shadows": true,)"), "t");
+    CHECK(grey.background == promyk::Colour{0.25, 0.25, 0.25});
+    CHECK(grey.shadows);
+    check_rejected(scene_text(R"("background": [2, 0, 0],)"), "/background/0",
+                   {"background[0] (red)", "between 0 and 1", "got 2"});
+    check_rejected(scene_text(R"("background": [0, 0],)"), "/background", {"3 numbers [r, g, b]", "got 2 elements"});
+    check_rejected(scene_text(R"("background": "grey",)"), "/background",
+                   {"background must be a number (a grey level) or an array [r, g, b]", "string"});
+    check_rejected(scene_text(R"("background": [0, null, 0],)"), "/background/1", {"background[1] (green)", "null"});
+    check_rejected(scene_text(R"("shadows": "yes",)"), "/shadows", {"shadows must be true or false", "string"});
+    check_rejected(scene_text(R"("shadows": 1,)"), "/shadows", {"true or false", "number"});
+    check_rejected(scene_text("", article_sphere, R"({"L": [1, 1, 1], "colour": [1, 1]})"), "/lights/0/colour",
+                   {"colour", "got 2 elements"});
+    check_rejected(scene_text("", article_sphere, R"({"L": [1, 1, 1], "colour": [0, 1.0000000000000002, 0]})"),
+                   "/lights/0/colour/1", {"colour[1] (green)", "between 0 and 1"});
+}
+
+TEST_CASE("unknown keys of the new objects get hints", "[scene]") {
+    const std::string one_material = R"("materials": [{}],)";
+    // Common other names.
+    check_rejected(scene_text(R"("planes": [{"point": [0, 0, 0], "n": [0, 1, 0]}],)"), "/planes/0/point",
+                   {"did you mean 'Q'?"});
+    check_rejected(scene_text(R"("planes": [{"Q": [0, 0, 0], "normal": [0, 1, 0]}],)"), "/planes/0/normal",
+                   {"did you mean 'n'?"});
+    check_rejected(scene_text(R"("materials": [{"shininess": 20}],)"), "/materials/0/shininess",
+                   {"did you mean 'exponent'?"});
+    check_rejected(scene_text(R"("materials": [{"Phong": 20}],)"), "/materials/0/Phong", {"did you mean 'exponent'?"});
+    // In a material 'n' is the exponent, not a plane's normal.
+    check_rejected(scene_text(R"("materials": [{"n": 20}],)"), "/materials/0/n", {"did you mean 'exponent'?"});
+    check_rejected(scene_text(R"("materials": [{"ka": 0.1}],)"), "/materials/0/ka", {"did you mean 'ambient'?"});
+    check_rejected(scene_text(R"("materials": [{"Ks": 0.1}],)"), "/materials/0/Ks", {"did you mean 'specular'?"});
+    check_rejected(scene_text(R"("materials": [{"color": [1, 0, 0]}],)"), "/materials/0/color",
+                   {"did you mean 'colour'?"});
+    check_rejected(scene_text(R"("shadow": true,)"), "/shadow", {"did you mean 'shadows'?"});
+    check_rejected(scene_text(R"("plane": [],)"), "/plane", {"did you mean 'planes'?"});
+    check_rejected(scene_text(R"("material": [],)"), "/material", {"did you mean 'materials'?"});
+    check_rejected(scene_text(R"("color": [1, 0, 0],)"), "/color", {"did you mean 'background'?"});
+    check_rejected(scene_text(R"("light": [],)"), "/light", {"did you mean 'lights'?"});
+    check_rejected(scene_text(one_material, R"({"S": [0, 0, 3.2], "r": 1.1, "mat": 0})"), "/spheres/0/mat",
+                   {"did you mean 'material'?"});
+    // Keys of the new levels say where they belong.
+    check_rejected(scene_text(R"("n": [0, 1, 0],)"), "/n", {"'n' belongs in a plane, inside \"planes\""});
+    check_rejected(scene_text("", R"({"S": [0, 0, 3.2], "r": 1.1, "Q": [0, 0, 0]})"), "/spheres/0/Q",
+                   {"belongs in a plane"});
+    check_rejected(scene_text(R"("planes": [{"Q": [0, 0, 0], "n": [0, 1, 0], "r": 1}],)"), "/planes/0/r",
+                   {"'r' belongs in a sphere"});
+    check_rejected(scene_text(R"("exponent": 3,)"), "/exponent", {"'exponent' belongs in a material, inside \"materials\""});
+    check_rejected(scene_text(R"("materials": [{"shadows": true}],)"), "/materials/0/shadows",
+                   {"belongs at the top level"});
+    check_rejected(scene_text("", article_sphere, R"({"L": [1, 1, 1], "material": 0})"), "/lights/0/material",
+                   {"'material' belongs in a sphere, inside \"spheres\", or in a plane, inside \"planes\""});
+    // A colour on an object: it belongs in a material, which the object names by index.
+    check_rejected(scene_text("", R"({"S": [0, 0, 3.2], "r": 1.1, "colour": [1, 0, 0]})"), "/spheres/0/colour",
+                   {"'colour' belongs in a light, inside \"lights\", or in a material, inside \"materials\"",
+                    "a sphere names its material by index, as \"material\": 0"});
+    check_rejected(scene_text("", R"({"S": [0, 0, 3.2], "r": 1.1, "color": [1, 0, 0]})"), "/spheres/0/color",
+                   {"did you mean 'colour'? 'colour' belongs in a light", "names its material by index"});
+    check_rejected(scene_text(R"("planes": [{"Q": [0, 0, 0], "n": [0, 1, 0], "diffuse": 0.5}],)"),
+                   "/planes/0/diffuse", {"belongs in a material", "a plane names its material by index"});
+    // Far from every key: the keys allowed there.
+    check_rejected(scene_text(R"("materials": [{"glow": 1}],)"), "/materials/0/glow",
+                   {"the keys of a material are 'ambient', 'diffuse', 'specular', 'exponent', 'colour'"});
+    check_rejected(scene_text(R"("planes": [{"Q": [0, 0, 0], "n": [0, 1, 0], "tilt": 1}],)"), "/planes/0/tilt",
+                   {"the keys of a plane are 'Q', 'n', 'material'"});
 }
 
 TEST_CASE("syntax errors give the line and column", "[scene]") {
@@ -307,6 +557,21 @@ TEST_CASE("scene_to_json reads back to the same scene", "[scene]") {
     INFO(text);
     check_same_scene(parse_scene(text, "x"), odd);
 
+    // Every new field away from its default, and values at the edges.
+    Scene rich = odd;
+    rich.shadows = true;
+    rich.background = {0, -0.0, 1};
+    rich.materials = {promyk::Material{0.1, 0.0, 1e300, 10000, {0.3, 5e-324, 1}}, promyk::Material{}};
+    rich.spheres[0].material = 1;
+    rich.spheres.push_back(promyk::Sphere{{1, 2, -7}, 0.5, promyk::no_material});
+    rich.planes = {promyk::Plane{{0, -1.1, 0}, {0, 1, 0}, 0}, promyk::Plane{{1e-300, 0, 3}, {-1e-150, 3, 1e150}}};
+    rich.lights[0].colour = {1, 0.95, -0.0};
+    rich.lights.push_back(promyk::Light{{0, 0, 0}, 0, {1, 1, 1}});
+    const std::string rich_text = promyk::scene_to_json(rich);
+    INFO(rich_text);
+    check_same_scene(parse_scene(rich_text, "x"), rich);
+    check_same_scene(parse_scene(promyk::scene_to_json(rich, promyk::SceneDefaults::written), "x"), rich);
+
     // Random doubles of every magnitude the validation lets through.
     std::mt19937_64 random(20240611);
     std::uniform_int_distribution<int> exponent(-150, 150);
@@ -321,9 +586,40 @@ TEST_CASE("scene_to_json reads back to the same scene", "[scene]") {
         const double length = std::sqrt(promyk::length_squared(S));
         scene.spheres = {promyk::Sphere{S, length * std::uniform_real_distribution<double>(0.01, 0.9)(random)}};
         scene.lights = {promyk::Light{{any(), any(), any()}, std::abs(any())}};
+        // From the 100th on, the new fields too: more objects and lights,
+        // planes, materials, colours, shadows.
+        if (n >= 100) {
+            std::uniform_int_distribution<int> count(0, 3);
+            std::uniform_real_distribution<double> unit(0, 1);
+            const auto colour = [&] { return promyk::Colour{unit(random), unit(random), unit(random)}; };
+            const int materials = count(random);
+            for (int k = 0; k < materials; ++k)
+                scene.materials.push_back(promyk::Material{std::abs(any()), std::abs(any()), std::abs(any()),
+                                                           std::uniform_int_distribution<int>(1, 10000)(random),
+                                                           colour()});
+            const auto material = [&] {
+                return std::uniform_int_distribution<int>(promyk::no_material, materials - 1)(random);
+            };
+            scene.spheres[0].material = material();
+            for (int k = count(random); k > 0; --k) {
+                const promyk::Vec3d C{any(), any(), any()};
+                scene.spheres.push_back(
+                    promyk::Sphere{C, std::sqrt(promyk::length_squared(C)) * unit(random) + 1e-300, material()});
+            }
+            for (int k = count(random); k > 0; --k) {
+                promyk::Vec3d normal{mantissa(random), mantissa(random), mantissa(random)};
+                if (normal == promyk::Vec3d{0, 0, 0}) normal = {0, 1, 0};
+                scene.planes.push_back(promyk::Plane{{any(), any(), any()}, normal, material()});
+            }
+            for (int k = count(random); k > 0; --k)
+                scene.lights.push_back(promyk::Light{{any(), any(), any()}, std::abs(any()), colour()});
+            scene.background = n % 2 ? colour() : scene.background;
+            scene.shadows = n % 3 == 0;
+        }
         const std::string json = promyk::scene_to_json(scene);
         INFO(json);
         check_same_scene(parse_scene(json, "x"), scene);
+        check_same_scene(parse_scene(promyk::scene_to_json(scene, promyk::SceneDefaults::written), "x"), scene);
     }
 }
 
@@ -521,14 +817,18 @@ TEST_CASE("a scene file of many keys is rejected in time, whatever its shape", "
                            "/spheres/0/radius", {"unknown key 'radius'; did you mean 'r'?"});
     std::string empty_objects = "{}";
     for (int k = 1; k < 200000; ++k) empty_objects += ",{}";
-    check_rejected_in_time("{\"spheres\":[" + empty_objects + "]}", "/spheres", {"exactly one sphere", "got 200000"});
+    check_rejected_in_time("{\"spheres\":[" + empty_objects + "]}", "/spheres/0/S", {"missing required key 'S'"});
+    check_rejected_in_time("{\"materials\":[" + empty_objects + "]}", "/spheres", {"no objects"});
     std::string empty_arrays = "[]";
     for (int k = 1; k < 200000; ++k) empty_arrays += ",[]";
     check_rejected_in_time("{\"background\":[" + empty_arrays + "]}", "/background",
-                           {"background must be a number, got an array"});
+                           {"background must be an array of 3 numbers", "got 200000 elements"});
     std::string zeros = "0";
     for (int k = 1; k < 300000; ++k) zeros += ",0";
-    check_rejected_in_time("{\"spheres\":[" + zeros + "]}", "/spheres", {"exactly one sphere", "got 300000"});
+    check_rejected_in_time("{\"spheres\":[" + zeros + "]}", "/spheres/0", {"a sphere must be an object"});
+    std::string spheres = article_sphere;
+    for (int k = 1; k < 20000; ++k) spheres += "," + article_sphere;
+    check_rejected_in_time("{\"spheres\":[" + spheres + "]}", "/lights", {"missing required key 'lights'"});
     // The first unknown key in file order is reported, wherever the others sit.
     check_rejected_in_time("{\"lights\":[{\"L\":[1,1,1],\"power\":1," + many_members(keys - 3, "~~~~") +
                                "}],\"spheres\":[{\"S\":[0,0,3],\"r\":1}]}",
@@ -549,8 +849,15 @@ TEST_CASE("the first unknown key in the file is the one reported", "[scene]") {
     check_rejected(R"({"z_E": -1, "spheres": [{"x": 1, "S": [0, 0, 3], "r": 1}], "lights": []})", "/z_E", {"> 0"});
     check_rejected(R"({"spheres": [{"S": [0, 0, 3], "r": -1, "x": 1}], "lights": []})", "/spheres/0/x",
                    {"unknown key 'x'"});
-    // In a second sphere (not read in this version), unknown keys do not matter before the count does.
-    check_rejected(scene_text("", article_sphere + R"(, {"x": 1})"), "/spheres", {"exactly one sphere"});
+    // Every sphere is read: the second one's unknown key is reported before its missing S.
+    check_rejected(scene_text("", article_sphere + R"(, {"x": 1})"), "/spheres/1/x", {"unknown key 'x'"});
+    // In the new objects too.
+    check_rejected(scene_text(R"("planes": [{"Q": [0, 0, 0], "nn": 1, "n": [0, 1, 0], "zz": 2}],)"), "/planes/0/nn",
+                   {"unknown key 'nn'; did you mean 'n'?"});
+    check_rejected(scene_text(R"("materials": [{"diffuse": -1, "kd": 1}],)"), "/materials/0/kd",
+                   {"unknown key 'kd'; did you mean 'diffuse'?"});
+    check_rejected(scene_text("", article_sphere, R"({"L": [1, 1, 1], "color": [1, 1, 1], "q": 1})"),
+                   "/lights/0/color", {"did you mean 'colour'?"});
 }
 
 TEST_CASE("a scene file is read to its end through short reads and signals", "[scene]") {

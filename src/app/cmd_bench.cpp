@@ -4,6 +4,7 @@
 #include "app/cli_values.hpp"
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
+#include "bench/effects.hpp"
 #include "bench/speed.hpp"
 #include "util/errors.hpp"
 
@@ -31,7 +32,20 @@ std::function<int()> setup_bench(CLI::App& app) {
     speed_cmd->footer(
         "Ratios are printed only when every timed run takes at least 20 ms; smaller panes print the\n"
         "times and say why there is no ratio.");
-    return [speed] { return bench::run_speed_bench(*speed); };
+    auto effects = std::make_shared<bench::EffectsOptions>();
+    CLI::App* effects_cmd = cmd->add_subcommand(
+        "effects", "What each effect costs: every example scene's time per pixel against the article's scene");
+    effects_cmd->add_option("--w", effects->w, "Pane size")
+        ->type_name("N")
+        ->check(whole_number(1, cli::max_w))
+        ->capture_default_str();
+    effects_cmd->add_option("--repetitions", effects->repetitions, "Alternating rounds (medians are reported)")
+        ->type_name("N")
+        ->check(whole_number(1, 1000))
+        ->capture_default_str();
+    return [speed_cmd, speed, effects] {
+        return speed_cmd->parsed() ? bench::run_speed_bench(*speed) : bench::run_effects_bench(*effects);
+    };
 }
 
 }  // namespace promyk::app

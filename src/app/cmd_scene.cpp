@@ -34,8 +34,9 @@ int run_check(const std::string& file) {
     return 0;
 }
 
-int run_dump(const std::string& scene_file) {
-    std::fputs(scene_to_json(cli::load_scene_option(scene_file)).c_str(), stdout);
+int run_dump(const std::string& scene_file, bool all) {
+    const SceneDefaults defaults = all ? SceneDefaults::written : SceneDefaults::omitted;
+    std::fputs(scene_to_json(cli::load_scene_option(scene_file), defaults).c_str(), stdout);
     return 0;
 }
 
@@ -46,14 +47,23 @@ std::function<int()> setup_scene(CLI::App& app) {
     cmd->require_subcommand(1);
     auto file = std::make_shared<std::string>();
     auto dump_file = std::make_shared<std::string>();
+    auto dump_all = std::make_shared<bool>(false);
     CLI::App* check = cmd->add_subcommand(
         "check", "Validate a scene file; say what it contains, what the engine runs for it and what it skips");
     check->add_option("file", *file, "The scene file (JSON)")->type_name("FILE")->required()->check(non_empty());
     CLI::App* dump = cmd->add_subcommand(
-        "dump", "Print a scene as a file with every field written out (the article's unless --scene)");
+        "dump", "Print a scene as a file in the canonical form (the article's unless --scene)");
     add_scene_option(*dump, *dump_file);
-    dump->footer("Example: promyk scene dump > my_scene.json   (then edit it and pass --scene my_scene.json)");
-    return [check, file, dump_file] { return check->parsed() ? run_check(*file) : run_dump(*dump_file); };
+    dump->add_flag("--all", *dump_all,
+                   "Also write the fields that hold their defaults (\"shadows\": false, \"planes\": [], "
+                   "\"materials\": [], each light's \"colour\": [1, 1, 1]), so every knob is in sight; without it "
+                   "they are left out (an object without \"material\" has the default one either way)");
+    dump->footer(
+        "Example: promyk scene dump --all > my_scene.json   (then edit it and pass --scene my_scene.json)\n"
+        "The fields, their defaults and their limits: lessons/scenes/README.md");
+    return [check, file, dump_file, dump_all] {
+        return check->parsed() ? run_check(*file) : run_dump(*dump_file, *dump_all);
+    };
 }
 
 }  // namespace promyk::app

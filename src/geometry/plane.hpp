@@ -22,6 +22,11 @@ struct PlaneRoot {
 template <class Real, class Recorder>
 std::optional<PlaneRoot<Real>> intersect_plane(const Vec3<Real>& E, const Vec3<Real>& n_hat, Real NQ,
                                                Recorder& record) {
+    if constexpr (Recorder::records) {
+        // The plane's own numbers, the same for every ray, for the lessons.
+        record(Key::n_hat, n_hat);
+        record(Key::NQ, NQ);
+    }
     const Real NE = dot(n_hat, E);
     record(Key::NE, NE);
     if (NE == 0) {
@@ -29,7 +34,7 @@ std::optional<PlaneRoot<Real>> intersect_plane(const Vec3<Real>& E, const Vec3<R
         return std::nullopt;
     }
     const Real t = NQ / NE;
-    record(Key::t, t);
+    record(Key::t_plane, t);
     // t may overflow for a ray all but parallel: the hit is beyond every
     // double, at the horizon, and is not drawn.
     if (t > 0 && t <= std::numeric_limits<Real>::max()) {

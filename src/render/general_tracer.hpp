@@ -28,8 +28,9 @@ struct WorkCounts {
 };
 
 // The stages that are switched on or off for the whole render.
-template <bool Shadows_, bool Phong_, bool Ambient_>
+template <bool Shadows_, bool Phong_, bool Ambient_, bool Many_>
 struct Switches {
+    static constexpr bool many = Many_;  // several objects: a loop over them, the nearest hit wins
     static constexpr bool shadows = Shadows_;
     static constexpr bool phong = Phong_;
     static constexpr bool ambient = Ambient_;
@@ -99,7 +100,7 @@ GeneralResult<typename World<Real, Rgb>::Intensity> trace_general(const World<Re
     bool inside = false;    // the sphere's far root: seen from inside
     Real best_NE = 0;       // a plane's n_hat.E: > 0 seen from its back
     bool undecided = false;  // a test whose deciding value was NaN or infinite
-    for (std::size_t k = 0; k < world.spheres.size(); ++k) {
+    auto test_sphere = [&](std::size_t k) {
         const auto& sphere = world.spheres[k];
         record.begin_group("sphere", static_cast<int>(k));
         ++work.sphere_tests;
@@ -111,8 +112,8 @@ GeneralResult<typename World<Real, Rgb>::Intensity> trace_general(const World<Re
             }
         }
         record.end_group();
-    }
-    for (std::size_t k = 0; k < world.planes.size(); ++k) {
+    };
+    auto test_plane = [&](std::size_t k) {
         const auto& plane = world.planes[k];
         record.begin_group("plane", static_cast<int>(k));
         ++work.plane_tests;
@@ -120,11 +121,19 @@ GeneralResult<typename World<Real, Rgb>::Intensity> trace_general(const World<Re
             if (root->t < best_t) best_t = root->t, kind = 2, index = static_cast<int>(k), best_NE = root->NE;
         }
         record.end_group();
+    };
+    if constexpr (Sw::many) {
+        for (std::size_t k = 0; k < world.spheres.size(); ++k) test_sphere(k);
+        for (std::size_t k = 0; k < world.planes.size(); ++k) test_plane(k);
+    } else if (!world.spheres.empty()) {
+        test_sphere(0);  // one object: no loop, and its hit is the hit
+    } else {
+        test_plane(0);
     }
     if (undecided) return Result{nan_of<Real, Rgb>(), Branch::non_finite};
     if (kind == 0) return Result{world.background, Branch::miss};
     if constexpr (Recorder::records) record(Key::nearest, object_name(kind, index));
-    record(Key::t, best_t);
+    record(Key::t_hit, best_t);
 
     // The hit: P, and the normal N facing the eye, of length r (1 for a plane).
     const Vec3<Real> P = best_t * E;
@@ -151,8 +160,12 @@ GeneralResult<typename World<Real, Rgb>::Intensity> trace_general(const World<Re
             if constexpr (Recorder::records) record(Key::flipped, "back");
         }
     }
-    record(Key::N, N);
-    if constexpr (Recorder::records) record(Key::N_P, N / r);
+    if (kind == 1) {
+        record(Key::N, N);
+        if constexpr (Recorder::records) record(Key::N_P, N / r);
+    } else {
+        record(Key::N_plane, N);  // already of length 1
+    }
     const auto& surface = world.materials[static_cast<std::size_t>(material)];
     Vec3<Real> V_hat{};
     if constexpr (Sw::phong) {

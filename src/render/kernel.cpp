@@ -105,21 +105,27 @@ private:
     World<double, Rgb> world_;
 };
 
-template <bool Rgb, bool Shadows, bool Phong, bool Ambient>
+template <bool Rgb, bool Shadows, bool Phong, bool Ambient, bool Many>
 std::unique_ptr<Kernel> general(const Stages& stages, const Scene& scene) {
-    return std::make_unique<GeneralKernel<Switches<Shadows, Phong, Ambient>, Rgb>>(stages, scene);
+    return std::make_unique<GeneralKernel<Switches<Shadows, Phong, Ambient, Many>, Rgb>>(stages, scene);
 }
 
-// The 8 combinations of shadows, Phong and ambient, for one channel count.
+// The 16 combinations of shadows, Phong, ambient and several objects, for
+// one channel count: each an instantiation with only its own stages.
 template <bool Rgb>
 std::unique_ptr<Kernel> general(const Stages& s, const Scene& scene) {
     using Make = std::unique_ptr<Kernel> (*)(const Stages&, const Scene&);
-    static constexpr std::array<Make, 8> table = {
-        general<Rgb, false, false, false>, general<Rgb, false, false, true>, general<Rgb, false, true, false>,
-        general<Rgb, false, true, true>,   general<Rgb, true, false, false>, general<Rgb, true, false, true>,
-        general<Rgb, true, true, false>,   general<Rgb, true, true, true>,
+    static constexpr std::array<Make, 16> table = {
+        general<Rgb, false, false, false, false>, general<Rgb, false, false, false, true>,
+        general<Rgb, false, false, true, false>,  general<Rgb, false, false, true, true>,
+        general<Rgb, false, true, false, false>,  general<Rgb, false, true, false, true>,
+        general<Rgb, false, true, true, false>,   general<Rgb, false, true, true, true>,
+        general<Rgb, true, false, false, false>,  general<Rgb, true, false, false, true>,
+        general<Rgb, true, false, true, false>,   general<Rgb, true, false, true, true>,
+        general<Rgb, true, true, false, false>,   general<Rgb, true, true, false, true>,
+        general<Rgb, true, true, true, false>,    general<Rgb, true, true, true, true>,
     };
-    return table[(s.shadows ? 4 : 0) + (s.phong ? 2 : 0) + (s.ambient ? 1 : 0)](s, scene);
+    return table[(s.shadows ? 8 : 0) + (s.phong ? 4 : 0) + (s.ambient ? 2 : 0) + (s.objects ? 1 : 0)](s, scene);
 }
 
 }  // namespace

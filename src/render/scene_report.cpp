@@ -1,8 +1,13 @@
 #include "render/scene_report.hpp"
 
+#include <cmath>
+#include <limits>
+#include <string_view>
+
 #include <fmt/format.h>
 
-#include "render/renderer.hpp"
+#include "render/stages.hpp"
+#include "trace/messages.hpp"
 
 namespace promyk {
 
@@ -10,65 +15,244 @@ namespace {
 
 std::string point_text(const Vec3d& v) { return fmt::format("({}, {}, {})", v.x, v.y, v.z); }
 
-struct CountingSink final : RenderSink {
-    void image_rows(const std::uint8_t*, int) override {}
+std::string count_text(std::size_t n, std::string_view noun) {
+    return fmt::format("{} {}{}", n, noun, n == 1 ? "" : "s");
+}
+
+std::string colour_text(const Colour& c) { return is_grey(c) ? fmt::format("{}", c.x) : point_text(c); }
+
+std::string material_text(int material) {
+    return material == no_material ? "" : fmt::format(", material {}", material);
+}
+
+// What each stage computes, by the id of render/stages.hpp (the reasons it
+// runs or not are messages.json's stage_why_<id> and stage_skip_<id>).
+std::string_view stage_formula(std::string_view id) {
+    if (id == "sphere") return "Δ/4 = C² − |E|²·(|S|² − r²), a miss when ≤ 0; t = (C − √(Δ/4))/|E|², the far root when t ≤ 0";
+    if (id == "plane") return "t = (n̂·Q)/(n̂·E), a miss when n̂·E = 0";
+    if (id == "nearest") return "the smallest t > 0, ties going to the earlier object";
+    if (id == "lambert") return "D = N·K, K = L − P, for each light with D > 0";
+    if (id == "ambient") return "k_a·I for each light";
+    if (id == "shadows") return "P + s·K, 0 < s < 1, against every object";
+    if (id == "phong") return "I·k_s·(R̂·V̂)ⁿ when R̂·V̂ > 0";
+    if (id == "colour") return "the same computation for red, green and blue";
+    return "";
+}
+
+// A plane as the engine uses it: n̂ = n/√(n·n), each component divided, and
+// NQ = n̂·Q (README.md, "The engine's conventions").
+struct UnitPlane {
+    Vec3d n_hat;
+    double NQ;
 };
+
+UnitPlane unit_plane(const Plane& plane) {
+    const Vec3d n_hat = plane.n / std::sqrt(length_squared(plane.n));
+    return {n_hat, dot(n_hat, plane.Q)};
+}
+
+// The pane's view is the pyramid of the rays through its square, spanned by
+// its corners (±1, ±1, z_E). A ray E meets a plane in front of the eye when
+// n̂·E has the sign of NQ (t = NQ/n̂·E > 0), so some ray of the view does
+// exactly when a corner does. The eye in the plane (NQ = 0): no ray does.
+bool plane_in_view(const UnitPlane& plane, double z_E) {
+    bool in_view = false;
+    for (const double x : {-1.0, 1.0})
+        for (const double y : {-1.0, 1.0}) in_view = in_view || plane.NQ * dot(plane.n_hat, Vec3d{x, y, z_E}) > 0;
+    return in_view;
+}
+
+// What the pixels of a small pane see, by the engine's rules (the nearest
+// hit with t > 0, the far root from inside a sphere, two-sided planes, the
+// normal facing the eye), without shadows or shading: which objects some
+// pixel sees, which lights some seen point faces (D = N·K > 0), and how
+// many pixels meet a non-finite number on the way.
+struct Probe {
+    std::vector<bool> object_seen;  // spheres, then planes
+    std::vector<bool> light_faced;
+    long long pixels = 0, hits = 0, non_finite = 0;
+};
+
+Probe probe_pane(const Scene& scene, int w) {
+    Probe probe;
+    probe.object_seen.assign(static_cast<std::size_t>(scene.object_count()), false);
+    probe.light_faced.assign(scene.lights.size(), false);
+    std::vector<UnitPlane> planes;
+    for (const Plane& plane : scene.planes) planes.push_back(unit_plane(plane));
+    const double inf = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < w; ++i) {
+        for (int j = 0; j < w; ++j) {
+            ++probe.pixels;
+            const Vec3d E{(2.0 * j + 1) / w - 1, -(2.0 * i + 1) / w + 1, scene.z_E};
+            const double EE = length_squared(E);
+            bool finite = std::isfinite(EE);
+            double best_t = inf;
+            std::size_t best = 0;
+            bool flip = false;
+            for (std::size_t k = 0; k < scene.spheres.size() && finite; ++k) {
+                const Sphere& s = scene.spheres[k];
+                const double C = dot(E, s.S);
+                const double delta = C * C - EE * (length_squared(s.S) - s.r * s.r);
+                finite = std::isfinite(delta);
+                if (!finite || delta <= 0) continue;  // the roots below are then finite or +inf
+                const double near = (C - std::sqrt(delta)) / EE;
+                const double t = near > 0 ? near : (C + std::sqrt(delta)) / EE;
+                if (t > 0 && t < best_t) best_t = t, best = k, flip = !(near > 0);
+            }
+            for (std::size_t k = 0; k < planes.size() && finite; ++k) {
+                const double NE = dot(planes[k].n_hat, E);
+                if (NE == 0) continue;
+                const double t = planes[k].NQ / NE;  // NQ finite (the loader checks it), NE finite and not 0
+                if (t > 0 && t < best_t) best_t = t, best = scene.spheres.size() + k, flip = NE > 0;
+            }
+            if (!finite) {
+                ++probe.non_finite;
+                continue;
+            }
+            if (best_t == inf) continue;  // a miss
+            ++probe.hits;
+            probe.object_seen[best] = true;
+            const Vec3d P = best_t * E;
+            Vec3d N = best < scene.spheres.size() ? P - scene.spheres[best].S
+                                                  : planes[best - scene.spheres.size()].n_hat;
+            if (flip) N = -1.0 * N;
+            for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+                const double D = dot(N, scene.lights[l].L - P);
+                if (!std::isfinite(D)) {
+                    ++probe.non_finite;
+                    break;
+                }
+                if (D > 0) probe.light_faced[l] = true;
+            }
+        }
+    }
+    return probe;
+}
+
+std::string object_name(const Scene& scene, std::size_t k) {
+    return k < scene.spheres.size() ? fmt::format("sphere {}", k) : fmt::format("plane {}", k - scene.spheres.size());
+}
+
+void add_contents(const Scene& scene, SceneReport& report) {
+    report.contents.push_back(fmt::format("name \"{}\", pane at z_E = {}, background {}", scene.name, scene.z_E,
+                                          colour_text(scene.background)));
+    report.contents.push_back(fmt::format(
+        "{}, {}, {}, {}; shadows {}", count_text(scene.spheres.size(), "sphere"),
+        count_text(scene.planes.size(), "plane"), count_text(scene.lights.size(), "light"),
+        count_text(scene.materials.size(), "material"), scene.shadows ? "on" : "off"));
+    for (std::size_t k = 0; k < scene.spheres.size(); ++k)
+        report.contents.push_back(fmt::format("sphere {}: S = {}, r = {}{}", k, point_text(scene.spheres[k].S),
+                                              scene.spheres[k].r, material_text(scene.spheres[k].material)));
+    for (std::size_t k = 0; k < scene.planes.size(); ++k)
+        report.contents.push_back(fmt::format("plane {}: Q = {}, n = {}{}", k, point_text(scene.planes[k].Q),
+                                              point_text(scene.planes[k].n), material_text(scene.planes[k].material)));
+    for (std::size_t k = 0; k < scene.lights.size(); ++k) {
+        const Light& light = scene.lights[k];
+        report.contents.push_back(fmt::format("light {}: L = {}, I = {}{}", k, point_text(light.L), light.I,
+                                              light.colour == white ? "" : ", colour " + point_text(light.colour)));
+    }
+    for (std::size_t k = 0; k < scene.materials.size(); ++k) {
+        const Material& m = scene.materials[k];
+        report.contents.push_back(fmt::format("material {}: ambient {}, diffuse {}, specular {}, exponent {}, colour {}",
+                                              k, m.ambient, m.diffuse, m.specular, m.exponent,
+                                              point_text(m.colour)));
+    }
+    bool any_default = false;
+    for (const Sphere& s : scene.spheres) any_default = any_default || s.material == no_material;
+    for (const Plane& p : scene.planes) any_default = any_default || p.material == no_material;
+    if (any_default)
+        report.contents.push_back(fmt::format("{} the default material: ambient 0, diffuse 1, specular 0, white",
+                                              scene.materials.empty() ? "every object has"
+                                                                      : "an object without \"material\" has"));
+}
+
+void add_stages(const Scene& scene, SceneReport& report) {
+    const Stages stages = plan_stages(scene);
+    report.stages.push_back("pane: E = ((2j+1)/w − 1, −(2i+1)/w + 1, z_E) for each pixel");
+    if (stages.article)
+        report.stages.push_back(
+            "article: the article's program and nothing else (one sphere in front of the eye, one white light, the "
+            "default material, grey, no shadows): its image and every traced value are the program's, bit for bit");
+    for (const StageNote& note : stage_notes(scene, stages)) {
+        const std::string why = message(Language::en, note.reason);
+        if (note.runs)
+            report.stages.push_back(fmt::format("{}: {} ({})", note.id, why, stage_formula(note.id)));
+        else
+            report.skipped.push_back(fmt::format("{}: {}", note.id, why));
+    }
+}
+
+void add_geometry_warnings(const Scene& scene, SceneReport& report) {
+    for (std::size_t k = 0; k < scene.spheres.size(); ++k) {
+        const Sphere& s = scene.spheres[k];
+        const double outside = length_squared(s.S) - s.r * s.r;  // as the article's program computes it
+        if (outside < 0)
+            report.warnings.push_back(fmt::format(
+                "the eye is inside sphere {} (|S|² − r² < 0): it sees the sphere's inside (the far root)", k));
+        else if (outside == 0)
+            report.warnings.push_back(fmt::format(
+                "the eye lies on the surface of sphere {} (|S|² − r² = 0): the rays that enter it see its inside",
+                k));
+        if (s.S.z + s.r <= 0)
+            report.warnings.push_back(fmt::format(
+                "sphere {} lies wholly behind the eye (z_S + r <= 0) and is not drawn; the article's program, which "
+                "never checks t > 0, would draw it (a trace shows its t and why it is rejected)",
+                k));
+        for (std::size_t l = 0; l < scene.lights.size(); ++l)
+            if (length_squared(scene.lights[l].L - s.S) < s.r * s.r)
+                report.warnings.push_back(fmt::format(
+                    "light {} is inside sphere {}: no point of the sphere's outside faces it", l, k));
+    }
+    for (std::size_t k = 0; k < scene.planes.size(); ++k) {
+        const UnitPlane plane = unit_plane(scene.planes[k]);
+        if (plane.NQ == 0)
+            report.warnings.push_back(fmt::format(
+                "the eye lies in plane {} (n̂·Q = 0): the plane is seen edge-on, as a line no ray hits", k));
+        else if (!plane_in_view(plane, scene.z_E))
+            report.warnings.push_back(fmt::format(
+                "plane {} is outside the pane's view: no ray through the pane meets it in front of the eye", k));
+    }
+    for (std::size_t l = 0; l < scene.lights.size(); ++l)
+        if (scene.lights[l].I == 0)
+            report.warnings.push_back(fmt::format("light {}'s intensity I is 0: it adds nothing to the image", l));
+}
+
+void add_probe_warnings(const Scene& scene, int probe_w, SceneReport& report) {
+    const Probe probe = probe_pane(scene, probe_w);
+    if (probe.non_finite > 0) {
+        report.warnings.push_back(
+            fmt::format("{} of {} pixels of a {} × {} pane are non-finite: the numbers leave the range of a double",
+                        probe.non_finite, probe.pixels, probe_w, probe_w));
+        return;  // what the other pixels see says little
+    }
+    for (std::size_t k = 0; k < probe.object_seen.size(); ++k) {
+        if (probe.object_seen[k]) continue;
+        // A sphere behind the eye and a plane out of view were named above.
+        if (k < scene.spheres.size() ? scene.spheres[k].S.z + scene.spheres[k].r <= 0
+                                     : !plane_in_view(unit_plane(scene.planes[k - scene.spheres.size()]), scene.z_E))
+            continue;
+        report.warnings.push_back(fmt::format(
+            "no pixel of a {0} × {0} pane sees {1}: it is outside the pane's view, hidden behind another object, "
+            "or too small",
+            probe_w, object_name(scene, k)));
+    }
+    if (probe.hits == 0) return;
+    for (std::size_t l = 0; l < probe.light_faced.size(); ++l)
+        if (!probe.light_faced[l])
+            report.warnings.push_back(fmt::format(
+                "no visible surface faces light {} (of the {} pixels of a {} × {} pane that see an object, none "
+                "has D = N·K > 0 for it)",
+                l, probe.hits, probe_w, probe_w));
+}
 
 }  // namespace
 
 SceneReport report_scene(const Scene& scene, int probe_w) {
     SceneReport report;
-    report.contents.push_back(fmt::format("name \"{}\", pane at z_E = {}, background {}", scene.name, scene.z_E,
-                                          scene.background.x));
-    for (std::size_t k = 0; k < scene.spheres.size(); ++k)
-        report.contents.push_back(fmt::format("sphere {}: S = {}, r = {}", k + 1, point_text(scene.spheres[k].S),
-                                              scene.spheres[k].r));
-    for (std::size_t k = 0; k < scene.lights.size(); ++k)
-        report.contents.push_back(
-            fmt::format("light {}: L = {}, I = {}", k + 1, point_text(scene.lights[k].L), scene.lights[k].I));
-
-    // This version's engine is the article's program: the same stages for
-    // every scene it accepts.
-    report.stages = {
-        "pane: E = ((2j+1)/w − 1, −(2i+1)/w + 1, z_E) for each pixel",
-        "sphere: the article's quadratic, Δ/4 = C² − |E|²(|S|² − r²), the nearer root t",
-        "hit: P = tE, N = P − S",
-        "Lambert shading for one light: I·D / (r·√|K|²) where D = N·K > 0",
-    };
-    report.skipped = {
-        "no loop over objects: the scene has one sphere",
-        "no shadow rays: this version of the scene format has no shadows",
-        "no specular (Phong) term: this version of the scene format has no materials",
-        "no colour channels: the scene is grey",
-    };
-
-    const Sphere& sphere = scene.spheres.front();
-    const Light& light = scene.lights.front();
-    const Vec3d to_light = light.L - sphere.S;
-    if (length_squared(to_light) < sphere.r * sphere.r)
-        report.warnings.push_back("the light is inside the sphere: no point of its surface faces it from outside");
-    if (sphere.S.z + sphere.r < 0)
-        report.warnings.push_back(
-            "the sphere lies behind the eye (z_S + r < 0); the article's program, which never checks t > 0, "
-            "still draws it");
-    if (light.I == 0) report.warnings.push_back("the light's intensity I is 0: every hit is black");
-
-    // What the pixels of a small pane see.
-    CountingSink sink;
-    RenderStats stats;
-    render(scene, {probe_w, 0}, PixelSelection{}, sink, &stats);
-    const long long hits = stats.count(Branch::dark) + stats.count(Branch::lit);
-    if (hits == 0 && stats.count(Branch::non_finite) == 0)
-        report.warnings.push_back(fmt::format(
-            "no pixel of a {0} × {0} pane sees the sphere: it is outside the pane's view, or too small", probe_w));
-    else if (stats.count(Branch::lit) == 0 && stats.count(Branch::non_finite) == 0)
-        report.warnings.push_back(fmt::format(
-            "no visible point of the sphere faces the light (a {0} × {0} pane has {1} dark pixels, 0 lit)", probe_w,
-            stats.count(Branch::dark)));
-    if (const long long n = stats.count(Branch::non_finite))
-        report.warnings.push_back(fmt::format(
-            "{} of {} pixels of a {} × {} pane are non-finite: the numbers leave the range of a double", n,
-            stats.primary_rays, probe_w, probe_w));
+    add_contents(scene, report);
+    add_stages(scene, report);
+    add_geometry_warnings(scene, report);
+    add_probe_warnings(scene, probe_w, report);
     return report;
 }
 

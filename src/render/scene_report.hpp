@@ -11,14 +11,19 @@
 namespace promyk {
 
 struct SceneReport {
-    std::vector<std::string> contents;  // "1 sphere: S = (0, 0, 3.2), r = 1.1", ...
-    std::vector<std::string> stages;    // what runs for every pixel, in order
+    std::vector<std::string> contents;  // "sphere 0: S = (0, 0, 3.2), r = 1.1", ...
+    std::vector<std::string> stages;    // what runs for every pixel, in order, and why
     std::vector<std::string> skipped;   // what does not run, and why
     std::vector<std::string> warnings;  // legal but surprising
 };
 
-// Examines the scene; the warnings that depend on what the pixels see come
-// from tracing a `probe_w` × `probe_w` pane.
+// Examines the scene. The stages are plan_stages' (render/stages.hpp), with
+// the reasons of lessons/messages.json in English. Most warnings are
+// geometry (a light inside a sphere, a sphere behind the eye, the eye inside
+// a sphere or in a plane, a plane outside the pane's view); those that
+// depend on what the pixels see (an object no pixel sees, a light no visible
+// surface faces, non-finite numbers) come from a `probe_w` × `probe_w` pane
+// that scene_report.cpp samples with its own small ray-object code.
 SceneReport report_scene(const Scene& scene, int probe_w = 64);
 
 }  // namespace promyk

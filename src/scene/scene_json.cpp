@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <map>
 #include <system_error>
 #include <utility>
@@ -39,6 +40,9 @@ constexpr std::size_t max_name_chars = 200;
 // The format nests 4 levels deep ({"spheres": [{"S": [...]}]}); anything much
 // deeper is not a scene, and the limit keeps the parser's memory bounded.
 constexpr std::size_t max_nesting = 64;
+// A material's exponent n (Phong's shininess): a whole number in this range.
+constexpr int min_exponent = 1;
+constexpr int max_exponent = 10000;
 
 // ---------------------------------------------------------------------------
 // JSON pointers and message helpers
@@ -94,47 +98,135 @@ struct Level {
     std::vector<std::string_view> keys;  // in the documented order
     std::vector<Alias> aliases;          // common other names for the keys
     std::string_view home;               // where keys of this level belong
+    bool has_material = false;           // an object: it names a material by its index
 };
 
 const Level& scene_level() {
     static const Level level{"the scene",
-                             {"name", "z_E", "background", "spheres", "lights"},
-                             {{"title", "name"}, {"pane", "z_E"}, {"bg", "background"}, {"objects", "spheres"}},
+                             {"name", "z_E", "background", "shadows", "spheres", "planes", "lights", "materials"},
+                             {{"title", "name"},
+                              {"pane", "z_E"},
+                              {"bg", "background"},
+                              {"colour", "background"},
+                              {"color", "background"},
+                              {"shadow", "shadows"},
+                              {"objects", "spheres"},
+                              {"sphere", "spheres"},
+                              {"plane", "planes"},
+                              {"light", "lights"},
+                              {"material", "materials"}},
                              "at the top level of the scene"};
     return level;
 }
 
 const Level& sphere_level() {
     static const Level level{"a sphere",
-                             {"S", "r"},
-                             {{"radius", "r"}, {"center", "S"}, {"centre", "S"}, {"position", "S"}, {"pos", "S"}},
-                             "in a sphere, inside \"spheres\""};
+                             {"S", "r", "material"},
+                             {{"radius", "r"},
+                              {"center", "S"},
+                              {"centre", "S"},
+                              {"position", "S"},
+                              {"pos", "S"},
+                              {"mat", "material"}},
+                             "in a sphere, inside \"spheres\"",
+                             true};
+    return level;
+}
+
+const Level& plane_level() {
+    static const Level level{"a plane",
+                             {"Q", "n", "material"},
+                             {{"point", "Q"},
+                              {"position", "Q"},
+                              {"pos", "Q"},
+                              {"normal", "n"},
+                              {"mat", "material"}},
+                             "in a plane, inside \"planes\"",
+                             true};
     return level;
 }
 
 const Level& light_level() {
     static const Level level{"a light",
-                             {"L", "I"},
-                             {{"position", "L"}, {"pos", "L"}, {"intensity", "I"}, {"power", "I"}, {"brightness", "I"}},
+                             {"L", "I", "colour"},
+                             {{"position", "L"},
+                              {"pos", "L"},
+                              {"intensity", "I"},
+                              {"power", "I"},
+                              {"brightness", "I"},
+                              {"color", "colour"}},
                              "in a light, inside \"lights\""};
     return level;
+}
+
+// In a material 'n' is the exponent (the issue's n), not a plane's normal.
+const Level& material_level() {
+    static const Level level{"a material",
+                             {"ambient", "diffuse", "specular", "exponent", "colour"},
+                             {{"ka", "ambient"},
+                              {"k_a", "ambient"},
+                              {"kd", "diffuse"},
+                              {"k_d", "diffuse"},
+                              {"ks", "specular"},
+                              {"k_s", "specular"},
+                              {"n", "exponent"},
+                              {"shininess", "exponent"},
+                              {"phong", "exponent"},
+                              {"exp", "exponent"},
+                              {"color", "colour"}},
+                             "in a material, inside \"materials\""};
+    return level;
+}
+
+const std::vector<const Level*>& levels() {
+    static const std::vector<const Level*> all{&scene_level(), &sphere_level(), &plane_level(), &light_level(),
+                                               &material_level()};
+    return all;
+}
+
+// The level of an element of the top-level array `array`; nullptr for others.
+const Level* element_level(std::string_view array) {
+    return array == "spheres"     ? &sphere_level()
+           : array == "planes"    ? &plane_level()
+           : array == "lights"    ? &light_level()
+           : array == "materials" ? &material_level()
+                                  : nullptr;
 }
 
 bool has_key(const Level& level, std::string_view key) {
     return std::find(level.keys.begin(), level.keys.end(), key) != level.keys.end();
 }
 
-// The hint after "unknown key 'k'": the level a known key belongs to, a
-// common other name, a key differing only in case, or a key within edit
-// distance 2 (that is not a complete rewrite of it); else the allowed keys.
-std::string unknown_key_hint(const std::string& key, const Level& level) {
-    for (const Level* other : {&scene_level(), &sphere_level(), &light_level()}) {
-        if (other != &level && has_key(*other, key)) return fmt::format("'{}' belongs {}", key, other->home);
+// "'k' belongs in a light, inside "lights", or in a material, inside
+// "materials"" when `key` is a key of levels other than `level`; else empty.
+// An object's hint adds how it refers to a material.
+std::string belongs_hint(std::string_view key, const Level& level) {
+    std::string homes;
+    bool in_material = false;
+    for (const Level* other : levels()) {
+        if (other == &level || !has_key(*other, key)) continue;
+        homes += fmt::format("{}{}", homes.empty() ? "" : ", or ", other->home);
+        in_material = in_material || other == &material_level();
     }
+    if (homes.empty()) return "";
+    std::string hint = fmt::format("'{}' belongs {}", key, homes);
+    if (in_material && level.has_material)
+        hint += fmt::format("; {} names its material by index, as \"material\": 0", level.name);
+    return hint;
+}
+
+// The hint after "unknown key 'k'": a common other name for a key of this
+// level (before the levels a key belongs to: in a material 'n' is the
+// exponent), the level a known key belongs to, a key differing only in case,
+// or a key within edit distance 2 (that is not a complete rewrite of it);
+// else the allowed keys. 'color' is 'colour' wherever a colour belongs.
+std::string unknown_key_hint(const std::string& key, const Level& level) {
     const std::string lower = lowercase(key);
     for (const Alias& alias : level.aliases) {
         if (alias.alias == lower) return fmt::format("did you mean '{}'?", alias.key);
     }
+    if (std::string hint = belongs_hint(key, level); !hint.empty()) return hint;
+    if (lower == "color") return "did you mean 'colour'? " + belongs_hint("colour", level);
     for (std::string_view known : level.keys) {
         if (lowercase(known) == lower) return fmt::format("did you mean '{}'?", known);
     }
@@ -310,10 +402,10 @@ private:
             if (!has_key(scene_level(), key)) first_unknown_.try_emplace("", key);
             return;
         }
-        // An element of the top level's "spheres" or "lights" array.
+        // An element of one of the top level's arrays ("spheres", "planes", ...).
         if (frames_.size() != 3 || !frames_[1].value->is_array() || !frames_[2].value->is_object()) return;
         const std::string& array = frames_[0].key;
-        const Level* level = array == "spheres" ? &sphere_level() : array == "lights" ? &light_level() : nullptr;
+        const Level* level = element_level(array);
         if (level && !has_key(*level, key))
             first_unknown_.try_emplace(child(child("", array), frames_[1].value->size() - 1), key);
     }
@@ -374,6 +466,11 @@ public:
     SceneReader(const std::string& source, const FirstUnknownKeys& first_unknown_keys)
         : source_(source), first_unknown_keys_(first_unknown_keys) {}
 
+    // The faults are looked for in this order, the first one found reported:
+    // the top level's unknown keys, name, z_E, background, shadows, the
+    // materials (before the objects that refer to them), the spheres, the
+    // planes, that there is an object, the lights. Each object's unknown
+    // keys come before its fields.
     Scene read(const Json& root) const {
         if (!root.is_object()) fail("", fmt::format("a scene must be a JSON object {{...}}, got {}", type_of(root)));
         check_keys("", scene_level());
@@ -386,31 +483,30 @@ public:
             if (!(scene.z_E > 0))
                 fail("/z_E", fmt::format("z_E (the pane's distance from the eye) must be > 0, got {}", scene.z_E));
         }
-        if (const auto it = root.find("background"); it != root.end()) {
-            const double grey = read_number(*it, "/background", "background");
-            scene.background = {grey, grey, grey};
-            if (!(grey >= 0 && grey <= 1))
-                fail("/background",
-                     fmt::format("background (the intensity of a ray that misses) must be between 0 and 1, got {}",
-                                 grey));
+        if (const auto it = root.find("background"); it != root.end()) scene.background = read_background(*it);
+        if (const auto it = root.find("shadows"); it != root.end()) {
+            if (!it->is_boolean())
+                fail("/shadows", fmt::format("shadows must be true or false, got {}", type_of(*it)));
+            scene.shadows = it->get<bool>();
         }
-        const Json& spheres = read_array(root, "spheres", "sphere");
-        for (std::size_t k = 0; k < spheres.size(); ++k)
-            scene.spheres.push_back(read_sphere(spheres[k], child("/spheres", k)));
-        const Json& lights = read_array(root, "lights", "light");
-        for (std::size_t k = 0; k < lights.size(); ++k)
-            scene.lights.push_back(read_light(lights[k], child("/lights", k)));
-
-        // The article's program assumes the eye is outside the sphere. Computed
-        // as the program computes it: S := x_S² + y_S² + z_S², then S − r².
-        const Sphere& sphere = scene.spheres.front();
-        const double outside = length_squared(sphere.S) - sphere.r * sphere.r;
-        if (!std::isfinite(outside))
-            fail("/spheres/0", "the sphere is too far or too large to compute with doubles (|S|² − r² is not finite)");
-        if (outside <= 0)
-            fail("/spheres/0",
-                 "the eye (at the origin) is inside or on the sphere (|S|² − r² <= 0); the article's program does "
-                 "not handle that");
+        if (const Json* materials = find_array(root, "materials", "material"))
+            for (std::size_t k = 0; k < materials->size(); ++k)
+                scene.materials.push_back(read_material((*materials)[k], child("/materials", k)));
+        if (const Json* spheres = find_array(root, "spheres", "sphere"))
+            for (std::size_t k = 0; k < spheres->size(); ++k)
+                scene.spheres.push_back(read_sphere((*spheres)[k], child("/spheres", k), scene.materials.size()));
+        if (const Json* planes = find_array(root, "planes", "plane"))
+            for (std::size_t k = 0; k < planes->size(); ++k)
+                scene.planes.push_back(read_plane((*planes)[k], child("/planes", k), scene.materials.size()));
+        if (scene.object_count() == 0)
+            fail("/spheres",
+                 "the scene has no objects: put at least one sphere in \"spheres\" or one plane in \"planes\"");
+        const Json* lights = find_array(root, "lights", "light");
+        if (!lights)
+            fail("/lights", "missing required key 'lights' (an array of the point lights, at least one)");
+        if (lights->empty()) fail("/lights", "a scene needs at least one light in \"lights\", got none");
+        for (std::size_t k = 0; k < lights->size(); ++k)
+            scene.lights.push_back(read_light((*lights)[k], child("/lights", k)));
         return scene;
     }
 
@@ -442,17 +538,50 @@ private:
         return number;
     }
 
-    Vec3d read_vec3(const Json& value, const std::string& pointer, std::string_view what) const {
+    // Three numbers: a point or vector [x, y, z] or a colour [r, g, b].
+    Vec3d read_triple(const Json& value, const std::string& pointer, std::string_view what, std::string_view form,
+                      const char* const (&names)[3]) const {
         if (!value.is_array())
-            fail(pointer, fmt::format("{} must be an array of 3 numbers [x, y, z], got {}", what, type_of(value)));
+            fail(pointer, fmt::format("{} must be an array of 3 numbers {}, got {}", what, form, type_of(value)));
         if (value.size() != 3)
-            fail(pointer, fmt::format("{} must be an array of 3 numbers [x, y, z], got {} element{}", what,
+            fail(pointer, fmt::format("{} must be an array of 3 numbers {}, got {} element{}", what, form,
                                       value.size(), value.size() == 1 ? "" : "s"));
-        const char* axes[] = {"x", "y", "z"};
         double xyz[3];
         for (std::size_t k = 0; k < 3; ++k)
-            xyz[k] = read_number(value[k], child(pointer, k), fmt::format("{}[{}] ({})", what, k, axes[k]));
+            xyz[k] = read_number(value[k], child(pointer, k), fmt::format("{}[{}] ({})", what, k, names[k]));
         return {xyz[0], xyz[1], xyz[2]};
+    }
+
+    Vec3d read_vec3(const Json& value, const std::string& pointer, std::string_view what) const {
+        static const char* const axes[3] = {"x", "y", "z"};
+        return read_triple(value, pointer, what, "[x, y, z]", axes);
+    }
+
+    // [r, g, b], each channel from 0 to 1.
+    Colour read_colour(const Json& value, const std::string& pointer, std::string_view what) const {
+        static const char* const channels[3] = {"red", "green", "blue"};
+        const Colour colour = read_triple(value, pointer, what, "[r, g, b] (each from 0 to 1)", channels);
+        const double rgb[3] = {colour.x, colour.y, colour.z};
+        for (std::size_t k = 0; k < 3; ++k)
+            if (!(rgb[k] >= 0 && rgb[k] <= 1))
+                fail(child(pointer, k), fmt::format("{}[{}] ({}) must be between 0 and 1, got {}", what, k,
+                                                    channels[k], rgb[k]));
+        return colour;
+    }
+
+    // A grey level (a number) or a colour [r, g, b].
+    Colour read_background(const Json& value) const {
+        if (value.is_array()) return read_colour(value, "/background", "background");
+        if (!value.is_number())
+            fail("/background",
+                 fmt::format("background must be a number (a grey level) or an array [r, g, b], got {}",
+                             type_of(value)));
+        const double grey = read_number(value, "/background", "background");
+        if (!(grey >= 0 && grey <= 1))
+            fail("/background",
+                 fmt::format("background (the intensity of a ray that misses) must be between 0 and 1, got {}",
+                             grey));
+        return {grey, grey, grey};
     }
 
     std::string read_name(const Json& value, const std::string& pointer) const {
@@ -480,17 +609,13 @@ private:
         return name;
     }
 
-    // "spheres" or "lights": required, an array, and in this version exactly
-    // one element (the article's program traces one sphere lit by one light).
-    const Json& read_array(const Json& root, const char* key, std::string_view noun) const {
-        const std::string pointer = child("", key);
+    // One of the top level's arrays, or nullptr when the key is absent.
+    const Json* find_array(const Json& root, const char* key, std::string_view noun) const {
         const auto it = root.find(key);
-        if (it == root.end())
-            fail(pointer, fmt::format("missing required key '{}' (an array holding exactly one {})", key, noun));
-        if (!it->is_array()) fail(pointer, fmt::format("{} must be an array of {}s, got {}", key, noun, type_of(*it)));
-        if (it->size() != 1)
-            fail(pointer, fmt::format("this version traces exactly one {} (the article's), got {}", noun, it->size()));
-        return *it;
+        if (it == root.end()) return nullptr;
+        if (!it->is_array())
+            fail(child("", key), fmt::format("{} must be an array of {}s, got {}", key, noun, type_of(*it)));
+        return &*it;
     }
 
     const Json& require(const Json& object, const char* key, const std::string& pointer,
@@ -500,24 +625,75 @@ private:
         return *it;
     }
 
-    Sphere read_sphere(const Json& value, const std::string& pointer) const {
+    // An element of spheres, planes, lights or materials: an object whose
+    // keys are known.
+    void check_element(const Json& value, const std::string& pointer, const Level& level,
+                       std::string_view example) const {
         if (!value.is_object())
-            fail(pointer,
-                 fmt::format("a sphere must be an object {{\"S\": [x, y, z], \"r\": r}}, got {}", type_of(value)));
-        check_keys(pointer, sphere_level());
+            fail(pointer, fmt::format("{} must be an object {}, got {}", level.name, example, type_of(value)));
+        check_keys(pointer, level);
+    }
+
+    // An object's "material": the index of an element of "materials".
+    int read_material_index(const Json& object, const std::string& pointer, std::size_t materials) const {
+        const auto it = object.find("material");
+        if (it == object.end()) return no_material;
+        const std::string where = child(pointer, "material");
+        const char* meaning = "the index of a material in \"materials\", counted from 0";
+        if (!it->is_number())
+            fail(where, fmt::format("material must be a whole number ({}), got {}", meaning, type_of(*it)));
+        const double index = read_number(*it, where, "material");
+        if (std::floor(index) != index)
+            fail(where, fmt::format("material must be a whole number ({}), got {}", meaning, index));
+        if (index < 0) fail(where, fmt::format("material must be >= 0 ({}), got {}", meaning, index));
+        if (!(index < static_cast<double>(materials))) {
+            const std::string have = materials == 0   ? "no materials (\"materials\" is empty or absent)"
+                                     : materials == 1 ? "1 material (0)"
+                                     : materials == 2 ? "2 materials (0 and 1)"
+                                                      : fmt::format("{} materials (0 to {})", materials, materials - 1);
+            fail(where, fmt::format("material {} does not exist: the scene has {}", index, have));
+        }
+        return static_cast<int>(index);
+    }
+
+    Sphere read_sphere(const Json& value, const std::string& pointer, std::size_t materials) const {
+        check_element(value, pointer, sphere_level(), "{\"S\": [x, y, z], \"r\": r}");
         Sphere sphere;
         sphere.S = read_vec3(require(value, "S", pointer, "the sphere's centre [x, y, z]"), child(pointer, "S"), "S");
         sphere.r = read_number(require(value, "r", pointer, "the sphere's radius"), child(pointer, "r"), "r");
         if (!(sphere.r > 0))
             fail(child(pointer, "r"), fmt::format("r (the sphere's radius) must be > 0, got {}", sphere.r));
+        sphere.material = read_material_index(value, pointer, materials);
+        // Computed as the article's program computes it: S := x_S² + y_S² + z_S², then S − r².
+        if (!std::isfinite(length_squared(sphere.S) - sphere.r * sphere.r))
+            fail(pointer, "the sphere is too far or too large to compute with doubles (|S|² − r² is not finite)");
         return sphere;
     }
 
+    Plane read_plane(const Json& value, const std::string& pointer, std::size_t materials) const {
+        check_element(value, pointer, plane_level(), "{\"Q\": [x, y, z], \"n\": [x, y, z]}");
+        Plane plane;
+        plane.Q = read_vec3(require(value, "Q", pointer, "a point of the plane [x, y, z]"), child(pointer, "Q"), "Q");
+        const std::string n_pointer = child(pointer, "n");
+        plane.n = read_vec3(require(value, "n", pointer, "the plane's normal [x, y, z]"), n_pointer, "n");
+        if (plane.n == Vec3d{0, 0, 0}) fail(n_pointer, "n (the plane's normal) must not be the zero vector [0, 0, 0]");
+        // The engine's n̂ = n/√(n·n), each component divided, and n̂·Q.
+        const double nn = length_squared(plane.n);
+        if (!std::isfinite(nn))
+            fail(n_pointer, "n (the plane's normal) is too long to compute with doubles (n·n is not finite); only "
+                            "its direction matters: divide it");
+        if (nn == 0)
+            fail(n_pointer, "n (the plane's normal) is too short to compute with doubles (n·n underflows to 0); "
+                            "only its direction matters: multiply it");
+        plane.material = read_material_index(value, pointer, materials);
+        if (!std::isfinite(dot(plane.n / std::sqrt(nn), plane.Q)))
+            fail(pointer, "the plane is too far to compute with doubles (n̂·Q, its distance from the eye, is not "
+                          "finite)");
+        return plane;
+    }
+
     Light read_light(const Json& value, const std::string& pointer) const {
-        if (!value.is_object())
-            fail(pointer,
-                 fmt::format("a light must be an object {{\"L\": [x, y, z], \"I\": I}}, got {}", type_of(value)));
-        check_keys(pointer, light_level());
+        check_element(value, pointer, light_level(), "{\"L\": [x, y, z], \"I\": I}");
         Light light;
         light.L = read_vec3(require(value, "L", pointer, "the light's position [x, y, z]"), child(pointer, "L"), "L");
         if (const auto it = value.find("I"); it != value.end()) {
@@ -525,7 +701,42 @@ private:
             if (!(light.I >= 0))
                 fail(child(pointer, "I"), fmt::format("I (the light's intensity) must be >= 0, got {}", light.I));
         }
+        if (const auto it = value.find("colour"); it != value.end())
+            light.colour = read_colour(*it, child(pointer, "colour"), "colour");
         return light;
+    }
+
+    // ambient, diffuse, specular: a finite number >= 0.
+    double read_coefficient(const Json& object, const std::string& pointer, const char* key, std::string_view meaning,
+                            double fallback) const {
+        const auto it = object.find(key);
+        if (it == object.end()) return fallback;
+        const double value = read_number(*it, child(pointer, key), key);
+        if (!(value >= 0)) fail(child(pointer, key), fmt::format("{} ({}) must be >= 0, got {}", key, meaning, value));
+        return value;
+    }
+
+    Material read_material(const Json& value, const std::string& pointer) const {
+        check_element(value, pointer, material_level(),
+                      "such as {\"diffuse\": 0.7, \"specular\": 0.5, \"exponent\": 20}");
+        Material material;
+        material.ambient = read_coefficient(value, pointer, "ambient", "k_a, the light that reaches every point",
+                                            material.ambient);
+        material.diffuse = read_coefficient(value, pointer, "diffuse", "k_d, the article's Lambert term",
+                                            material.diffuse);
+        material.specular = read_coefficient(value, pointer, "specular", "k_s, Phong's highlight",
+                                             material.specular);
+        if (const auto it = value.find("exponent"); it != value.end()) {
+            const std::string where = child(pointer, "exponent");
+            const double exponent = read_number(*it, where, "exponent");
+            if (!(exponent >= min_exponent && exponent <= max_exponent && std::floor(exponent) == exponent))
+                fail(where, fmt::format("exponent (n, Phong's shininess) must be a whole number from {} to {}, got {}",
+                                        min_exponent, max_exponent, exponent));
+            material.exponent = static_cast<int>(exponent);
+        }
+        if (const auto it = value.find("colour"); it != value.end())
+            material.colour = read_colour(*it, child(pointer, "colour"), "colour");
+        return material;
     }
 
     const std::string& source_;
@@ -546,6 +757,27 @@ std::string number_text(double value) {
 
 std::string vec3_text(const Vec3d& v) {
     return fmt::format("[{}, {}, {}]", number_text(v.x), number_text(v.y), number_text(v.z));
+}
+
+// True when a and b are the same double, down to the sign of zero: a colour
+// is written as one grey number only when that number reads back as all
+// three channels.
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// A grey colour as one number, any other as [r, g, b].
+std::string colour_text(const Colour& c) {
+    return same_bits(c.x, c.y) && same_bits(c.y, c.z) ? number_text(c.x) : vec3_text(c);
+}
+
+// `"key": [` then each item on its own line, then `]` (`[]` when empty).
+std::string array_text(std::string_view key, const std::vector<std::string>& items) {
+    std::string text = fmt::format("  \"{}\": [", key);
+    for (std::size_t k = 0; k < items.size(); ++k) text += fmt::format("{}\n    {}", k == 0 ? "" : ",", items[k]);
+    return text + (items.empty() ? "]" : "\n  ]");
+}
+
+std::string material_index_text(int material) {
+    return material == no_material ? "" : fmt::format(", \"material\": {}", material);
 }
 
 // Closes a file descriptor when it goes out of scope.
@@ -604,19 +836,41 @@ Scene parse_scene(std::string_view text, const std::string& source) {
     return SceneReader(source, parsed.first_unknown_keys).read(parsed.root);
 }
 
-std::string scene_to_json(const Scene& scene) {
+std::string scene_to_json(const Scene& scene, SceneDefaults defaults) {
+    const bool all = defaults == SceneDefaults::written;
     const std::string name = Json(scene.name).dump(-1, ' ', false, Json::error_handler_t::replace);
-    std::string text = fmt::format("{{\n  \"name\": {},\n  \"z_E\": {},\n  \"background\": {},\n  \"spheres\": [", name,
-                                   number_text(scene.z_E), number_text(scene.background.x));
-    for (std::size_t k = 0; k < scene.spheres.size(); ++k)
-        text += fmt::format("{}\n    {{\"S\": {}, \"r\": {}}}", k == 0 ? "" : ",", vec3_text(scene.spheres[k].S),
-                            number_text(scene.spheres[k].r));
-    text += scene.spheres.empty() ? "],\n  \"lights\": [" : "\n  ],\n  \"lights\": [";
-    for (std::size_t k = 0; k < scene.lights.size(); ++k)
-        text += fmt::format("{}\n    {{\"L\": {}, \"I\": {}}}", k == 0 ? "" : ",", vec3_text(scene.lights[k].L),
-                            number_text(scene.lights[k].I));
-    text += scene.lights.empty() ? "]\n}\n" : "\n  ]\n}\n";
-    return text;
+    std::vector<std::string> fields = {
+        fmt::format("  \"name\": {}", name),
+        fmt::format("  \"z_E\": {}", number_text(scene.z_E)),
+        fmt::format("  \"background\": {}", colour_text(scene.background)),
+    };
+    if (scene.shadows || all) fields.push_back(fmt::format("  \"shadows\": {}", scene.shadows ? "true" : "false"));
+    std::vector<std::string> items;
+    for (const Sphere& s : scene.spheres)
+        items.push_back(fmt::format("{{\"S\": {}, \"r\": {}{}}}", vec3_text(s.S), number_text(s.r),
+                                    material_index_text(s.material)));
+    fields.push_back(array_text("spheres", items));
+    items.clear();
+    for (const Plane& p : scene.planes)
+        items.push_back(
+            fmt::format("{{\"Q\": {}, \"n\": {}{}}}", vec3_text(p.Q), vec3_text(p.n), material_index_text(p.material)));
+    if (!items.empty() || all) fields.push_back(array_text("planes", items));
+    items.clear();
+    for (const Light& l : scene.lights)
+        items.push_back(fmt::format("{{\"L\": {}, \"I\": {}{}}}", vec3_text(l.L), number_text(l.I),
+                                    l.colour == white && !all ? "" : ", \"colour\": " + vec3_text(l.colour)));
+    fields.push_back(array_text("lights", items));
+    items.clear();
+    for (const Material& m : scene.materials)
+        items.push_back(fmt::format(
+            "{{\"ambient\": {}, \"diffuse\": {}, \"specular\": {}, \"exponent\": {}, \"colour\": {}}}",
+            number_text(m.ambient), number_text(m.diffuse), number_text(m.specular), m.exponent,
+            vec3_text(m.colour)));
+    if (!items.empty() || all) fields.push_back(array_text("materials", items));
+
+    std::string text = "{\n";
+    for (std::size_t k = 0; k < fields.size(); ++k) text += fields[k] + (k + 1 < fields.size() ? ",\n" : "\n");
+    return text + "}\n";
 }
 
 }  // namespace promyk

@@ -40,10 +40,20 @@ Scene load_scene_file(const std::string& path);
 // `source`.
 Scene parse_scene(std::string_view text, const std::string& source);
 
+// Which fields scene_to_json writes when they hold their defaults.
+enum class SceneDefaults {
+    omitted,  // the canonical form: "shadows", "planes", "materials", an object's
+              // "material" and a light's "colour" only when not the default
+    written,  // every knob a teacher can turn: "shadows": false, "planes": [],
+              // "materials": [], a light's "colour": [1, 1, 1] (an object with
+              // the default material still has no "material": it has no index)
+};
+
 // The scene as a scene file: pretty, fields in the documented order, every
-// number as the shortest text that reads back to the same double. `source`
-// is not written. parse_scene(scene_to_json(s), ...) gives back s for every
-// scene that parse_scene accepts.
-std::string scene_to_json(const Scene& scene);
+// number as the shortest text that reads back to the same double, a grey
+// background as one number (else [r, g, b]), every field of a material.
+// `source` is not written. parse_scene(scene_to_json(s), ...) gives back s
+// for every scene that parse_scene accepts.
+std::string scene_to_json(const Scene& scene, SceneDefaults defaults = SceneDefaults::omitted);
 
 }  // namespace promyk

@@ -54,14 +54,17 @@ enum class Key {
     RV_n,      // RV^n, by repeated squaring
     specular,  // I k_s RV^n
     contribution,  // c (m (k_a I + k_d diffuse) + specular)
+    t_plane,  // a plane's root: n_hat.Q / n_hat.E
+    t_hit,    // the nearest hit's t, over all objects
+    N_plane,  // a plane's normal used for shading: n_hat, or -n_hat seen from the back
 };
 
-inline constexpr std::array<std::string_view, 40> key_names = {
+inline constexpr std::array<std::string_view, 43> key_names = {
     "E",       "EE",     "SS",    "C",     "delta",   "t",     "P",       "N",        "K",
     "KK",      "D",      "Delta", "sqrt_Delta", "N_P", "K_len", "K_P",   "cos_alpha", "t_far",
     "found",   "nearest", "flipped", "n_hat", "NQ",   "NE",    "b_s",     "c_s",      "delta_s",
     "s_1",     "s_2",    "NK",    "s",     "s_own",   "blocker", "diffuse", "V_hat",  "R_hat",
-    "RV",      "RV_n",   "specular", "contribution",
+    "RV",      "RV_n",   "specular", "contribution", "t_plane", "t_hit", "N_plane",
 };
 
 // The article's program's own steps, as opposed to the lessons' extra ones.

@@ -72,15 +72,15 @@ promyk_cli_test(render_non_finite ARGS render --scene ${scenes}/far_pane.json --
 promyk_cli_test(render_stats ARGS render --w 64 -o a.png --stats EXIT 0
                 STDERR "stages: lambert\n  rays cast: 4096 primary \\(one a pixel\\), 0 shadow\n  intersection tests: 4096 ray-sphere, 0 ray-plane\n  pixels: 2380 miss, 342 dark, 1374 lit, 0 shadowed, 0 non-finite")
 
-# promyk scene check and dump
+# promyk scene check and dump (more in scenes.cmake)
 promyk_cli_test(scene_check_article ARGS scene check ${PROJECT_SOURCE_DIR}/lessons/scenes/article.json EXIT 0
-                STDOUT "article.json: a valid scene\ncontains:\n  - name \"article\", pane at z_E = 2, background 0.5\n  - sphere 1: S = \\(0, 0, 3.2\\), r = 1.1\n.*and skips:\n.*no shadow rays")
+                STDOUT "article.json: a valid scene\ncontains:\n  - name \"article\", pane at z_E = 2, background 0.5\n  - 1 sphere, 0 planes, 1 light, 0 materials; shadows off\n  - sphere 0: S = \\(0, 0, 3.2\\), r = 1.1\n.*the engine runs.*  - article: the article's program and nothing else.*and skips:\n.*  - shadows: no shadow ray: the scene does not ask for shadows\n")
 promyk_cli_test(scene_check_no_warning ARGS scene check ${PROJECT_SOURCE_DIR}/lessons/scenes/article.json EXIT 0)
 set_tests_properties(cli.scene_check_no_warning PROPERTIES FAIL_REGULAR_EXPRESSION "warnings")
-promyk_cli_test(scene_check_light_inside ARGS scene check ${scenes}/light_inside.json EXIT 0 STDOUT "warnings.*the light is inside the sphere")
-promyk_cli_test(scene_check_off_view ARGS scene check ${scenes}/off_view.json EXIT 0 STDOUT "no pixel of a 64 × 64 pane sees the sphere")
-promyk_cli_test(scene_check_behind ARGS scene check ${scenes}/behind_eye.json EXIT 0 STDOUT "the sphere lies behind the eye")
-promyk_cli_test(scene_check_light_behind ARGS scene check ${scenes}/light_behind.json EXIT 0 STDOUT "no visible point of the sphere faces the light")
+promyk_cli_test(scene_check_light_inside ARGS scene check ${scenes}/light_inside.json EXIT 0 STDOUT "warnings.*light 0 is inside sphere 0")
+promyk_cli_test(scene_check_off_view ARGS scene check ${scenes}/off_view.json EXIT 0 STDOUT "no pixel of a 64 × 64 pane sees sphere 0")
+promyk_cli_test(scene_check_behind ARGS scene check ${scenes}/behind_eye.json EXIT 0 STDOUT "sphere 0 lies wholly behind the eye \\(z_S \\+ r <= 0\\) and is not drawn")
+promyk_cli_test(scene_check_light_behind ARGS scene check ${scenes}/light_behind.json EXIT 0 STDOUT "no visible surface faces light 0")
 promyk_cli_test(scene_check_far ARGS scene check ${scenes}/far_pane.json EXIT 0 STDOUT "4096 of 4096 pixels of a 64 × 64 pane are non-finite")
 promyk_cli_test(scene_check_bad ARGS scene check ${scenes}/negative_radius.json EXIT 3 STDERR "negative_radius.json: /spheres/0/r")
 promyk_cli_test(scene_check_missing ARGS scene check EXIT 2 STDERR "file")

@@ -13,6 +13,15 @@ except ImportError:
     sys.exit("validate_traces.py: python3-jsonschema is missing (apt-get install python3-jsonschema)")
 
 
+def step_keys(entries):
+    """Every step's key, inside groups too ({"group": ..., "steps": [...]})."""
+    for entry in entries:
+        if "group" in entry:
+            yield from step_keys(entry["steps"])
+        else:
+            yield entry["key"]
+
+
 def main(schema_path, vocabulary_path, *files):
     with open(schema_path, encoding="utf-8") as f:
         schema = json.load(f)
@@ -27,7 +36,7 @@ def main(schema_path, vocabulary_path, *files):
             for number, line in enumerate(f, 1):
                 trace = json.loads(line)
                 problems = [e.message for e in validator.iter_errors(trace)]
-                problems += [f"step key {s['key']!r} is not in the vocabulary" for s in trace["steps"] if s["key"] not in keys]
+                problems += [f"step key {k!r} is not in the vocabulary" for k in step_keys(trace["steps"]) if k not in keys]
                 for problem in problems:
                     print(f"{path}:{number}: {problem}")
                 failures += bool(problems)

@@ -3,7 +3,8 @@
 #   cmake -DPYTHON=... -DSCRIPT=.../make_reference.py -DCOMMITTED=.../article_reference.json
 #         -DOUTPUT=<file in the build dir> [-DOPTIONS=--scenes] -P check_up_to_date.cmake
 # (OPTIONS: arguments put before OUTPUT, e.g. --scenes for scenes_reference.json;
-# test reference_scenes_data_up_to_date)
+# test reference_scenes_data_up_to_date). Test reference_effects_data_up_to_date
+# runs it with SCRIPT=.../make_effects_reference.py and COMMITTED=.../effects_reference.json.
 foreach(var PYTHON SCRIPT COMMITTED OUTPUT)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "check_up_to_date.cmake: ${var} is not set")
@@ -18,7 +19,7 @@ execute_process(
   RESULT_VARIABLE result
   ERROR_VARIABLE errors)
 if(NOT result EQUAL 0)
-  message(FATAL_ERROR "make_reference.py failed (${result}):\n${errors}")
+  message(FATAL_ERROR "${SCRIPT} failed (${result}):\n${errors}")
 endif()
 
 execute_process(

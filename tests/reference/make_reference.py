@@ -201,6 +201,10 @@ class Interval:
             hi = libmp.mpf_add(hi, SUBNORMAL_HALF_SPACING, PREC, CEIL)
         return Interval(lo, hi)
 
+    def __neg__(self):
+        """-x is exact in IEEE arithmetic: no rounding."""
+        return Interval(libmp.mpf_neg(self.hi), libmp.mpf_neg(self.lo))
+
     def __add__(self, other):
         return Interval(libmp.mpf_add(self.lo, other.lo, PREC, FLOOR),
                         libmp.mpf_add(self.hi, other.hi, PREC, CEIL)).rounded()
