@@ -280,15 +280,15 @@ TEST_CASE("answers name values inside groups: sphere[1].t = 1.85, light[0].spher
     const double s1 = value_of(traces[0], "light[0].sphere[0].s_1");
     const double t1 = value_of(traces[1], "sphere[1].t");
     const std::string text = fmt::format(
-        "[7,2]\nlight[0].sphere[0].s_1 = {}\nplane[0].t = 1,2571\nt = 1.2571\nlight[0].K.y = 4,1\n"
+        "[7,2]\nlight[0].sphere[0].s_1 = {}\nplane[0].t_plane = 1,2571\nt_hit = 1.2571\nlight[0].K.y = 4,1\n"
         "[3,4]\nsphere[1].t = {}\nsphere[0].t = 9\nlight[0].plane[0].s =\n",
         written(s1, 4, Language::en), written(t1, 3, Language::pl));
     const std::vector<AnswerCheck> checks =
         check_answers(parse_answers(text, "a.txt", builtin_vocabulary(), Language::en, {7, 2}, 8), traces);
     REQUIRE(checks.size() == 7);
     // In the order of the derivation: the objects' tests, then the nearest, then the light.
-    CHECK(checks[0].answer.key == "plane[0].t");
-    CHECK(checks[1].answer.key == "t");
+    CHECK(checks[0].answer.key == "plane[0].t_plane");
+    CHECK(checks[1].answer.key == "t_hit");
     CHECK(checks[2].answer.key == "light[0].K");
     CHECK(checks[2].answer.component == 'y');
     CHECK(checks[3].answer.key == "light[0].sphere[0].s_1");

@@ -378,7 +378,7 @@ TEST_CASE("placeholders name values inside groups: {sphere[1].t}, {light[0].sphe
     CHECK(path_key("light[0].sphere[1].delta_s") == "delta_s");
 }
 
-TEST_CASE("a placeholder in a group shows that group's value; {t} is the top level's; words are translated", "[lesson]") {
+TEST_CASE("a placeholder in a group shows that group's value; {t_hit} is the top level's; words are translated", "[lesson]") {
     const Scene scene = two_spheres_scene();
     // (3, 4): both spheres are hit and sphere 0 is nearer; (2, 5): only sphere 1.
     const PixelTrace both = trace_pixel(scene, 8, 3, 4);
@@ -390,7 +390,7 @@ TEST_CASE("a placeholder in a group shows that group's value; {t} is the top lev
     for (const Language language : {Language::en, Language::pl}) {
         const std::string text = render_first_step(
             "## [a] A\n\nS0 = {sphere[0].S}, r1 = {sphere[1].r}, L0 = {light[0].L}\n\n"
-            "::: lit\n<{i},{j}> t0={sphere[0].t} t1={sphere[1].t} t={t} D={light[0].D:5} K.x={light[0].K.x:3} "
+            "::: lit\n<{i},{j}> t0={sphere[0].t} t1={sphere[1].t} t={t_hit} D={light[0].D:5} K.x={light[0].K.x:3} "
             "nearest={nearest} found1={sphere[1].found}\n:::\n",
             scene, {{3, 4}, {2, 5}}, language);
         INFO(text);

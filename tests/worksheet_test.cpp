@@ -39,8 +39,15 @@ std::set<std::string> pixel_texts(const PixelTrace& trace, const Vocabulary& voc
         else if (const double* number = std::get_if<double>(&value))
             texts.insert(number_text(*number, language));
     };
-    for (const Step& step : trace.steps)
-        if (!std::holds_alternative<std::string>(step.value)) add(std::string(key_name(step.key)), step.value);  // words are shown
+    for (const Step& step : trace.steps) {
+        if (std::holds_alternative<std::string>(step.value)) continue;  // words are shown
+        // A plane's n̂ and n̂·Q are the scene's, the same for every pixel: shown too.
+        std::string path(key_name(step.key));
+        for (int g = step.group; g >= 0; g = trace.groups[static_cast<std::size_t>(g)].parent)
+            path = trace.groups[static_cast<std::size_t>(g)].kind + "[" +
+                   std::to_string(trace.groups[static_cast<std::size_t>(g)].index) + "]." + path;
+        if (!is_scene_value(path)) add(std::string(key_name(step.key)), step.value);
+    }
     add("I_P", trace.result);
     const std::set<std::string> given = given_texts(trace, vocabulary, language);
     std::set<std::string> out;

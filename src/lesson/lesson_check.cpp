@@ -29,7 +29,7 @@ struct GroupShape {
 const std::vector<GroupShape>& group_shapes() {
     static const std::vector<GroupShape> shapes = {
         {"sphere", {"EE", "SS", "C", "delta", "Delta", "sqrt_Delta", "t", "t_far", "found", "S", "r"}},
-        {"plane", {"n_hat", "NQ", "NE", "t", "found"}},
+        {"plane", {"n_hat", "NQ", "NE", "t_plane", "found"}},
         {"light", {"K", "KK", "K_len", "K_P", "D", "cos_alpha", "blocker", "diffuse", "R_hat", "RV", "RV_n", "specular",
                    "contribution", "L", "I"}},
         {"light.sphere", {"b_s", "c_s", "delta_s", "s_1", "s_2", "found", "s_own"}},

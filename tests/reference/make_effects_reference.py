@@ -53,12 +53,13 @@ SCENE_FILES = [
     "two_spheres.json",
     "two_lights.json",
     "floor.json",
+    "floor_wall.json",
     "shadows.json",
     "phong.json",
     "colour.json",
     "everything.json",
 ]
-SIZES = {"floor.json": (16, 15)}  # odd w: row 7 has y_E = 0, parallel to the floor
+SIZES = {"floor.json": (16, 15), "floor_wall.json": (16, 15)}  # odd w: row 7 has y_E = 0, parallel to the floor
 DEFAULT_SIZES = (16,)
 MIN_PIXELS = 8
 
