@@ -367,3 +367,18 @@ TEST_CASE("the general tracer with the article's defaults gives the article's pi
         }
     }
 }
+
+TEST_CASE("a ray all but parallel to a plane: its t overflows, the hit is at the horizon, the trace stays finite",
+          "[effects]") {
+    Scene scene = base(1);
+    scene.planes = {Plane{{0, -1e305, 0}, {0, 1, 0}}};  // n.E = y_E, tiny: t = -1e305 / y_E overflows
+    scene.lights = {Light{{0, 5, 0}, 1}};
+    // w = 2^20 + 1: the row just below the middle has y_E = -2 / (2^20 + 1).
+    constexpr int w = (1 << 20) + 1;
+    const PixelTrace trace = trace_pixel(scene, w, w / 2 + 1, 0);
+    CHECK(number(trace, Key::NE, "plane 0") < 0);
+    CHECK(word(trace, Key::found, "plane 0") == "horizon");
+    CHECK(find_step(trace, Key::t_plane, "plane 0") == nullptr);
+    CHECK_FALSE(trace.first_non_finite.has_value());
+    CHECK(trace.branch == Branch::miss);
+}

@@ -138,3 +138,66 @@ TEST_CASE("the branch is non-finite exactly when a step or the result is", "[non
     CHECK(non_finite > 100);
     CHECK(numeric > 100);
 }
+
+namespace {
+
+// Every step that decides something in a general scene: the objects' tests,
+// the hit, and each light's K, |K|^2 and D (and the shadow tests' values).
+bool decides(Key key) {
+    switch (key) {
+        case Key::E: case Key::EE: case Key::SS: case Key::C: case Key::delta: case Key::t: case Key::t_far:
+        case Key::NE: case Key::t_plane: case Key::t_hit: case Key::P: case Key::N: case Key::N_plane:
+        case Key::K: case Key::KK: case Key::D: case Key::b_s: case Key::c_s: case Key::delta_s: case Key::NK:
+            return true;
+        default:
+            return false;
+    }
+}
+
+bool finite_step(const Step& step) {
+    if (const double* v = std::get_if<double>(&step.value)) return std::isfinite(*v);
+    if (const Vec3d* v = std::get_if<Vec3d>(&step.value))
+        return std::isfinite(v->x) && std::isfinite(v->y) && std::isfinite(v->z);
+    return true;
+}
+
+bool finite_result(const PixelTrace& trace) {
+    if (trace.result_rgb)
+        return std::isfinite(trace.result_rgb->x) && std::isfinite(trace.result_rgb->y) &&
+               std::isfinite(trace.result_rgb->z);
+    return std::isfinite(trace.result);
+}
+
+}  // namespace
+
+TEST_CASE("general scenes: non-finite exactly when a deciding value or the result is not finite",
+          "[non-finite][effects]") {
+    std::mt19937_64 random(20261129);
+    std::uniform_real_distribution<double> exponent(-300, 300), unit(-1, 1), positive(0.1, 1);
+    auto big = [&] { return (unit(random) < 0 ? -1 : 1) * std::pow(10.0, exponent(random) * positive(random)); };
+    auto point = [&] { return Vec3d{big(), big(), big()}; };
+    int non_finite = 0, decided = 0;
+    for (int n = 0; n < 300; ++n) {
+        Scene scene;
+        scene.z_E = std::abs(big());
+        scene.shadows = n % 2 == 0;
+        scene.spheres = {Sphere{point(), std::abs(big())}, Sphere{point(), std::abs(big())}};
+        scene.planes = {Plane{point(), {unit(random), unit(random), unit(random) + 2}}};
+        scene.lights = {Light{point(), std::abs(big())}, Light{point(), 1}};
+        scene.materials = {Material{0.1, 0.8, 0.5, 1 + n % 50, {1, 0.5, 0.25}}};
+        scene.spheres[0].material = 0;
+        for (int i = 0; i < 4; ++i) {
+            for (int j = 0; j < 4; ++j) {
+                const PixelTrace trace = trace_pixel(scene, 4, i, j);
+                bool all_deciding_finite = finite_result(trace);
+                for (const Step& step : trace.steps)
+                    if (decides(step.key) && !finite_step(step)) all_deciding_finite = false;
+                INFO("scene " << n << ", pixel (" << i << ", " << j << "), branch " << branch_name(trace.branch));
+                CHECK((trace.branch == Branch::non_finite) == !all_deciding_finite);
+                (trace.branch == Branch::non_finite ? non_finite : decided) += 1;
+            }
+        }
+    }
+    CHECK(non_finite > 100);
+    CHECK(decided > 1000);
+}

@@ -32,7 +32,7 @@ TEST_CASE("the vocabulary defines every key the tracer knows, and every branch",
         CHECK_FALSE(entry->symbol.empty());
         CHECK_FALSE(entry->pl.empty());
         CHECK_FALSE(entry->en.empty());
-        CHECK(std::set<std::string>{"scalar", "point", "vector", "word", "intensity"}.count(entry->kind) == 1);
+        CHECK(std::set<std::string>{"scalar", "point", "vector", "word", "intensity", "colour"}.count(entry->kind) == 1);
     }
     for (const Branch branch : {Branch::miss, Branch::dark, Branch::lit, Branch::non_finite, Branch::shadowed})
         CHECK(vocabulary.find_branch(branch_name(branch)) != nullptr);

@@ -34,10 +34,11 @@ std::optional<PlaneRoot<Real>> intersect_plane(const Vec3<Real>& E, const Vec3<R
         return std::nullopt;
     }
     const Real t = NQ / NE;
-    record(Key::t_plane, t);
     // t may overflow for a ray all but parallel: the hit is beyond every
-    // double, at the horizon, and is not drawn.
-    if (t > 0 && t <= std::numeric_limits<Real>::max()) {
+    // double, at the horizon, and is not drawn; no infinity reaches the trace.
+    const bool finite = t * Real(0) == Real(0);
+    if (finite) record(Key::t_plane, t);
+    if (t > 0 && finite) {
         if constexpr (Recorder::records) record(Key::found, "near");
         return PlaneRoot<Real>{t, NE};
     }

@@ -28,6 +28,42 @@ TraceHeader trace_header(const Scene& scene, int w) {
         header.given.push_back({"L", scene.lights[0].L});
         header.given.push_back({"I", scene.lights[0].I});
     }
+    // Several objects or lights: each one's values, under its group's name.
+    if (scene.object_count() > 1 || scene.lights.size() > 1) {
+        for (std::size_t k = 0; k < scene.spheres.size(); ++k)
+            header.given_groups.push_back(
+                {"sphere", static_cast<int>(k), {{"S", scene.spheres[k].S}, {"r", scene.spheres[k].r}}});
+        for (std::size_t k = 0; k < scene.planes.size(); ++k)
+            header.given_groups.push_back(
+                {"plane", static_cast<int>(k), {{"Q", scene.planes[k].Q}, {"n", scene.planes[k].n}}});
+        for (std::size_t k = 0; k < scene.lights.size(); ++k)
+            header.given_groups.push_back(
+                {"light", static_cast<int>(k), {{"L", scene.lights[k].L}, {"I", scene.lights[k].I}}});
+    } else if (!scene.planes.empty()) {
+        header.given.push_back({"Q", scene.planes[0].Q});
+        header.given.push_back({"n", scene.planes[0].n});
+    }
+    // A light's colour and the materials, when the scene has them.
+    for (std::size_t k = 0; k < scene.lights.size(); ++k) {
+        if (scene.lights[k].colour == white) continue;
+        GivenGroup* group = nullptr;
+        for (GivenGroup& g : header.given_groups)
+            if (g.kind == "light" && g.index == static_cast<int>(k)) group = &g;
+        if (group != nullptr)
+            group->values.push_back({"c", scene.lights[k].colour});
+        else
+            header.given.push_back({"c", scene.lights[k].colour});
+    }
+    for (std::size_t k = 0; k < scene.materials.size(); ++k) {
+        const Material& m = scene.materials[k];
+        header.given_groups.push_back({"material",
+                                       static_cast<int>(k),
+                                       {{"k_a", m.ambient},
+                                        {"k_d", m.diffuse},
+                                        {"k_s", m.specular},
+                                        {"exponent", static_cast<double>(m.exponent)},
+                                        {"m", m.colour}}});
+    }
     if (is_grey(scene.background))
         header.given.push_back({"background", scene.background.x});
     else

@@ -23,12 +23,21 @@ struct GivenValue {
     StepValue value;
 };
 
+// The values of one object or light, for a scene with several (the text
+// header lists them: "sphere 1: S = (0.9, 0.4, 4.6), r = 1.3").
+struct GivenGroup {
+    std::string kind;  // sphere, plane, light
+    int index = 0;
+    std::vector<GivenValue> values;
+};
+
 struct TraceHeader {
     std::string scene_name;
     std::string scene_hash;
     std::string scene_file;     // the file the scene came from, or "built-in"
     std::string scene_content;  // the whole scene as compact JSON, as the scene writer prints it
     std::vector<GivenValue> given;  // the scene's values the steps use, for the text header
+    std::vector<GivenGroup> given_groups;  // each object and light, when there are several
     int w = 0;
     double z_E = 0;
     int i = 0, j = 0;

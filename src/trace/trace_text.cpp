@@ -73,7 +73,7 @@ std::string header_text(const PixelTrace& trace, const Vocabulary& vocabulary, L
     out += message(language, "trace_numbers", {{"real", h.real}, {"formula", h.formula}, {"spp", std::to_string(h.spp)}}) +
            "\n";
     const std::string separator = language == Language::pl ? "; " : ", ";
-    if (!h.skipped.empty()) {
+    if (!h.skipped.empty() || h.effects.size() != 1 || h.effects.front() != "lambert") {
         // A scene beyond the article's: what the engine ran and what not, and why.
         std::string stages;
         for (const std::string& id : h.effects) stages += (stages.empty() ? "" : separator) + id;
@@ -90,6 +90,14 @@ std::string header_text(const PixelTrace& trace, const Vocabulary& vocabulary, L
     }
     const std::string lead = message(language, "trace_given");
     if (!given.empty()) out += wrap(lead, given, display_width(lead), separator);
+    for (const GivenGroup& group : h.given_groups) {
+        std::string values;
+        for (const GivenValue& value : group.values)
+            values += (values.empty() ? "" : separator) + symbol_of(vocabulary, value.key) + " = " +
+                      value_of(value.value, vocabulary, value.key, language);
+        const std::string title = "  " + group_text(language, group.kind, group.index) + ": ";
+        out += wrap(title, values, display_width(title), separator);
+    }
     return out + '\n';
 }
 
@@ -190,10 +198,14 @@ std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, L
     // The article's kernel's result is its formula; a general scene's is a sum.
     const std::string formula = trace.hit_object.empty() ? (result ? result->formula : "")
                                                          : message(language, "trace_result_sum");
-    out += message(language, "trace_result") + I_P + " = " +
-           ((trace.branch == Branch::lit || trace.branch == Branch::shadowed) && !formula.empty() ? formula + " = "
-                                                                                                  : "") +
-           value + "\n";
+    const std::string result_lead = message(language, "trace_result");
+    out += wrap(result_lead,
+                I_P + " = " +
+                    ((trace.branch == Branch::lit || trace.branch == Branch::shadowed) && !formula.empty()
+                         ? formula + " = "
+                         : "") +
+                    value,
+                display_width(result_lead), language == Language::pl ? "; " : ", ");
     if (trace.first_non_finite && *trace.first_non_finite < trace.steps.size()) {
         const std::size_t k = *trace.first_non_finite;
         const std::string key(key_name(trace.steps[k].key));
