@@ -29,9 +29,10 @@ struct GroupShape {
 const std::vector<GroupShape>& group_shapes() {
     static const std::vector<GroupShape> shapes = {
         {"sphere", {"EE", "SS", "C", "delta", "Delta", "sqrt_Delta", "t", "t_far", "found", "S", "r"}},
-        {"plane", {"n_hat", "NQ", "NE", "t_plane", "found"}},
+        {"plane", {"n_hat", "NQ", "NE", "t_plane", "found", "Q", "n"}},
         {"light", {"K", "KK", "K_len", "K_P", "D", "cos_alpha", "blocker", "diffuse", "R_hat", "RV", "RV_n", "specular",
-                   "contribution", "L", "I"}},
+                   "contribution", "L", "I", "c"}},
+        {"material", {"k_a", "k_d", "k_s", "exponent", "m"}},  // the scene's only: no trace group
         {"light.sphere", {"b_s", "c_s", "delta_s", "s_1", "s_2", "found", "s_own"}},
         {"light.plane", {"NK", "s", "found"}},
     };
@@ -46,7 +47,10 @@ std::string joined(const std::vector<std::string_view>& items) {
 
 // How many objects of a kind the scene has.
 std::size_t count_of(const Scene& scene, const std::string& kind) {
-    return kind == "sphere" ? scene.spheres.size() : kind == "plane" ? scene.planes.size() : scene.lights.size();
+    return kind == "sphere"   ? scene.spheres.size()
+           : kind == "plane"  ? scene.planes.size()
+           : kind == "light"  ? scene.lights.size()
+                              : scene.materials.size();
 }
 
 }  // namespace
@@ -59,8 +63,8 @@ PathCheck check_path(const std::string& text, const Vocabulary& vocabulary, cons
     for (std::size_t g = 0; g < path->groups.size(); ++g) {
         const PathGroup& group = path->groups[g];
         const std::string name = group.kind + "[" + std::to_string(group.index) + "]";
-        if (group.kind != "sphere" && group.kind != "plane" && group.kind != "light")
-            return {PathFault::unknown_group, group.kind, "sphere, plane, light"};
+        if (group.kind != "sphere" && group.kind != "plane" && group.kind != "light" && group.kind != "material")
+            return {PathFault::unknown_group, group.kind, "sphere, plane, light, material"};
         kinds += (kinds.empty() ? "" : ".") + group.kind;
         const auto shape = std::find_if(group_shapes().begin(), group_shapes().end(),
                                         [&](const GroupShape& s) { return s.path == kinds; });

@@ -343,13 +343,20 @@ namespace {
 // centre S and radius r of sphere k, the position L and intensity I of light
 // k. Read from the scene's text the trace's header carries (parsed once a scene).
 std::optional<StepValue> scene_value(const PixelTrace& trace, const PathGroup& group, const std::string& key) {
+    if (!is_scene_value(group.kind + "[0]." + key)) return std::nullopt;
+    // The header names each object's, light's and material's values when the
+    // scene has several (or materials); the scene's text covers the rest.
+    for (const GivenGroup& given : trace.header.given_groups)
+        if (given.kind == group.kind && given.index == group.index)
+            for (const GivenValue& value : given.values)
+                if (value.key == key) return value.value;
     static thread_local std::string parsed_content;
     static thread_local nlohmann::json parsed;
     if (parsed_content != trace.header.scene_content || parsed.is_discarded()) {
         parsed = nlohmann::json::parse(trace.header.scene_content, nullptr, false);
         parsed_content = trace.header.scene_content;
     }
-    if (!is_scene_value(group.kind + "[0]." + key)) return std::nullopt;
+    if (group.kind == "material" || key == "c") return std::nullopt;
     const char* list = group.kind == "sphere" ? "spheres" : group.kind == "light" ? "lights" : "planes";
     if (!parsed.is_object() || !parsed.contains(list) || !parsed.at(list).is_array()) return std::nullopt;
     const nlohmann::json& items = parsed.at(list);
@@ -364,7 +371,7 @@ std::optional<StepValue> scene_value(const PixelTrace& trace, const PathGroup& g
             return StepValue{Vec3d{value[0].get<double>(), value[1].get<double>(), value[2].get<double>()}};
         return std::nullopt;
     };
-    if (group.kind != "plane") return read(key);
+    if (group.kind != "plane" || key == "Q" || key == "n") return read(key);
     // A plane's n̂ and n̂·Q, computed once a scene, as the engine computes them (render/world.hpp).
     const std::optional<StepValue> Q = read("Q"), n = read("n");
     if (!Q || !n || !std::holds_alternative<Vec3d>(*Q) || !std::holds_alternative<Vec3d>(*n)) return std::nullopt;
@@ -410,8 +417,10 @@ bool is_scene_value(const std::string& key) {
     if (path->groups.size() != 1) return false;
     const std::string& kind = path->groups[0].kind;
     const std::string& name = path->key;
-    return (kind == "sphere" && (name == "S" || name == "r")) || (kind == "light" && (name == "L" || name == "I")) ||
-           (kind == "plane" && (name == "n_hat" || name == "NQ"));
+    return (kind == "sphere" && (name == "S" || name == "r")) ||
+           (kind == "light" && (name == "L" || name == "I" || name == "c")) ||
+           (kind == "plane" && (name == "Q" || name == "n" || name == "n_hat" || name == "NQ")) ||
+           (kind == "material" && (name == "k_a" || name == "k_d" || name == "k_s" || name == "exponent" || name == "m"));
 }
 
 std::size_t derivation_rank(const PixelTrace& trace, const Vocabulary& vocabulary, const std::string& key) {
