@@ -5,7 +5,9 @@
 // case's numbers are visibly exact.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -280,10 +282,23 @@ TEST_CASE("no shadow acne at any scale: a surface never shadows its own lit side
 
 namespace {
 
+// The example scenes in a fixed order (the stage test names them by place),
+// then any other scene of lessons/scenes/, so a new one is covered too.
 std::vector<Scene> example_scene_files() {
+    const std::vector<std::string> order = {"article", "two_spheres", "two_lights", "floor",
+                                            "shadows", "phong",       "colour",     "everything"};
     std::vector<Scene> scenes;
-    for (const char* name : {"article", "two_spheres", "two_lights", "floor", "shadows", "phong", "colour", "everything"})
+    for (const std::string& name : order)
         scenes.push_back(load_scene_file(std::string(PROMYK_SOURCE_DIR "/lessons/scenes/") + name + ".json"));
+    std::vector<std::string> others;
+    for (const auto& entry : std::filesystem::directory_iterator(PROMYK_SOURCE_DIR "/lessons/scenes")) {
+        const std::string stem = entry.path().stem().string();
+        if (entry.path().extension() == ".json" && stem.find(".schema") == std::string::npos &&
+            std::find(order.begin(), order.end(), stem) == order.end())
+            others.push_back(entry.path().string());
+    }
+    std::sort(others.begin(), others.end());
+    for (const std::string& path : others) scenes.push_back(load_scene_file(path));
     return scenes;
 }
 
