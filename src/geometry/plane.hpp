@@ -8,6 +8,7 @@
 #include <limits>
 #include <optional>
 
+#include "math/real.hpp"
 #include "math/vec3.hpp"
 #include "trace/keys.hpp"
 

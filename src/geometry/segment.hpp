@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "math/real.hpp"
 #include "math/vec3.hpp"
 #include "trace/keys.hpp"
 
@@ -19,7 +20,6 @@ enum class Blocks { no, yes, undecided };
 template <class Real, class Recorder>
 Blocks sphere_blocks(const Vec3<Real>& P, const Vec3<Real>& K, Real KK, const Vec3<Real>& S, Real r,
                      Recorder& record) {
-    using std::sqrt;
     const Vec3<Real> SP = S - P;
     const Real b_s = dot(K, SP);
     record(Key::b_s, b_s);
@@ -29,7 +29,7 @@ Blocks sphere_blocks(const Vec3<Real>& P, const Vec3<Real>& K, Real KK, const Ve
     record(Key::delta_s, delta_s);
     if (!(delta_s * Real(0) == Real(0))) return Blocks::undecided;
     if (delta_s <= 0) return Blocks::no;
-    const Real q = sqrt(delta_s);
+    const Real q = square_root(delta_s);
     const Real s_1 = (b_s - q) / KK;
     record(Key::s_1, s_1);
     const Real s_2 = (b_s + q) / KK;

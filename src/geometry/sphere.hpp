@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "geometry/sphere_article.hpp"
+#include "math/real.hpp"
 #include "math/vec3.hpp"
 #include "trace/keys.hpp"
 
@@ -34,11 +35,10 @@ std::optional<SphereRoot<Real>> intersect_sphere(const Vec3<Real>& E, const Vec3
         return SphereRoot<Real>{*t, false};
     }
     // The same EE, C and delta as the near root's (the compiler shares them).
-    using std::sqrt;
     const Real EE = length_squared(E);
     const Real C = dot(E, S);
     const Real delta = C * C - EE * (length_squared(S) - r * r);
-    const Real t_far = (C + sqrt(delta)) / EE;
+    const Real t_far = (C + square_root(delta)) / EE;
     record(Key::t_far, t_far);
     if (t_far > 0) {
         if constexpr (Recorder::records) record(Key::found, "far");

@@ -7,6 +7,7 @@
 #include <limits>
 #include <optional>
 
+#include "math/real.hpp"
 #include "math/vec3.hpp"
 #include "trace/keys.hpp"
 
@@ -33,17 +34,16 @@ std::optional<Real> intersect_sphere_article(const Vec3<Real>& E, const Vec3<Rea
     // Compute the program's delta: a quarter of formula (2)'s discriminant.
     const Real delta = C * C - EE * (SS - r * r);
     record(Key::delta, delta);
-    using std::sqrt;
     if constexpr (Recorder::records) {
         // Formula (2)'s own discriminant, for the lessons: Delta = 4 delta, and
         // sqrt(Delta) = 2 sqrt(delta) (both exact: 4 and 2 are powers of two).
         record(Key::Delta, Real(4) * delta);
-        if (delta > 0) record(Key::sqrt_Delta, sqrt(Real(4) * delta));
+        if (delta > 0) record(Key::sqrt_Delta, square_root(Real(4) * delta));
     }
-    if (delta <= 0 && delta >= std::numeric_limits<Real>::lowest()) return std::nullopt;
+    if (delta <= 0 && delta >= RealTraits<Real>::lowest()) return std::nullopt;
 
     // Compute the nearer root: the minus sign, since |E|^2 > 0.
-    const Real t = (C - sqrt(delta)) / EE;
+    const Real t = (C - square_root(delta)) / EE;
     record(Key::t, t);
     return t;
 }

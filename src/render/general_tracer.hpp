@@ -13,6 +13,7 @@
 #include "geometry/plane.hpp"
 #include "geometry/segment.hpp"
 #include "geometry/sphere.hpp"
+#include "math/real.hpp"
 #include "math/vec3.hpp"
 #include "render/world.hpp"
 #include "shading/phong.hpp"
@@ -64,7 +65,7 @@ typename World<Real, Rgb>::Intensity zero_intensity() {
 
 template <class Real, bool Rgb>
 typename World<Real, Rgb>::Intensity nan_of() {
-    constexpr Real nan = std::numeric_limits<Real>::quiet_NaN();
+    const Real nan = RealTraits<Real>::quiet_nan();
     if constexpr (Rgb)
         return {nan, nan, nan};
     else
@@ -75,7 +76,7 @@ typename World<Real, Rgb>::Intensity nan_of() {
 // +inf and NaN; intensities are never negative).
 template <class Real>
 bool below_max(Real x) {
-    return x <= std::numeric_limits<Real>::max();
+    return x <= RealTraits<Real>::max();
 }
 template <class Real>
 bool below_max(const Vec3<Real>& v) {
@@ -91,11 +92,10 @@ GeneralResult<typename World<Real, Rgb>::Intensity> trace_general(const World<Re
                                                                    WorkCounts& work, Recorder& record) {
     using Intensity = typename World<Real, Rgb>::Intensity;
     using Result = GeneralResult<Intensity>;
-    using std::sqrt;
     record(Key::E, E);
 
     // The nearest hit with t > 0 over every object, ties to the earlier one.
-    Real best_t = std::numeric_limits<Real>::infinity();
+    Real best_t = RealTraits<Real>::infinity();
     int kind = 0, index = -1;
     bool inside = false;    // the sphere's far root: seen from inside
     Real best_NE = 0;       // a plane's n_hat.E: > 0 seen from its back
@@ -169,7 +169,7 @@ GeneralResult<typename World<Real, Rgb>::Intensity> trace_general(const World<Re
     const auto& surface = world.materials[static_cast<std::size_t>(material)];
     Vec3<Real> V_hat{};
     if constexpr (Sw::phong) {
-        V_hat = -P / sqrt(length_squared(P));
+        V_hat = -P / square_root(length_squared(P));
         record(Key::V_hat, V_hat);
     }
 
@@ -183,14 +183,14 @@ GeneralResult<typename World<Real, Rgb>::Intensity> trace_general(const World<Re
         const Real KK = length_squared(K);
         record(Key::KK, KK);
         if constexpr (Recorder::records) {
-            const Real K_len = sqrt(KK);
+            const Real K_len = square_root(KK);
             record(Key::K_len, K_len);
             if (K_len > 0) record(Key::K_P, K / K_len);
         }
         const Real D = dot(N, K);
         record(Key::D, D);
         if constexpr (Recorder::records) {
-            const Real K_len = sqrt(KK);
+            const Real K_len = square_root(KK);
             if (K_len > 0) record(Key::cos_alpha, dot(N / r, K / K_len));
         }
         if (!(KK * Real(0) + D * Real(0) == Real(0))) {
@@ -256,7 +256,7 @@ GeneralResult<typename World<Real, Rgb>::Intensity> trace_general(const World<Re
         // This light's contribution: c (m (k_a I + k_d diffuse) + specular).
         Real diffuse = Real(0);
         if (reaches) {
-            diffuse = light.I * D / (r * sqrt(KK));  // the article's I D / (r sqrt(K))
+            diffuse = light.I * D / (r * square_root(KK));  // the article's I D / (r sqrt(K))
             record(Key::diffuse, diffuse);
         }
         Real lambert = surface.k_d * diffuse;

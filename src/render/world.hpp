@@ -8,6 +8,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "math/real.hpp"
 #include "math/vec3.hpp"
 #include "scene/scene.hpp"
 
@@ -63,9 +64,8 @@ Vec3<Real> to_real(const Vec3d& v) {
 // The plane's unit normal n / |n|, |n| = sqrt(n.n), each component divided.
 template <class Real>
 Vec3<Real> unit_normal(const Vec3d& n) {
-    using std::sqrt;
     const Vec3<Real> v = to_real<Real>(n);
-    return v / sqrt(length_squared(v));
+    return v / square_root(length_squared(v));
 }
 
 template <class Real, bool Rgb>

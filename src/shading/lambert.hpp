@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "math/real.hpp"
 #include "math/vec3.hpp"
 #include "trace/keys.hpp"
 
@@ -19,7 +20,6 @@ struct Shade {
 template <class Real, class Recorder>
 Shade<Real> shade_lambert(const Vec3<Real>& P, const Vec3<Real>& N, Real r, const Vec3<Real>& L, Real I,
                           Recorder& record) {
-    using std::sqrt;
     // Compute the direction to the light, K = L - P, and its squared length.
     const Vec3<Real> K = L - P;
     record(Key::K, K);
@@ -28,7 +28,7 @@ Shade<Real> shade_lambert(const Vec3<Real>& P, const Vec3<Real>& N, Real r, cons
     if constexpr (Recorder::records) {
         // |K| and the unit direction K_P = K / |K| of section 4, for the
         // lessons; undefined when the light sits on P (|K| = 0).
-        const Real K_len = sqrt(KK);
+        const Real K_len = square_root(KK);
         record(Key::K_len, K_len);
         if (K_len > 0) record(Key::K_P, K / K_len);
     }
@@ -37,7 +37,7 @@ Shade<Real> shade_lambert(const Vec3<Real>& P, const Vec3<Real>& N, Real r, cons
     record(Key::D, D);
     if constexpr (Recorder::records) {
         // cos(alpha) = N_P.K_P, as formula (1) gives it for unit vectors.
-        const Real K_len = sqrt(KK);
+        const Real K_len = square_root(KK);
         if (K_len > 0) record(Key::cos_alpha, dot(N / r, K / K_len));
     }
     // An overflow anywhere since E (in t, P, N or K) shows in |K|^2 or D,
@@ -45,11 +45,11 @@ Shade<Real> shade_lambert(const Vec3<Real>& P, const Vec3<Real>& N, Real r, cons
     // decide dark or lit. x * 0 is 0 for a finite x and NaN for inf or NaN,
     // so one comparison checks both (a branch-free test, cheaper per pixel
     // than two isfinite).
-    if (!(KK * Real(0) + D * Real(0) == Real(0))) return {std::numeric_limits<Real>::quiet_NaN(), Branch::non_finite};
+    if (!(KK * Real(0) + D * Real(0) == Real(0))) return {RealTraits<Real>::quiet_nan(), Branch::non_finite};
     if (D <= 0) return {Real(0), Branch::dark};
-    const Real I_P = I * D / (r * sqrt(KK));
+    const Real I_P = I * D / (r * square_root(KK));
     // I D overflowing, or r sqrt(|K|^2) underflowing to 0: I_P is +inf or NaN.
-    if (!(I_P <= std::numeric_limits<Real>::max())) return {I_P, Branch::non_finite};
+    if (!(I_P <= RealTraits<Real>::max())) return {I_P, Branch::non_finite};
     return {I_P, Branch::lit};
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "math/power.hpp"
+#include "math/real.hpp"
 #include "math/vec3.hpp"
 #include "trace/keys.hpp"
 
@@ -15,9 +16,8 @@ namespace promyk {
 template <class Real, class Recorder>
 Real phong_specular(const Vec3<Real>& N, Real r, const Vec3<Real>& K, Real KK, const Vec3<Real>& V_hat, Real I,
                     Real k_s, int n, Recorder& record) {
-    using std::sqrt;
     const Vec3<Real> N_P = N / r;
-    const Vec3<Real> K_P = K / sqrt(KK);
+    const Vec3<Real> K_P = K / square_root(KK);
     const Real cos_alpha = dot(N_P, K_P);
     // The lessons' section-4 quantities are recorded by Lambert's stage
     // already when a recorder asks; here they are needed for the value.

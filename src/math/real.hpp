@@ -1,0 +1,72 @@
+// The real types the engine computes in (`--real`): float, double, long
+// double and quad (GCC's __float128, libquadmath). Every stage is written over
+// a Real type; RealTraits gives each type the few things the standard library
+// does not give all four alike in strict C++17 (numeric_limits and sqrt are
+// not defined for __float128 there).
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <string_view>
+
+#include <quadmath.h>
+
+namespace promyk {
+
+using quad = __float128;
+
+enum class RealType { float_, double_, long_double, quad };
+
+constexpr std::string_view real_type_name(RealType type) {
+    switch (type) {
+        case RealType::float_:
+            return "float";
+        case RealType::double_:
+            return "double";
+        case RealType::long_double:
+            return "long-double";
+        case RealType::quad:
+            return "quad";
+    }
+    return "?";
+}
+
+template <class Real>
+struct RealTraits {
+    static constexpr RealType type = std::is_same_v<Real, float>    ? RealType::float_
+                                     : std::is_same_v<Real, double> ? RealType::double_
+                                                                    : RealType::long_double;
+    static Real max() { return std::numeric_limits<Real>::max(); }
+    static Real lowest() { return std::numeric_limits<Real>::lowest(); }
+    static Real infinity() { return std::numeric_limits<Real>::infinity(); }
+    static Real quiet_nan() { return std::numeric_limits<Real>::quiet_NaN(); }
+    static Real sqrt(Real x) { return std::sqrt(x); }
+};
+
+template <>
+struct RealTraits<quad> {
+    static constexpr RealType type = RealType::quad;
+    // The largest finite quad: the value just below infinity (FLT128_MAX is
+    // spelled with a GNU literal suffix that strict C++17 does not accept).
+    static quad max() { return nextafterq(infinity(), 0); }
+    static quad lowest() { return -max(); }
+    static quad infinity() { return quad(std::numeric_limits<double>::infinity()); }
+    static quad quiet_nan() { return nanq(""); }
+    static quad sqrt(quad x) { return sqrtq(x); }
+};
+
+// The correctly rounded square root in the value's own type.
+template <class Real>
+Real square_root(Real x) {
+    return RealTraits<Real>::sqrt(x);
+}
+
+// The shortest decimal text that reads back to the same value in its own
+// type ("inf", "-inf", "nan" for non-finite values).
+std::string real_text(float x);
+std::string real_text(double x);
+std::string real_text(long double x);
+std::string real_text(quad x);
+
+}  // namespace promyk
