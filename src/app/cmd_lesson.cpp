@@ -210,6 +210,7 @@ int run_lesson(const LessonOptions& options) {
     view.color = view.format == LessonFormat::text && isatty(STDOUT_FILENO) == 1 && (no_color == nullptr || *no_color == '\0');
     const std::unique_ptr<Kernel> kernel = make_kernel(scene);
     const TraceHeader header = trace_header(scene, w);
+    view.traces.reserve(pixels.size());
     for (const LessonPixel& pixel : pixels) view.traces.push_back(kernel->trace(header, pixel.i, pixel.j));
     if (!options.answers.empty()) return run_answers(options, view, *kernel, header);
 

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 
+#include "math/real.hpp"
 #include "render/stages.hpp"
 #include "scene/scene.hpp"
 #include "trace/keys.hpp"
@@ -47,6 +48,7 @@ private:
     Stages stages_;
 };
 
-std::unique_ptr<Kernel> make_kernel(const Scene& scene);
+// The kernel for the scene, computing in `real` (PRODUCT.md: --real).
+std::unique_ptr<Kernel> make_kernel(const Scene& scene, RealType real = RealType::double_);
 
 }  // namespace promyk

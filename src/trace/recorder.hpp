@@ -6,9 +6,11 @@
 
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
+#include "math/real.hpp"
 #include "math/vec3.hpp"
 #include "trace/keys.hpp"
 
@@ -31,8 +33,11 @@ using StepValue = std::variant<double, Vec3d, std::string>;
 
 struct Step {
     Key key;
-    StepValue value;
-    int group = -1;  // index into the trace's groups; -1: the top level
+    StepValue value;  // for a non-double real type: the value rounded to double
+    int group = -1;   // index into the trace's groups; -1: the top level
+    // For a non-double real type, the value as its own type's shortest
+    // round-trip text (one per component of a vector); empty for double.
+    std::vector<std::string> real_text;
 };
 
 // A group of steps: one object tested, one light, one object a shadow ray is
@@ -43,13 +48,34 @@ struct TraceGroup {
     int parent = -1;   // the enclosing group, -1 for the top level
 };
 
+// A real type other than double (float, long double, quad).
+template <class Real>
+inline constexpr bool is_other_real =
+    (std::is_floating_point_v<Real> || std::is_same_v<Real, quad>) && !std::is_same_v<Real, double>;
+
 class RecordingRecorder {
 public:
     static constexpr bool records = true;
 
-    void operator()(Key key, double value) { steps_.push_back({key, value, current_}); }
-    void operator()(Key key, const Vec3d& value) { steps_.push_back({key, value, current_}); }
-    void operator()(Key key, std::string_view word) { steps_.push_back({key, std::string(word), current_}); }
+    void operator()(Key key, double value) { steps_.push_back({key, value, current_, {}}); }
+    void operator()(Key key, const Vec3d& value) { steps_.push_back({key, value, current_, {}}); }
+    void operator()(Key key, std::string_view word) { steps_.push_back({key, std::string(word), current_, {}}); }
+    void operator()(Key key, const char* word) { (*this)(key, std::string_view(word)); }
+    void operator()(Key key, const std::string& word) { (*this)(key, std::string_view(word)); }
+
+    // A value of another real type: kept as a double for the JSON's `value`,
+    // and exactly, as text in its own type, beside it.
+    template <class Real, class = std::enable_if_t<is_other_real<Real>>>
+    void operator()(Key key, Real value) {
+        steps_.push_back({key, static_cast<double>(value), current_, {promyk::real_text(value)}});
+    }
+    template <class Real, class = std::enable_if_t<is_other_real<Real>>>
+    void operator()(Key key, const Vec3<Real>& v) {
+        steps_.push_back({key,
+                          Vec3d{static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)},
+                          current_,
+                          {promyk::real_text(v.x), promyk::real_text(v.y), promyk::real_text(v.z)}});
+    }
 
     void begin_group(std::string_view kind, int index) {
         groups_.push_back({std::string(kind), index, current_});

@@ -58,6 +58,9 @@ struct PixelTrace {
     std::string hit_object;  // "sphere 1", "plane 0"; empty for a miss (and the article's kernel)
     double result = 0;       // the intensity; for a coloured scene its red channel
     std::optional<Vec3d> result_rgb;  // a coloured scene's [r, g, b]
+    // For a non-double real type: the result's exact text in its own type
+    // (one, or r, g, b); empty for double.
+    std::vector<std::string> result_real_text;
     int grey = 0;  // the pixel's 8-bit grey level in the image (a coloured scene: red)
     std::array<int, 3> rgb{};  // a coloured scene's 8-bit r, g, b
     // The index into steps of the first value that is NaN or infinite.
