@@ -42,6 +42,7 @@ struct RenderOptions {
     std::string output = "promyk.png";
     int w = 512;
     int threads = 0;
+    RealType real = RealType::double_;
     bool plain = false;
     bool stats = false;
     int scale = 1;
@@ -199,7 +200,7 @@ int run_render(const RenderOptions& options) {
     // regular file (a path, or standard output redirected to one), not to a
     // pipe, a terminal or /dev/null.
     if (traces_target && traces_target->lands_in_regular_file && !options.force) {
-        const TraceSizeEstimate estimate = estimate_trace_size(scene, options.w, traced.pixels);
+        const TraceSizeEstimate estimate = estimate_trace_size(scene, options.w, traced.pixels, 256, options.real);
         if (estimate.bytes() > trace_file_limit) {
             throw UsageError(fmt::format(
                 "--traces {} would be about {} ({} traces of about {} each); add --force to write it anyway, "
@@ -222,7 +223,7 @@ int run_render(const RenderOptions& options) {
     {
         Progress progress("promyk render", "rows");
         FileSink sink(*image, traces ? &*traces : nullptr, progress);
-        render(scene, {options.w, options.threads}, traced.selection, sink, &stats);
+        render(scene, {options.w, options.threads, options.real}, traced.selection, sink, &stats);
         trace_count = sink.trace_count();
     }
     image->finish();
@@ -280,6 +281,7 @@ std::function<int()> setup_render(CLI::App& app) {
         ->capture_default_str();
     cmd->add_flag("--grid", options->grid, "Draw 1-pixel grey lines between the pixels' blocks (see --scale)");
     add_threads_option(*cmd, options->threads);
+    add_real_option(*cmd, options->real);
     cmd->add_option("--traces", options->traces_file,
                     "Also write one JSON trace per pixel to FILE, or to standard output with -\n"
                     "(JSON Lines, rows in order); all pixels unless --trace-pixel or --trace-region choose some")

@@ -1,5 +1,8 @@
 #include "app/common_options.hpp"
 
+#include <map>
+#include <string>
+
 #include "app/cli_values.hpp"
 
 namespace promyk::app {
@@ -34,6 +37,19 @@ CLI::Option* add_threads_option(CLI::App& cmd, int& threads) {
         ->type_name("N")
         ->check(whole_number(0, cli::max_threads))
         ->capture_default_str();
+}
+
+CLI::Option* add_real_option(CLI::App& cmd, RealType& real) {
+    const std::map<std::string, RealType> types = {{"float", RealType::float_},
+                                                   {"double", RealType::double_},
+                                                   {"long-double", RealType::long_double},
+                                                   {"quad", RealType::quad}};
+    return cmd.add_option("--real", real,
+                          "The type every number is computed in: float (24-bit significand), double (53, the\n"
+                          "default), long-double (x87, 64) or quad (__float128, 113)")
+        ->type_name("TYPE")
+        ->transform(CLI::CheckedTransformer(types))
+        ->default_str("double");
 }
 
 }  // namespace promyk::app

@@ -6,6 +6,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "math/real.hpp"
+
 namespace promyk::app {
 
 // A check for a whole number from min to max in plain decimal; its message
@@ -23,5 +25,9 @@ CLI::Option* add_w_option(CLI::App& cmd, int& w);
 
 // --threads N: 0 (the default) means all the cores this process may use.
 CLI::Option* add_threads_option(CLI::App& cmd, int& threads);
+
+// --real float|double|long-double|quad: the type the whole computation is
+// done in (default double, the article's).
+CLI::Option* add_real_option(CLI::App& cmd, RealType& real);
 
 }  // namespace promyk::app

@@ -44,6 +44,7 @@ int image_channels(const Scene& scene);
 struct RenderSettings {
     int w = 512;
     int threads = 0;  // 0: all cores
+    RealType real = RealType::double_;  // the type every number is computed in
 };
 
 // The number of threads a setting means (0: all cores).

@@ -2,6 +2,7 @@
 // the header that says what was computed.
 #pragma once
 
+#include "math/real.hpp"
 #include "render/tracer.hpp"
 #include "scene/scene.hpp"
 #include "trace/trace.hpp"
@@ -15,6 +16,6 @@ TraceHeader trace_header(const Scene& scene, int w);
 PixelTrace trace_pixel(const ArticleWorld<double>& world, const TraceHeader& header, int i, int j);
 
 // Traces pixel (i, j) of a w x w pane of the scene.
-PixelTrace trace_pixel(const Scene& scene, int w, int i, int j);
+PixelTrace trace_pixel(const Scene& scene, int w, int i, int j, RealType real = RealType::double_);
 
 }  // namespace promyk

@@ -3,6 +3,8 @@
 // trace at w = 512 is ~150 MB; a command warns before such a file.
 #pragma once
 
+#include "math/real.hpp"
+
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -35,6 +37,7 @@ struct TraceSizeEstimate {
 
 // Traces `samples` of the chosen pixels (trace_pixel + append_trace_json)
 // and averages their size. InputError for a scene the engine cannot trace.
-TraceSizeEstimate estimate_trace_size(const Scene& scene, int w, const TracedPixels& traced, int samples = 256);
+TraceSizeEstimate estimate_trace_size(const Scene& scene, int w, const TracedPixels& traced, int samples = 256,
+                                      RealType real = RealType::double_);
 
 }  // namespace promyk

@@ -93,6 +93,23 @@ void append_header(std::string& out, const TraceHeader& h) {
     }
 }
 
+// A non-double value's exact text in its own type: "real_text": "0.1" for a
+// number, ["0.1", "0.2", "3"] for a vector.
+void append_real_text(std::string& out, const std::vector<std::string>& texts, const char* name = "real_text") {
+    if (texts.empty()) return;
+    fmt::format_to(std::back_inserter(out), ",\"{}\":", name);
+    if (texts.size() == 1) {
+        append_string(out, texts.front());
+        return;
+    }
+    out += '[';
+    for (std::size_t k = 0; k < texts.size(); ++k) {
+        if (k) out += ',';
+        append_string(out, texts[k]);
+    }
+    out += ']';
+}
+
 // The chain of groups from the top level down to `group` (empty for -1).
 std::vector<int> group_chain(const std::vector<TraceGroup>& groups, int group) {
     std::vector<int> chain;
@@ -131,6 +148,7 @@ void append_steps(std::string& out, const PixelTrace& trace) {
         append_string(out, key_name(step.key));
         out += ',';
         std::visit([&out](const auto& value) { append_value(out, value); }, step.value);
+        append_real_text(out, step.real_text);
         out += '}';
     }
     for (std::size_t k = 0; k < open.size(); ++k) out += "]}";
@@ -176,6 +194,7 @@ void append_trace_json(std::string& out, const PixelTrace& trace) {
             }
             out += ']';
         }
+        append_real_text(out, trace.result_real_text, "result_real_text");
         fmt::format_to(std::back_inserter(out), ",\"rgb\":[{},{},{}]}}", trace.rgb[0], trace.rgb[1], trace.rgb[2]);
         return;
     }
@@ -185,6 +204,7 @@ void append_trace_json(std::string& out, const PixelTrace& trace) {
         out += ",\"result_text\":";
         append_string(out, non_finite_text(trace.result));
     }
+    append_real_text(out, trace.result_real_text, "result_real_text");
     fmt::format_to(std::back_inserter(out), ",\"grey\":{}}}", trace.grey);
 }
 

@@ -49,6 +49,31 @@ std::string wrap(const std::string& first, const std::string& text, std::size_t 
 
 std::string value_of(const StepValue& value, const Vocabulary& vocabulary, const std::string& key, Language language);
 
+std::string kind_of(const Vocabulary& vocabulary, const std::string& key);
+
+// A step's value as text: in a real type other than double, its exact text
+// in that type (the Polish way in Polish: a decimal comma); else value_of.
+std::string step_value_text(const Step& step, const Vocabulary& vocabulary, const std::string& key,
+                            Language language) {
+    if (step.real_text.empty()) return value_of(step.value, vocabulary, key, language);
+    auto local = [language](std::string text) {
+        if (language == Language::pl) {
+            for (char& c : text)
+                if (c == '.') c = ',';
+            if (!text.empty() && text[0] == '-') text = "−" + text.substr(1);
+        }
+        return text;
+    };
+    if (step.real_text.size() == 1) return local(step.real_text.front());
+    const std::string kind = kind_of(vocabulary, key);
+    const char* separator = language == Language::pl ? "; " : ", ";
+    const bool vector = kind == "vector" || kind == "colour";
+    std::string out = vector ? "[" : "(";
+    for (std::size_t k = 0; k < step.real_text.size(); ++k)
+        out += (k ? separator : "") + local(step.real_text[k]);
+    return out + (vector ? "]" : ")");
+}
+
 std::string symbol_of(const Vocabulary& vocabulary, const std::string& key) {
     const VocabularyEntry* entry = vocabulary.find(key);
     return entry ? entry->symbol : key;
@@ -141,7 +166,7 @@ std::string narrow_steps(const PixelTrace& trace, const Vocabulary& vocabulary, 
         out += wrap(lead, entry && !entry->formula.empty() ? symbol + " = " + entry->formula : symbol, indent);
         if (options.explain && entry)
             out += wrap(std::string(indent, ' '), options.language == Language::pl ? entry->pl : entry->en, indent);
-        out += wrap(std::string(indent, ' ') + "= ", value_of(step.value, vocabulary, key, options.language),
+        out += wrap(std::string(indent, ' ') + "= ", step_value_text(step, vocabulary, key, options.language),
                     indent + 2, options.language == Language::pl ? "; " : " ");
     }
     return out;
@@ -166,7 +191,7 @@ std::string wide_steps(const PixelTrace& trace, const Vocabulary& vocabulary, co
         }
         const VocabularyEntry* entry = vocabulary.find(bare);
         rows.push_back({std::to_string(k + 1), key, entry ? entry->symbol : key, entry ? entry->formula : "",
-                        value_of(step.value, vocabulary, bare, language)});
+                        step_value_text(step, vocabulary, bare, language)});
     }
     std::size_t widths[4] = {0, 0, 0, 0};
     for (const Row& row : rows) {
@@ -191,8 +216,12 @@ std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, L
     std::string out = "\n" + wrap(branch_lead, branch + (about ? " — " + about_text : ""), display_width(branch_lead));
     const VocabularyEntry* result = vocabulary.find("I_P");
     const std::string I_P = result ? result->symbol : "I_P";
-    const std::string value = trace.result_rgb ? value_text(StepValue{*trace.result_rgb}, "colour", language)
-                                               : number_text(trace.result, language);
+    std::string value = trace.result_rgb ? value_text(StepValue{*trace.result_rgb}, "colour", language)
+                                         : number_text(trace.result, language);
+    if (!trace.result_real_text.empty()) {
+        Step result{Key::E, StepValue{0.0}, -1, trace.result_real_text};
+        value = step_value_text(result, vocabulary, trace.result_rgb ? "m" : "I_P", language);
+    }
     if (!trace.hit_object.empty())
         out += message(language, "trace_hit") + word_text(language, trace.hit_object) + "\n";
     // The article's kernel's result is its formula; a general scene's is a sum.
