@@ -16,6 +16,8 @@
 #include "render/kernel.hpp"
 #include "render/trace_pixel.hpp"
 #include "scene/scene_json.hpp"
+#include "trace/trace_compare.hpp"
+#include "trace/vocabulary.hpp"
 
 using namespace promyk;
 
@@ -168,4 +170,24 @@ TEST_CASE("a trace in another real type carries each value's exact text, and equ
                 }
         }
     }
+}
+
+TEST_CASE("trace --compare: digits agreeing with the most precise type, counted on exact values", "[real]") {
+    // float 6.4 is 6.400000095367431640625: 7 digits of the double 6.4.
+    CHECK(agreeing_digits("6.4", "float", "6.4", "double") == 7);
+    CHECK(agreeing_digits("6.4", "double", "6.400000000000000355271367880050093", "quad") == -1);
+    CHECK(agreeing_digits("3.14159", "quad", "3.14160", "quad") == 5);
+    CHECK(agreeing_digits("-1", "double", "1", "double") == 0);
+    CHECK(agreeing_digits("1", "double", "0", "double") == 0);
+    CHECK(mark_digits("4.5578117", 6) == "4.55781|17");
+    CHECK(mark_digits("0.0012345", 2) == "0.0012|345");
+    CHECK(mark_digits("-10.240001", 7) == "-10.24000|1");
+    CHECK(mark_digits("1.5e-07", 1) == "1.|5e-07");  // before the first digit that differs
+    CHECK(mark_digits("4.5", 5) == "4.5");
+    const std::vector<PixelTrace> traces = {trace_pixel(article_scene(), 8, 3, 4, RealType::float_),
+                                            trace_pixel(article_scene(), 8, 3, 4, RealType::quad)};
+    const std::string text = format_comparison(traces, builtin_vocabulary(), Language::en);
+    CHECK_THAT(text, Catch::Contains("delta  Δ/4\n  float  4.55781|17   6 significant digits agree\n"
+                                     "  quad   4.557812500000000752176099183543587\n"));
+    CHECK_THAT(text, Catch::Contains("E  E\n  float  (0.125, 0.125, 2)   exactly equal\n"));
 }

@@ -1,7 +1,10 @@
 // promyk trace: one pixel's whole derivation, as a table or as JSON.
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -9,7 +12,11 @@
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
 #include "render/trace_pixel.hpp"
+#include "trace/trace_compare.hpp"
 #include "trace/trace_text.hpp"
+#include "util/errors.hpp"
+#include "util/printable.hpp"
+#include "util/text.hpp"
 
 namespace promyk::app {
 
@@ -24,11 +31,54 @@ struct TraceOptions {
     bool explain = false;
     std::string lang;  // empty: from LANG
     RealType real = RealType::double_;
+    std::string compare;  // "float,double,quad": trace in each, side by side
 };
+
+// The types of --compare, least precise first (the last is the reference).
+std::vector<RealType> compared_types(const std::string& list) {
+    const std::vector<std::pair<std::string, RealType>> known = {{"float", RealType::float_},
+                                                                 {"double", RealType::double_},
+                                                                 {"long-double", RealType::long_double},
+                                                                 {"quad", RealType::quad}};
+    std::vector<bool> chosen(known.size(), false);
+    std::size_t start = 0;
+    while (start <= list.size()) {
+        const std::size_t comma = std::min(list.find(',', start), list.size());
+        const std::string name(trim(std::string_view(list).substr(start, comma - start)));
+        const auto it = std::find_if(known.begin(), known.end(), [&](const auto& k) { return k.first == name; });
+        if (it == known.end())
+            throw UsageError(fmt::format("--compare: unknown type '{}'; the types are float, double, long-double, quad",
+                                         printable(name)));
+        chosen[static_cast<std::size_t>(it - known.begin())] = true;
+        start = comma + 1;
+    }
+    std::vector<RealType> types;
+    for (std::size_t k = 0; k < known.size(); ++k)
+        if (chosen[k]) types.push_back(known[k].second);
+    if (types.size() < 2) throw UsageError("--compare needs at least two different types, e.g. float,double,quad");
+    return types;
+}
 
 int run_trace(const TraceOptions& options) {
     const cli::Pixel pixel = cli::parse_pixel(options.pixel, "--pixel", options.w);
     const Scene scene = cli::load_scene_option(options.scene_file);
+    const Language language = options.lang.empty() ? language_from_environment() : *parse_language(options.lang);
+    if (!options.compare.empty()) {
+        std::vector<PixelTrace> traces;
+        for (const RealType type : compared_types(options.compare))
+            traces.push_back(trace_pixel(scene, options.w, pixel.i, pixel.j, type));
+        std::string out;
+        if (options.format == "json") {
+            for (const PixelTrace& trace : traces) {
+                append_trace_json(out, trace);
+                out += '\n';
+            }
+        } else {
+            out = format_comparison(traces, builtin_vocabulary(), language);
+        }
+        std::fputs(out.c_str(), stdout);
+        return 0;
+    }
     const PixelTrace trace = trace_pixel(scene, options.w, pixel.i, pixel.j, options.real);
     std::string out;
     if (options.format == "json") {
@@ -37,7 +87,7 @@ int run_trace(const TraceOptions& options) {
     } else {
         TraceTextOptions text;
         text.layout = options.wide ? TraceLayout::wide : TraceLayout::narrow;
-        text.language = options.lang.empty() ? language_from_environment() : *parse_language(options.lang);
+        text.language = language;
         text.explain = options.explain;
         out = format_trace_text(trace, builtin_vocabulary(), text);
     }
@@ -55,6 +105,13 @@ std::function<int()> setup_trace(CLI::App& app) {
         ->capture_default_str();
     add_w_option(*cmd, options->w);
     add_real_option(*cmd, options->real);
+    cmd->add_option("--compare", options->compare,
+                    "Trace the pixel in several types and print the steps side by side, each value marked\n"
+                    "(|) where its digits stop agreeing with the most precise type's (e.g. float,double,quad);\n"
+                    "with --format json, one trace a line")
+        ->type_name("TYPES")
+        ->check(non_empty())
+        ->excludes("--real");
     add_scene_option(*cmd, options->scene_file);
     cmd->add_option("--format", options->format, "text: an aligned table; json: the trace as one JSON line")
         ->check(CLI::IsMember({"text", "json"}))
