@@ -135,12 +135,12 @@ TEST_CASE("in each real type the engine computes the article's program in that t
     // differ from double too, in the last bits.
     CHECK(check(RealType::float_, [](int i, int j) { return literal_intensity<float>(w, i, j); }) > 1000);
     CHECK(check(RealType::long_double, [](int i, int j) { return literal_intensity<long double>(w, i, j); }) > 100);
-    CHECK(check(RealType::quad, [](int i, int j) { return literal_intensity<quad>(w, i, j); }) > 100);
+    CHECK(check(RealType::quad_, [](int i, int j) { return literal_intensity<quad>(w, i, j); }) > 100);
 }
 
 TEST_CASE("a trace in another real type carries each value's exact text, and equals the untraced pixel",
           "[real]") {
-    for (const RealType type : {RealType::float_, RealType::long_double, RealType::quad}) {
+    for (const RealType type : {RealType::float_, RealType::long_double, RealType::quad_}) {
         const PixelTrace trace = trace_pixel(article_scene(), 8, 3, 4, type);
         CHECK(trace.header.real == real_type_name(type));
         for (const Step& step : trace.steps) {
@@ -154,12 +154,12 @@ TEST_CASE("a trace in another real type carries each value's exact text, and equ
         REQUIRE(trace.result_real_text.size() == 1);
         CHECK(trace.result == make_kernel(article_scene(), type)->intensity(8, 3, 4).x);
     }
-    const PixelTrace quad_trace = trace_pixel(article_scene(), 8, 3, 4, RealType::quad);
+    const PixelTrace quad_trace = trace_pixel(article_scene(), 8, 3, 4, RealType::quad_);
     CHECK(quad_trace.result_real_text.front() == real_text(literal_intensity<quad>(8, 3, 4)));
     // Every example scene in every type: traced equals untraced.
     for (const char* name : {"everything", "floor", "phong"}) {
         const Scene scene = load_scene_file(std::string(PROMYK_SOURCE_DIR "/lessons/scenes/") + name + ".json");
-        for (const RealType type : {RealType::float_, RealType::long_double, RealType::quad}) {
+        for (const RealType type : {RealType::float_, RealType::long_double, RealType::quad_}) {
             const auto kernel = make_kernel(scene, type);
             const TraceHeader header = trace_header(scene, 12);
             for (int i = 0; i < 12; ++i)
@@ -185,7 +185,7 @@ TEST_CASE("trace --compare: digits agreeing with the most precise type, counted 
     CHECK(mark_digits("1.5e-07", 1) == "1.|5e-07");  // before the first digit that differs
     CHECK(mark_digits("4.5", 5) == "4.5");
     const std::vector<PixelTrace> traces = {trace_pixel(article_scene(), 8, 3, 4, RealType::float_),
-                                            trace_pixel(article_scene(), 8, 3, 4, RealType::quad)};
+                                            trace_pixel(article_scene(), 8, 3, 4, RealType::quad_)};
     const std::string text = format_comparison(traces, builtin_vocabulary(), Language::en);
     CHECK_THAT(text, Catch::Contains("delta  Δ/4\n  float  4.55781|17   6 significant digits agree\n"
                                      "  quad   4.557812500000000752176099183543587\n"));

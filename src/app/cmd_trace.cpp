@@ -39,7 +39,7 @@ std::vector<RealType> compared_types(const std::string& list) {
     const std::vector<std::pair<std::string, RealType>> known = {{"float", RealType::float_},
                                                                  {"double", RealType::double_},
                                                                  {"long-double", RealType::long_double},
-                                                                 {"quad", RealType::quad}};
+                                                                 {"quad", RealType::quad_}};
     std::vector<bool> chosen(known.size(), false);
     std::size_t start = 0;
     while (start <= list.size()) {

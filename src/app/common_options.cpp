@@ -43,7 +43,7 @@ CLI::Option* add_real_option(CLI::App& cmd, RealType& real) {
     const std::map<std::string, RealType> types = {{"float", RealType::float_},
                                                    {"double", RealType::double_},
                                                    {"long-double", RealType::long_double},
-                                                   {"quad", RealType::quad}};
+                                                   {"quad", RealType::quad_}};
     return cmd.add_option("--real", real,
                           "The type every number is computed in: float (24-bit significand), double (53, the\n"
                           "default), long-double (x87, 64) or quad (__float128, 113)")

@@ -16,7 +16,7 @@ namespace promyk {
 
 using quad = __float128;
 
-enum class RealType { float_, double_, long_double, quad };
+enum class RealType { float_, double_, long_double, quad_ };
 
 constexpr std::string_view real_type_name(RealType type) {
     switch (type) {
@@ -26,7 +26,7 @@ constexpr std::string_view real_type_name(RealType type) {
             return "double";
         case RealType::long_double:
             return "long-double";
-        case RealType::quad:
+        case RealType::quad_:
             return "quad";
     }
     return "?";
@@ -46,7 +46,7 @@ struct RealTraits {
 
 template <>
 struct RealTraits<quad> {
-    static constexpr RealType type = RealType::quad;
+    static constexpr RealType type = RealType::quad_;
     // The largest finite quad: the value just below infinity (FLT128_MAX is
     // spelled with a GNU literal suffix that strict C++17 does not accept).
     static quad max() { return nextafterq(infinity(), 0); }

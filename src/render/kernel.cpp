@@ -11,7 +11,7 @@ std::unique_ptr<Kernel> make_kernel(const Scene& scene, RealType real) {
             return kernels::make_kernel_in<float>(scene, stages);
         case RealType::long_double:
             return kernels::make_kernel_in<long double>(scene, stages);
-        case RealType::quad:
+        case RealType::quad_:
             return kernels::make_kernel_in<quad>(scene, stages);
         case RealType::double_:
             break;

@@ -32,7 +32,11 @@ struct NullRecorder {
 using StepValue = std::variant<double, Vec3d, std::string>;
 
 struct Step {
-    Key key;
+    Step() = default;
+    Step(Key key_, StepValue value_, int group_ = -1, std::vector<std::string> real_text_ = {})
+        : key(key_), value(std::move(value_)), group(group_), real_text(std::move(real_text_)) {}
+
+    Key key = Key::E;
     StepValue value;  // for a non-double real type: the value rounded to double
     int group = -1;   // index into the trace's groups; -1: the top level
     // For a non-double real type, the value as its own type's shortest
@@ -57,9 +61,9 @@ class RecordingRecorder {
 public:
     static constexpr bool records = true;
 
-    void operator()(Key key, double value) { steps_.push_back({key, value, current_, {}}); }
-    void operator()(Key key, const Vec3d& value) { steps_.push_back({key, value, current_, {}}); }
-    void operator()(Key key, std::string_view word) { steps_.push_back({key, std::string(word), current_, {}}); }
+    void operator()(Key key, double value) { add(key).value.emplace<double>(value); }
+    void operator()(Key key, const Vec3d& value) { add(key).value.emplace<Vec3d>(value); }
+    void operator()(Key key, std::string_view word) { add(key).value.emplace<std::string>(word); }
     void operator()(Key key, const char* word) { (*this)(key, std::string_view(word)); }
     void operator()(Key key, const std::string& word) { (*this)(key, std::string_view(word)); }
 
@@ -67,14 +71,15 @@ public:
     // and exactly, as text in its own type, beside it.
     template <class Real, class = std::enable_if_t<is_other_real<Real>>>
     void operator()(Key key, Real value) {
-        steps_.push_back({key, static_cast<double>(value), current_, {promyk::real_text(value)}});
+        Step& step = add(key);
+        step.value.emplace<double>(static_cast<double>(value));
+        step.real_text = {promyk::real_text(value)};
     }
     template <class Real, class = std::enable_if_t<is_other_real<Real>>>
     void operator()(Key key, const Vec3<Real>& v) {
-        steps_.push_back({key,
-                          Vec3d{static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)},
-                          current_,
-                          {promyk::real_text(v.x), promyk::real_text(v.y), promyk::real_text(v.z)}});
+        Step& step = add(key);
+        step.value.emplace<Vec3d>(Vec3d{static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)});
+        step.real_text = {promyk::real_text(v.x), promyk::real_text(v.y), promyk::real_text(v.z)};
     }
 
     void begin_group(std::string_view kind, int index) {
@@ -87,6 +92,16 @@ public:
     std::vector<TraceGroup> take_groups() { return std::move(groups_); }
 
 private:
+    // A new step, its value set in place by the caller: GCC 12 warns (wrongly)
+    // of an uninitialised string when a Step holding a number is moved into
+    // the vector from a temporary.
+    Step& add(Key key) {
+        Step& step = steps_.emplace_back();
+        step.key = key;
+        step.group = current_;
+        return step;
+    }
+
     std::vector<Step> steps_;
     std::vector<TraceGroup> groups_;
     int current_ = -1;

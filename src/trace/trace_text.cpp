@@ -219,8 +219,8 @@ std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, L
     std::string value = trace.result_rgb ? value_text(StepValue{*trace.result_rgb}, "colour", language)
                                          : number_text(trace.result, language);
     if (!trace.result_real_text.empty()) {
-        Step result{Key::E, StepValue{0.0}, -1, trace.result_real_text};
-        value = step_value_text(result, vocabulary, trace.result_rgb ? "m" : "I_P", language);
+        const Step exact{Key::E, StepValue{0.0}, -1, trace.result_real_text};
+        value = step_value_text(exact, vocabulary, trace.result_rgb ? "m" : "I_P", language);
     }
     if (!trace.hit_object.empty())
         out += message(language, "trace_hit") + word_text(language, trace.hit_object) + "\n";
