@@ -471,7 +471,8 @@ def trace(ctx, inputs, formula, article_kernel, naive_own=False):
         out.update(branch="miss", hit="", result=None)
         return out
     t, kind, index, extra = best
-    log.append(("t_hit", t))
+    if not article_kernel:
+        log.append(("t_hit", t))  # the article's kernel has no nearest-hit step
     P = vscale(t, E)
     if kind == 1:
         N = vsub(P, spheres[index]["S"])
