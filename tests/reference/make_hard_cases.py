@@ -432,7 +432,7 @@ def sphere_blocks(P, K, KK, S, r, log):
     s2 = (b + q) / KK
     log.append(("s_1", s1))
     log.append(("s_2", s2))
-    return (s1.gt(0, "s_1 > 0") and s1.lt(1, "s_1 < 1")) or (s2.gt(0, "s_2 > 0") and s2.lt(1, "s_2 < 1")), s1
+    return (s1.gt(0, "s_1 > 0") and s1.lt(1, "s_1 < 1")) or (s2.gt(0, "s_2 > 0") and s2.lt(1, "s_2 < 1")), (s1, s2)
 
 
 def trace(ctx, inputs, formula, article_kernel, naive_own=False):
@@ -639,7 +639,7 @@ def cases():
         scene("grazing, float", [((1 - 2**-24, 0, 5), 1)], [((-1.5, 1, 1), 1)]), 1, 0, 0)
     add("grazing_double",
         "S = (1 - 2^-53, 0, 5), r = 1: 2^-53 inside the silhouette; the exact delta ~ 4.4e-16 against terms "
-        "of 100 (17.4 digits lost): double rounds |S|^2 to 26 and misses; in float S rounds to (1, 0, 5), an "
+        "of 100 (17.1 digits lost): double rounds |S|^2 to 26 and misses; in float S rounds to (1, 0, 5), an "
         "exact tangent (a miss in exact arithmetic too).",
         scene("grazing, double", [((1 - 2**-53, 0, 5), 1)], [((-1.5, 1, 1), 1)]), 1, 0, 0)
     add("eye_on_surface",
@@ -649,9 +649,9 @@ def cases():
         scene("eye on the surface", [((0, 0.375, 0.5), 0.625)], [((0, 0.375, 0.5), 1)]), 7, 2, 3)
     add("eye_just_outside",
         "r = 0.625 - 2^-53 and |S| = 0.625: the eye is outside by 2^-53, so the exact near root is a tiny "
-        "positive t ~ 3e-17 (the eye sees the surface at its own position); the article's formula gets "
-        "C - sqrt(delta) = 0, 'behind the eye', and draws the background. In float r rounds to 0.625: the eye "
-        "is on the surface.",
+        "positive t ~ 6e-17 (the eye sees the surface at its own position); the article's formula computes it "
+        "as C - sqrt(delta), two numbers near 1.1 that agree to 16 digits: double keeps about one digit of t, "
+        "long double four. In float r rounds to 0.625: the eye is on the surface and t = 0 is 'behind'.",
         scene("eye just outside", [((0, 0.375, 0.5), 0.625 - 2**-53)], [((0, -1, 0), 1)]), 7, 2, 3)
     add("eye_inside",
         "The eye inside a sphere of radius 3: the near root is negative, the far root is taken and the normal "
@@ -676,7 +676,8 @@ def cases():
     add("shadow_own_surface",
         "Shadows on, a point on the sphere's lit side: a numerical shadow test against its own surface would "
         "find the root s = 0 as a rounding residue (acne when positive); promyk never tests the hit sphere "
-        "against its own point. `naive_own` records what the numerical test would find.",
+        "against its own point. `naive_own` records what the numerical test would find: the roots s_1, s_2 (one "
+        "is the residue of s = 0) and whether it would call the point blocked (acne).",
         scene("own surface", [((0, 0, 3.2), 1.1)], [((1.5, 3, 1), 1)], planes=[((0, -1.1, 0), (0, 1, 0))],
               shadows=True), 16, 8, 7, naive_own=True)
     add("plane_nearly_parallel",
@@ -844,8 +845,8 @@ def sim_record(sim, ex, prec, tname):
         r["t_error"] = error_record(sim["t"], ex["t"], prec, tname)
         r["result_error"] = error_record(sim["result"], ex["result"], prec, tname)
     if sim.get("naive_own"):
-        r["naive_own"] = [{"blocks": b, "s_1": None if s1 is None else typed_text(s1.v, tname)}
-                          for b, s1 in sim["naive_own"]]
+        r["naive_own"] = [{"blocks": b, "s": None if s12 is None else [typed_text(x.v, tname) for x in s12]}
+                          for b, s12 in sim["naive_own"]]
     return r
 
 
