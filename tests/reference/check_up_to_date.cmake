@@ -4,7 +4,9 @@
 #         -DOUTPUT=<file in the build dir> [-DOPTIONS=--scenes] -P check_up_to_date.cmake
 # (OPTIONS: arguments put before OUTPUT, e.g. --scenes for scenes_reference.json;
 # test reference_scenes_data_up_to_date). Test reference_effects_data_up_to_date
-# runs it with SCRIPT=.../make_effects_reference.py and COMMITTED=.../effects_reference.json.
+# runs it with SCRIPT=.../make_effects_reference.py and COMMITTED=.../effects_reference.json;
+# reference_hard_cases_data_up_to_date and hard_cases_catalogue_up_to_date with
+# SCRIPT=.../make_hard_cases.py (the second with OPTIONS=--catalogue).
 foreach(var PYTHON SCRIPT COMMITTED OUTPUT)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "check_up_to_date.cmake: ${var} is not set")
