@@ -417,7 +417,20 @@ AnswerFile parse_json(std::string_view text, const std::string& file, const Voca
                     const json& value = step.at("value");
                     if (value.is_null() ||
                         (value.is_array() && std::any_of(value.begin(), value.end(), [](const json& c) { return c.is_null(); }))) {
-                        summary->non_finite.emplace_back(key, json_text_of(step.value("text", json("nan"))));
+                        std::string shown = "nan";
+                        if (value.is_array()) {
+                            // Each component as it stands, or its text (null where the number stands).
+                            const json texts = step.value("text", json());
+                            shown = "[";
+                            for (std::size_t c = 0; c < value.size(); ++c) {
+                                const bool named = !value[c].is_null() || !texts.is_array() || c >= texts.size() || !texts[c].is_string();
+                                shown += (c ? ", " : "") + (named ? json_text_of(value[c]) : texts[c].get<std::string>());
+                            }
+                            shown += "]";
+                        } else if (step.contains("text") && step.at("text").is_string()) {
+                            shown = step.at("text").get<std::string>();
+                        }
+                        summary->non_finite.push_back({key, shown, answers.answers.size()});
                         continue;
                     }
                     if (is_word(key, vocabulary)) continue;

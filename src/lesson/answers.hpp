@@ -68,9 +68,13 @@ struct TraceSummary {
     int w = 0;
     std::string branch;  // miss, dark, lit, ... (empty when the trace has none)
     std::string hit;     // the object hit ("sphere 0"), when the trace says
-    // Steps with no finite number (their path and text, "nan" or "[inf, 1, 2]"):
-    // read, but with nothing to compare.
-    std::vector<std::pair<std::string, std::string>> non_finite;
+    // Steps with no finite number: read, but with nothing to compare.
+    struct NonFinite {
+        std::string path;
+        std::string text;        // "nan", "-inf", "[1, inf, 2]"
+        std::size_t before = 0;  // how many answers come before it in the trace
+    };
+    std::vector<NonFinite> non_finite;
 };
 
 struct AnswerFile {
