@@ -8,6 +8,7 @@
 
 #include "app/cli_values.hpp"
 #include "app/commands.hpp"
+#include "app/common_options.hpp"
 #include "lesson/trace_diff.hpp"
 #include "trace/vocabulary.hpp"
 #include "util/errors.hpp"
@@ -66,9 +67,7 @@ std::function<int()> setup_diff(CLI::App& app) {
     cmd->add_option("--format", options->format, "text: a table of the digits that agree; json: the result as one JSON object")
         ->check(CLI::IsMember({"text", "json"}))
         ->option_text("text|json (default: text)");
-    cmd->add_option("--lang", options->lang, "text: pl or en (default: Polish when LANG starts with pl)")
-        ->check(CLI::IsMember({"pl", "en"}))
-        ->option_text("pl|en");
+    add_lang_option(*cmd, options->lang, "text: ");
     cmd->footer(
         "Examples: promyk trace --real float --format json > a.json\n"
         "          promyk trace --real quad --format json > b.json\n"

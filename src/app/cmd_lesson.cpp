@@ -227,9 +227,7 @@ std::function<int()> setup_lesson(CLI::App& app) {
         ->allow_extra_args(false);
     add_scene_option(*cmd, options->scene_file);
     add_w_option(*cmd, options->w)->description("Pane size: w × w pixels (default: the lesson's, usually 8)");
-    cmd->add_option("--lang", options->lang, "pl or en (default: Polish when LANG starts with pl)")
-        ->check(CLI::IsMember({"pl", "en"}))
-        ->option_text("pl|en");
+    add_lang_option(*cmd, options->lang);
     cmd->add_option("--format", options->format, "text: for the terminal; markdown: with $…$ math and tables")
         ->check(CLI::IsMember({"text", "markdown"}))
         ->option_text("text|markdown (default: text)");
