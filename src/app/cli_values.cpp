@@ -5,6 +5,11 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <system_error>
 
 #include <fmt/format.h>
 
@@ -112,5 +117,19 @@ PixelRegion parse_region(const std::string& text, const std::string& option, int
 }
 
 Scene load_scene_option(const std::string& path) { return path.empty() ? article_scene() : load_scene_file(path); }
+
+std::string read_input_file(const std::string& path, const std::string& reads) {
+    std::ostringstream text;
+    if (path == "-") {
+        text << std::cin.rdbuf();
+        return text.str();
+    }
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) throw InputError(path, "", "is a folder; " + reads + " a file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path, "", "cannot read the file: " + std::generic_category().message(errno));
+    text << in.rdbuf();
+    return text.str();
+}
 
 }  // namespace promyk::cli

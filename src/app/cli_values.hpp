@@ -40,4 +40,9 @@ PixelRegion parse_region(const std::string& text, const std::string& option, int
 // The built-in article scene, or the scene file when a path is given.
 Scene load_scene_option(const std::string& path);
 
+// The whole text of an input file, or of standard input for "-"; InputError
+// (exit 3) for a folder or a file that cannot be read. `reads` completes
+// "is a folder; ... a file" ("--answers reads").
+std::string read_input_file(const std::string& path, const std::string& reads);
+
 }  // namespace promyk::cli

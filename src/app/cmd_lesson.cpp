@@ -8,15 +8,12 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <sstream>
 #include <optional>
 #include <set>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include <fmt/format.h>
@@ -129,25 +126,11 @@ std::vector<std::string> lesson_names(const LessonLibrary& library, Language lan
     return names;
 }
 
-std::string read_answer_file(const std::string& path) {
-    std::ostringstream text;
-    if (path == "-") {
-        text << std::cin.rdbuf();
-        return text.str();
-    }
-    std::error_code error;
-    if (std::filesystem::is_directory(path, error)) throw InputError(path, "", "is a folder; --answers reads a file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path, "", "cannot read the file: " + std::generic_category().message(errno));
-    text << in.rdbuf();
-    return text.str();
-}
-
 // --answers FILE: the student's numbers against the traces; exit 1 when any is wrong.
 int run_answers(const LessonOptions& options, LessonView& view, const Kernel& kernel, const TraceHeader& header) {
     const std::string shown = options.answers == "-" ? "(stdin)" : options.answers;
     const LessonPixel first{view.traces.front().header.i, view.traces.front().header.j};
-    const std::vector<PixelAnswers> answers = parse_answers(read_answer_file(options.answers), shown, view.vocabulary,
+    const std::vector<PixelAnswers> answers = parse_answers(cli::read_input_file(options.answers, "--answers reads"), shown, view.vocabulary,
                                                             view.lesson.language, first, view.w, header.scene_hash);
     // A heading may name a pixel the lesson did not choose: it is traced too.
     std::set<std::pair<int, int>> traced;
@@ -244,9 +227,7 @@ std::function<int()> setup_lesson(CLI::App& app) {
         ->allow_extra_args(false);
     add_scene_option(*cmd, options->scene_file);
     add_w_option(*cmd, options->w)->description("Pane size: w × w pixels (default: the lesson's, usually 8)");
-    cmd->add_option("--lang", options->lang, "pl or en (default: Polish when LANG starts with pl)")
-        ->check(CLI::IsMember({"pl", "en"}))
-        ->option_text("pl|en");
+    add_lang_option(*cmd, options->lang);
     cmd->add_option("--format", options->format, "text: for the terminal; markdown: with $…$ math and tables")
         ->check(CLI::IsMember({"text", "markdown"}))
         ->option_text("text|markdown (default: text)");

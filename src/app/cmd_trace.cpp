@@ -119,9 +119,7 @@ std::function<int()> setup_trace(CLI::App& app) {
     cmd->add_flag("--wide", options->wide,
                   "text: one row a step (symbol, formula, value side by side; about 140 columns)\n"
                   "instead of the default layout that fits 80 columns");
-    cmd->add_option("--lang", options->lang, "text: pl or en (default: Polish when LANG starts with pl)")
-        ->check(CLI::IsMember({"pl", "en"}))
-        ->option_text("pl|en");
+    add_lang_option(*cmd, options->lang, "text: ");
     cmd->add_flag("--explain", options->explain, "text: under each formula, what the quantity means");
     cmd->footer(
         "Example: promyk trace --pixel 3,4 --w 8   (at w = 8, (0,0) misses, (5,1) is on the dark side, (3,4) is lit)");

@@ -52,4 +52,10 @@ CLI::Option* add_real_option(CLI::App& cmd, RealType& real) {
         ->default_str("double");
 }
 
+CLI::Option* add_lang_option(CLI::App& cmd, std::string& lang, const std::string& applies_to) {
+    return cmd.add_option("--lang", lang, applies_to + "pl or en (default: Polish when LANG starts with pl)")
+        ->check(CLI::IsMember({"pl", "en"}))
+        ->option_text("pl|en");
+}
+
 }  // namespace promyk::app

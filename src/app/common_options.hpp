@@ -30,4 +30,8 @@ CLI::Option* add_threads_option(CLI::App& cmd, int& threads);
 // done in (default double, the article's).
 CLI::Option* add_real_option(CLI::App& cmd, RealType& real);
 
+// --lang pl|en: the language of the text (empty: from LANG). `applies_to`
+// starts the description ("text: " when other formats have no language).
+CLI::Option* add_lang_option(CLI::App& cmd, std::string& lang, const std::string& applies_to = "");
+
 }  // namespace promyk::app

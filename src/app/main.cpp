@@ -1,6 +1,6 @@
 // promyk: an educational ray tracer that shows its work.
 // main only wires the subcommands and maps errors to exit codes:
-// 0 success, 2 bad command line, 3 bad input file, 4 output not written,
+// 0 success, 1 a negative answer (diff found a divergence, --answers a wrong number), 2 bad command line, 3 bad input file, 4 output not written,
 // 128 + signal after SIGHUP, SIGINT or SIGTERM, 141 when the reader of
 // standard output quits; 70 an internal error (a bug).
 #include <algorithm>
@@ -129,7 +129,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     app.footer(
         "Run 'promyk COMMAND --help' for a command's options.\n"
-        "Exit codes: 0 success, 2 bad command line, 3 bad input file, 4 output not written,\n"
+        "Exit codes: 0 success, 1 a negative answer (diff diverges, --answers wrong), 2 bad command line,\n"
+        "3 bad input file, 4 output not written,\n"
         "129/130/143 interrupted (nothing half-written), 141 reader of standard output quit,\n"
         "70 internal error.");
 
@@ -138,7 +139,8 @@ int main(int argc, char** argv) {
     const auto bench = promyk::app::setup_bench(app);
     const auto lesson = promyk::app::setup_lesson(app);
     const auto scene = promyk::app::setup_scene(app);
-    const std::vector<std::string> commands = {"render", "trace", "lesson", "scene", "bench"};
+    const auto diff = promyk::app::setup_diff(app);
+    const std::vector<std::string> commands = {"render", "trace", "lesson", "scene", "diff", "bench"};
 
     // The command is the first argument that is not an option; check it
     // here, so that a typo gets a suggestion and `promyk help` gets help.
@@ -155,7 +157,7 @@ int main(int argc, char** argv) {
     }
     if (args.empty()) {
         fmt::print(stderr, "{}", app.help());
-        report("a command is required: render, trace, lesson, scene or bench");
+        report("a command is required: render, trace, lesson, scene, diff or bench");
         return 2;
     }
     const std::string name = !args[0].empty() && args[0][0] != '-' ? args[0] : "";
@@ -175,6 +177,7 @@ int main(int argc, char** argv) {
                                       : name == "trace"  ? trace
                                       : name == "lesson" ? lesson
                                       : name == "scene"  ? scene
+                                      : name == "diff"   ? diff
                                                          : bench;
     try {
         const int code = run();

@@ -22,48 +22,7 @@ namespace {
 
 constexpr int max_typed_scale = 1100;
 
-// --- exact decimals ---------------------------------------------------------
-
-// |value| = digits × 10^-scale exactly (a double is a finite binary fraction,
-// so its decimal expansion ends). Digits big-endian, no leading zeros.
-std::pair<std::string, int> exact_decimal(double value) {
-    int exponent = 0;
-    const double mantissa = std::frexp(std::fabs(value), &exponent);
-    std::uint64_t m = static_cast<std::uint64_t>(std::ldexp(mantissa, 53));
-    int e2 = exponent - 53;
-    if (m == 0) return {"0", 0};
-    while ((m & 1U) == 0) {
-        m >>= 1U;
-        ++e2;
-    }
-    std::vector<int> little;  // little-endian decimal digits
-    for (; m != 0; m /= 10) little.push_back(static_cast<int>(m % 10));
-    const auto multiply = [&little](int factor) {
-        int carry = 0;
-        for (int& digit : little) {
-            const int product = digit * factor + carry;
-            digit = product % 10;
-            carry = product / 10;
-        }
-        for (; carry != 0; carry /= 10) little.push_back(carry % 10);
-    };
-    int scale = 0;
-    if (e2 >= 0) {
-        for (int k = 0; k < e2; ++k) multiply(2);
-    } else {
-        // m × 2^e2 = m × 5^-e2 / 10^-e2
-        for (int k = 0; k < -e2; ++k) multiply(5);
-        scale = -e2;
-    }
-    std::string digits;
-    for (auto it = little.rbegin(); it != little.rend(); ++it) digits += static_cast<char>('0' + *it);
-    return {digits, scale};
-}
-
-std::string strip_zeros(const std::string& digits) {
-    const std::size_t first = digits.find_first_not_of('0');
-    return first == std::string::npos ? "0" : digits.substr(first);
-}
+// --- exact decimals (math/decimal.hpp) ---------------------------------
 
 std::string plus_one(std::string digits) {
     for (std::size_t k = digits.size(); k-- > 0;) {
@@ -82,7 +41,9 @@ struct Rounded {
 };
 
 Rounded round_to(double value, int scale) {
-    auto [digits, exact_scale] = exact_decimal(value);
+    const TypedNumber exact = exact_decimal(value);
+    std::string digits = exact.digits;
+    const int exact_scale = exact.scale;
     Rounded out;
     out.nearest.negative = std::signbit(value);
     out.nearest.scale = scale;
@@ -219,7 +180,7 @@ std::vector<PixelAnswers> parse_lines(std::string_view text, const std::string& 
             if (line.front() != '[') fail(file, language, line_number, message(language, "answers_error_line"));
             const std::optional<LessonPixel> heading = parse_heading(line);
             if (!heading) fail(file, language, line_number, message(language, "answers_error_heading", {{"text", line}}));
-            if (heading->i >= w || heading->j >= w)
+            if (w > 0 && (heading->i >= w || heading->j >= w))
                 fail(file, language, line_number,
                      message(language, "answers_error_outside",
                              {{"i", std::to_string(heading->i)}, {"j", std::to_string(heading->j)}, {"w", std::to_string(w)}}));
@@ -365,8 +326,9 @@ std::string json_text_of(const json& value) {
     return value.dump();
 }
 
-std::vector<PixelAnswers> parse_json(std::string_view text, const std::string& file, const Vocabulary& vocabulary,
-                                     Language language, LessonPixel first, int w, const std::string& scene_hash) {
+AnswerFile parse_json(std::string_view text, const std::string& file, const Vocabulary& vocabulary, Language language,
+                      LessonPixel first, const AnswerLimits& limits) {
+    const int w = limits.w;
     RawNumbers builder;
     if (!json::sax_parse(text, &builder)) {
         if (builder.twice) fail_at(file, pointer_of(*builder.twice), message(language, "answers_error_twice_json", {{"key", *builder.twice}}));
@@ -377,7 +339,9 @@ std::vector<PixelAnswers> parse_json(std::string_view text, const std::string& f
     }
     const json& root = builder.root;
     PixelAnswers answers{first, {}};
-    const auto add = [&](const std::string& key_text, const json& value, const std::string& pointer) {
+    std::optional<TraceSummary> summary;
+    const auto add = [&](const std::string& key_text, const json& value, const std::string& pointer,
+                         const json& real_text = json()) {
         const std::optional<std::pair<std::string, char>> key = split_key(key_text, vocabulary);
         if (!key) fail_at(file, pointer, message(language, "answers_error_key", {{"key", key_text}, {"keys", keys_list(vocabulary)}}));
         if (is_word(key->first, vocabulary)) fail_at(file, pointer, message(language, "answers_error_word", {{"key", key_text}}));
@@ -388,6 +352,11 @@ std::vector<PixelAnswers> parse_json(std::string_view text, const std::string& f
         answer.component = key->second;
         answer.text = json_text_of(value);
         answer.numbers = *numbers;
+        // A non-double trace's text of each value in its own type.
+        if (real_text.is_string() && numbers->size() == 1) answer.real_text = {real_text.get<std::string>()};
+        if (real_text.is_array() && real_text.size() == numbers->size() &&
+            std::all_of(real_text.begin(), real_text.end(), [](const json& t) { return t.is_string(); }))
+            for (const json& t : real_text) answer.real_text.push_back(t.get<std::string>());
         answers.answers.push_back(std::move(answer));
     };
     if (root.contains("steps") && root.at("steps").is_array()) {
@@ -405,16 +374,27 @@ std::vector<PixelAnswers> parse_json(std::string_view text, const std::string& f
         const std::optional<int> trace_w = whole(root.value("w", json()));
         // A trace of another scene would make every number "wrong" without saying why.
         const json trace_hash = root.value("scene_hash", json());
-        if (!scene_hash.empty() && trace_hash.is_string() && trace_hash.get<std::string>() != scene_hash)
+        if (!limits.scene_hash.empty() && trace_hash.is_string() && trace_hash.get<std::string>() != limits.scene_hash)
             fail_at(file, "/scene_hash",
                     message(language, "answers_error_trace_scene",
                             {{"scene", root.value("scene", json()).is_string() ? root.at("scene").get<std::string>() : "?"}}));
-        if (trace_w && *trace_w != w)
+        if (w > 0 && trace_w && *trace_w != w)
             fail_at(file, "/w", message(language, "answers_error_trace_w", {{"w", std::to_string(*trace_w)}, {"lesson_w", std::to_string(w)}}));
-        if (*i >= w || *j >= w)
+        if (w > 0 && (*i >= w || *j >= w))
             fail_at(file, "/pixel", message(language, "answers_error_outside",
                                             {{"i", std::to_string(*i)}, {"j", std::to_string(*j)}, {"w", std::to_string(w)}}));
         answers.pixel = {*i, *j};
+        summary.emplace();
+        const auto text_of = [](const json& object, const char* key) {
+            return object.is_object() && object.contains(key) && object.at(key).is_string() ? object.at(key).get<std::string>() : "";
+        };
+        const json numeric = root.value("numeric", json::object());
+        if (!text_of(numeric, "real").empty()) summary->real = text_of(numeric, "real");
+        summary->formula = text_of(numeric, "formula");
+        summary->scene = text_of(root, "scene");
+        summary->w = trace_w.value_or(0);
+        summary->branch = text_of(root, "branch");
+        summary->hit = text_of(root, "hit");
         // The steps, and those of each group ({"group": "sphere", "index": 1,
         // "steps": [...]}) under their path, sphere[1].t; words are not numbers.
         const std::function<void(const json&, const std::string&, const std::string&)> read_steps =
@@ -431,24 +411,41 @@ std::vector<PixelAnswers> parse_json(std::string_view text, const std::string& f
                         continue;
                     }
                     if (!step.contains("key") || !step.at("key").is_string()) continue;
-                    // Non-finite (null, or a point with a null component): no number to check.
-                    if (!step.contains("value") || step.at("value").is_null()) continue;
-                    const json& value = step.at("value");
-                    if (value.is_array() && std::any_of(value.begin(), value.end(), [](const json& c) { return c.is_null(); })) continue;
+                    if (!step.contains("value")) continue;
                     const std::string key = prefix + step.at("key").get<std::string>();
+                    // Non-finite (null, or a point with a null component): no number to check.
+                    const json& value = step.at("value");
+                    if (value.is_null() ||
+                        (value.is_array() && std::any_of(value.begin(), value.end(), [](const json& c) { return c.is_null(); }))) {
+                        std::string shown = "nan";
+                        if (value.is_array()) {
+                            // Each component as it stands, or its text (null where the number stands).
+                            const json texts = step.value("text", json());
+                            shown = "[";
+                            for (std::size_t c = 0; c < value.size(); ++c) {
+                                const bool named = !value[c].is_null() || !texts.is_array() || c >= texts.size() || !texts[c].is_string();
+                                shown += (c ? ", " : "") + (named ? json_text_of(value[c]) : texts[c].get<std::string>());
+                            }
+                            shown += "]";
+                        } else if (step.contains("text") && step.at("text").is_string()) {
+                            shown = step.at("text").get<std::string>();
+                        }
+                        summary->non_finite.push_back({key, shown, answers.answers.size()});
+                        continue;
+                    }
                     if (is_word(key, vocabulary)) continue;
-                    add(key, value, fmt::format("{}/{}/value", pointer, k));
+                    add(key, value, fmt::format("{}/{}/value", pointer, k), step.value("real_text", json()));
                 }
             };
         read_steps(root.at("steps"), "", "/steps");
         if (root.contains("result") && (root.at("result").is_string() || root.at("result").is_array()))
-            add("I_P", root.at("result"), "/result");
+            add("I_P", root.at("result"), "/result", root.value("result_real_text", json()));
     } else if (root.is_object()) {
         for (const auto& [key, value] : root.items()) add(key, value, pointer_of(key));
     } else {
         fail(file, language, 1, message(language, "answers_error_json"));
     }
-    return {answers};
+    return {{answers}, summary};
 }
 
 std::string symbol_of(const Vocabulary& vocabulary, const Answer& answer, Language language) {
@@ -568,18 +565,23 @@ Verdict compare_number(double reference, const TypedNumber& typed, TypedNumber& 
     return Verdict::wrong;
 }
 
-std::vector<PixelAnswers> parse_answers(std::string_view text, const std::string& file, const Vocabulary& vocabulary,
-                                        Language language, LessonPixel first, int w, const std::string& scene_hash) {
+AnswerFile read_answers(std::string_view text, const std::string& file, const Vocabulary& vocabulary, Language language,
+                        LessonPixel first, const AnswerLimits& limits) {
     if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // a byte order mark some editors write
     const std::size_t start = text.find_first_not_of(" \t\r\n");
-    std::vector<PixelAnswers> answers = start != std::string_view::npos && text[start] == '{'
-                                            ? parse_json(text, file, vocabulary, language, first, w, scene_hash)
-                                            : parse_lines(text, file, vocabulary, language, first, w);
-    const bool any = std::any_of(answers.begin(), answers.end(), [](const PixelAnswers& pixel) {
+    AnswerFile answers = start != std::string_view::npos && text[start] == '{'
+                             ? parse_json(text, file, vocabulary, language, first, limits)
+                             : AnswerFile{parse_lines(text, file, vocabulary, language, first, limits.w), std::nullopt};
+    const bool any = std::any_of(answers.pixels.begin(), answers.pixels.end(), [](const PixelAnswers& pixel) {
         return std::any_of(pixel.answers.begin(), pixel.answers.end(), [](const Answer& a) { return !a.numbers.empty(); });
     });
     if (!any) fail(file, language, 0, message(language, "answers_error_empty"));
     return answers;
+}
+
+std::vector<PixelAnswers> parse_answers(std::string_view text, const std::string& file, const Vocabulary& vocabulary,
+                                        Language language, LessonPixel first, int w, const std::string& scene_hash) {
+    return read_answers(text, file, vocabulary, language, first, AnswerLimits{w, scene_hash}).pixels;
 }
 
 std::vector<AnswerCheck> check_answers(const std::vector<PixelAnswers>& answers, const std::vector<PixelTrace>& traces) {

@@ -14,18 +14,11 @@
 #include <vector>
 
 #include "lesson/lesson.hpp"
+#include "math/decimal.hpp"
 #include "trace/trace.hpp"
 #include "trace/vocabulary.hpp"
 
 namespace promyk {
-
-// A number as typed: ±digits × 10^-scale. "6,40" is {false, "640", 2};
-// "−4.5e-3" is {true, "45", 4}; "1e3" is {false, "1", -3}.
-struct TypedNumber {
-    bool negative = false;
-    std::string digits;  // at least one digit; leading zeros kept
-    int scale = 0;       // digits after the decimal point (negative: whole tens, hundreds ...)
-};
 
 // A number in either language's style: a decimal comma or point, a minus
 // '-', '−' (U+2212) or '–', an optional exponent (1.5e-3). Nothing if it is not one.
@@ -57,6 +50,9 @@ struct Answer {
     char component = 0;  // key.x, key.y, key.z
     std::string text;    // as typed (trimmed)
     std::vector<TypedNumber> numbers;  // 1, or 3 for a point or vector; empty: blank
+    // From a whole trace of a non-double type: each number's real_text (the
+    // value's text in its own type), beside `numbers` (its double value).
+    std::vector<std::string> real_text;
 };
 
 struct PixelAnswers {
@@ -64,11 +60,45 @@ struct PixelAnswers {
     std::vector<Answer> answers;
 };
 
-// Reads an answer file. Lines before any [i,j] heading belong to `first`.
-// InputError (exit 3) naming `file` and the line (or JSON pointer) of a
-// fault, worded in `language`.
-// `scene_hash`, when not empty, is the lesson's scene's: a whole trace of
-// another scene (its "scene_hash" differs) is refused.
+// What a whole trace, read as answers, says of itself.
+struct TraceSummary {
+    std::string real = "double";  // numeric.real: float, double, long-double, quad
+    std::string formula;
+    std::string scene;
+    int w = 0;
+    std::string branch;  // miss, dark, lit, ... (empty when the trace has none)
+    std::string hit;     // the object hit ("sphere 0"), when the trace says
+    // Steps with no finite number: read, but with nothing to compare.
+    struct NonFinite {
+        std::string path;
+        std::string text;        // "nan", "-inf", "[1, inf, 2]"
+        std::size_t before = 0;  // how many answers come before it in the trace
+    };
+    std::vector<NonFinite> non_finite;
+};
+
+struct AnswerFile {
+    std::vector<PixelAnswers> pixels;
+    std::optional<TraceSummary> trace;  // when the file is a whole trace
+};
+
+struct AnswerLimits {
+    // Pixel headings and a trace's pixel must lie in the w × w pane, and a
+    // trace must be of that pane; 0: any pane.
+    int w = 0;
+    // Not empty: a whole trace of another scene (its "scene_hash" differs) is refused.
+    std::string scene_hash;
+};
+
+// Reads an answer file: `key = value` lines, a flat JSON object or a whole
+// trace (`promyk lesson --answers` and `promyk diff` read the same files).
+// Lines before any [i,j] heading belong to `first`. InputError (exit 3)
+// naming `file` and the line (or JSON pointer) of a fault, worded in `language`.
+AnswerFile read_answers(std::string_view text, const std::string& file, const Vocabulary& vocabulary, Language language,
+                        LessonPixel first, const AnswerLimits& limits);
+
+// Reads an answer file for a lesson: read_answers in its w × w pane;
+// `scene_hash`, when not empty, is the lesson's scene's.
 std::vector<PixelAnswers> parse_answers(std::string_view text, const std::string& file, const Vocabulary& vocabulary,
                                         Language language, LessonPixel first, int w, const std::string& scene_hash = "");
 

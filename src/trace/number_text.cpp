@@ -28,20 +28,21 @@ std::string_view language_code(Language language) { return language == Language:
 std::string number_text(double value, Language language, int decimals) {
     if (std::isnan(value)) return "nan";
     if (std::isinf(value)) return value > 0 ? "inf" : (language == Language::pl ? "−inf" : "-inf");
-    std::string text = decimals < 0 ? fmt::format("{}", value) : fmt::format("{:.{}f}", value, decimals);
-    if (language == Language::pl) {
-        std::string polish;
-        for (const char c : text) {
-            if (c == '.')
-                polish += ',';
-            else if (c == '-')
-                polish += "−";  // U+2212, the minus sign of Polish typesetting
-            else
-                polish += c;
-        }
-        return polish;
+    return local_number_text(decimals < 0 ? fmt::format("{}", value) : fmt::format("{:.{}f}", value, decimals), language);
+}
+
+std::string local_number_text(std::string_view text, Language language) {
+    if (language != Language::pl) return std::string(text);
+    std::string polish;
+    for (const char c : text) {
+        if (c == '.')
+            polish += ',';
+        else if (c == '-')
+            polish += "−";  // U+2212, the minus sign of Polish typesetting
+        else
+            polish += c;
     }
-    return text;
+    return polish;
 }
 
 std::string value_text(const StepValue& value, const std::string& kind, Language language, int decimals) {

@@ -27,6 +27,10 @@ std::string_view language_code(Language language);
 // for non-finite values.
 std::string number_text(double value, Language language, int decimals = -1);
 
+// A number's text ("-1.5e-3") written the language's way: in Polish a
+// decimal comma and the minus sign U+2212 ("−1,5e−3"); in English as it is.
+std::string local_number_text(std::string_view text, Language language);
+
 // A step's value; `kind` is the vocabulary's ("scalar", "point", "vector").
 std::string value_text(const StepValue& value, const std::string& kind, Language language, int decimals = -1);
 

@@ -56,14 +56,7 @@ std::string kind_of(const Vocabulary& vocabulary, const std::string& key);
 std::string step_value_text(const Step& step, const Vocabulary& vocabulary, const std::string& key,
                             Language language) {
     if (step.real_text.empty()) return value_of(step.value, vocabulary, key, language);
-    auto local = [language](std::string text) {
-        if (language == Language::pl) {
-            for (char& c : text)
-                if (c == '.') c = ',';
-            if (!text.empty() && text[0] == '-') text = "−" + text.substr(1);
-        }
-        return text;
-    };
+    auto local = [language](const std::string& text) { return local_number_text(text, language); };
     if (step.real_text.size() == 1) return local(step.real_text.front());
     const std::string kind = kind_of(vocabulary, key);
     const char* separator = language == Language::pl ? "; " : ", ";

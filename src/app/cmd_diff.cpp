@@ -1,0 +1,82 @@
+// promyk diff A B: two traces of a pixel (two real types, two formulas), or a
+// trace and a student's numbers, compared step by step; exit 1 when they
+// diverge beyond the tolerance.
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/cli_values.hpp"
+#include "app/commands.hpp"
+#include "app/common_options.hpp"
+#include "lesson/trace_diff.hpp"
+#include "trace/vocabulary.hpp"
+#include "util/errors.hpp"
+
+namespace promyk::app {
+
+namespace {
+
+struct DiffCommandOptions {
+    std::string a, b;
+    std::optional<double> tol;
+    std::string format = "text";
+    std::string lang;  // empty: from LANG
+};
+
+DiffInput read_input(const std::string& path, Language language) {
+    const std::string shown = path == "-" ? "(stdin)" : path;
+    return {shown, read_answers(cli::read_input_file(path, "diff reads"), shown, builtin_vocabulary(), language,
+                                diff_first_pixel, AnswerLimits{})};
+}
+
+int run_diff(const DiffCommandOptions& options) {
+    if (options.a == "-" && options.b == "-")
+        throw UsageError("only one of A and B can be - (standard input)");
+    const Language language = options.lang.empty() ? language_from_environment() : *parse_language(options.lang);
+    const DiffInput a = read_input(options.a, language);
+    const DiffInput b = read_input(options.b, language);
+    DiffOptions diff_options;
+    diff_options.relative_tolerance = options.tol;
+    const DiffResult result = diff_inputs(a, b, builtin_vocabulary(), diff_options, language);
+    const std::string out = options.format == "json" ? diff_json(result, a, b, diff_options)
+                                                     : diff_report(result, a, b, diff_options, builtin_vocabulary(), language);
+    std::fputs(out.c_str(), stdout);
+    return result.first ? 1 : 0;
+}
+
+}  // namespace
+
+std::function<int()> setup_diff(CLI::App& app) {
+    auto options = std::make_shared<DiffCommandOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "diff", "Compare two traces of a pixel, or a trace and a student's numbers, step by step; name the first divergence");
+    cmd->add_option("A", options->a,
+                    "A trace (promyk trace --format json) or a student's numbers (key = value lines, a flat JSON "
+                    "object); - reads standard input")
+        ->required()
+        ->type_name("A");
+    cmd->add_option("B", options->b, "The other side, in any of the same forms")->required()->type_name("B");
+    cmd->add_option("--tol", options->tol,
+                    "A relative tolerance: steps agree when |a - b| <= REL * max(|a|, |b|)\n"
+                    "(default: each step, the less precise side's precision: a trace's type\n"
+                    "float 2^-24, double 2^-53, long-double 2^-64, quad 2^-113; a typed number\n"
+                    "half a unit in its last digit)")
+        ->type_name("REL")
+        ->check(CLI::Range(0.0, 1.0));
+    cmd->add_option("--format", options->format, "text: a table of the digits that agree; json: the result as one JSON object")
+        ->check(CLI::IsMember({"text", "json"}))
+        ->option_text("text|json (default: text)");
+    add_lang_option(*cmd, options->lang, "text: ");
+    cmd->footer(
+        "Examples: promyk trace --real float --format json > a.json\n"
+        "          promyk trace --real quad --format json > b.json\n"
+        "          promyk diff a.json b.json        (the first step where float loses more than its precision)\n"
+        "          promyk diff b.json answers.txt   (a student's C = 6,4 and t = 1,058 against the trace)\n"
+        "Steps are matched by path (t, P, light[0].D, sphere[1].t) and compared as exact decimals.\n"
+        "Exit codes: 0 within the tolerance at every common step, 1 a divergence,\n"
+        "2 bad command line, 3 an input that cannot be read.");
+    return [options] { return run_diff(*options); };
+}
+
+}  // namespace promyk::app

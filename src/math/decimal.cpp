@@ -1,0 +1,183 @@
+#include "math/decimal.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <limits>
+#include <vector>
+
+namespace promyk {
+
+namespace {
+
+__extension__ typedef unsigned __int128 uint128;
+
+// m × 2^e2 exactly, m < 2^113: multiply the decimal digits of m by 2^e2, or
+// by 5^-e2 and move the point -e2 places (m × 2^-k = m × 5^k / 10^k).
+TypedNumber expand(bool negative, uint128 m, int e2) {
+    TypedNumber out;
+    out.negative = negative;
+    if (m == 0) {
+        out.digits = "0";
+        return out;
+    }
+    while ((m & 1U) == 0) {
+        m >>= 1U;
+        ++e2;
+    }
+    std::vector<std::uint32_t> little;  // little-endian decimal digits
+    for (; m != 0; m /= 10) little.push_back(static_cast<std::uint32_t>(m % 10));
+    const auto multiply = [&little](std::uint64_t factor) {
+        std::uint64_t carry = 0;
+        for (std::uint32_t& digit : little) {
+            const std::uint64_t product = digit * factor + carry;
+            digit = static_cast<std::uint32_t>(product % 10);
+            carry = product / 10;
+        }
+        for (; carry != 0; carry /= 10) little.push_back(static_cast<std::uint32_t>(carry % 10));
+    };
+    // Powers in chunks (2^30, 5^13 fit with room for the carry).
+    const std::uint64_t factor = e2 >= 0 ? 2 : 5;
+    const int chunk = e2 >= 0 ? 30 : 13;
+    std::uint64_t power = 1;
+    for (int k = 0; k < chunk; ++k) power *= factor;
+    int left = e2 >= 0 ? e2 : -e2;
+    for (; left >= chunk; left -= chunk) multiply(power);
+    for (; left > 0; --left) multiply(factor);
+    out.scale = e2 >= 0 ? 0 : -e2;
+    for (auto it = little.rbegin(); it != little.rend(); ++it) out.digits += static_cast<char>('0' + *it);
+    return out;
+}
+
+// Aligned digit strings of |a| and |b| at their common scale.
+std::pair<std::string, std::string> aligned(const TypedNumber& a, const TypedNumber& b, int& scale) {
+    scale = std::max(a.scale, b.scale);
+    std::string x = strip_zeros(a.digits) + std::string(static_cast<std::size_t>(scale - a.scale), '0');
+    std::string y = strip_zeros(b.digits) + std::string(static_cast<std::size_t>(scale - b.scale), '0');
+    x = strip_zeros(x);
+    y = strip_zeros(y);
+    return {x, y};
+}
+
+int compare_digits(const std::string& x, const std::string& y) {
+    if (x.size() != y.size()) return x.size() < y.size() ? -1 : 1;
+    const int c = x.compare(y);
+    return c < 0 ? -1 : c > 0 ? 1 : 0;
+}
+
+// x + y and x − y (x ≥ y) of digit strings without leading zeros.
+std::string add_digits(const std::string& x, const std::string& y) {
+    std::string sum;
+    int carry = 0;
+    for (std::size_t k = 0; k < std::max(x.size(), y.size()) || carry; ++k) {
+        const int dx = k < x.size() ? x[x.size() - 1 - k] - '0' : 0;
+        const int dy = k < y.size() ? y[y.size() - 1 - k] - '0' : 0;
+        const int d = dx + dy + carry;
+        sum += static_cast<char>('0' + d % 10);
+        carry = d / 10;
+    }
+    std::reverse(sum.begin(), sum.end());
+    return strip_zeros(sum);
+}
+
+std::string subtract_digits(const std::string& x, const std::string& y) {
+    std::string difference;
+    int borrow = 0;
+    for (std::size_t k = 0; k < x.size(); ++k) {
+        int d = (x[x.size() - 1 - k] - '0') - (k < y.size() ? y[y.size() - 1 - k] - '0' : 0) - borrow;
+        borrow = d < 0;
+        if (d < 0) d += 10;
+        difference += static_cast<char>('0' + d);
+    }
+    std::reverse(difference.begin(), difference.end());
+    return strip_zeros(difference);
+}
+
+}  // namespace
+
+TypedNumber exact_decimal(double value) {
+    int exponent = 0;
+    const double mantissa = std::frexp(std::fabs(value), &exponent);
+    return expand(std::signbit(value), static_cast<std::uint64_t>(std::ldexp(mantissa, 53)), exponent - 53);
+}
+
+TypedNumber exact_decimal(long double value) {
+    int exponent = 0;
+    const long double mantissa = std::frexp(std::fabs(value), &exponent);
+    constexpr int bits = std::numeric_limits<long double>::digits;  // 64 on x86, 53 or 113 elsewhere
+    if constexpr (bits > 64) {
+        return exact_decimal(static_cast<quad>(value));
+    } else {
+        return expand(std::signbit(value), static_cast<std::uint64_t>(std::ldexp(mantissa, bits)), exponent - bits);
+    }
+}
+
+TypedNumber exact_decimal(quad value) {
+    int exponent = 0;
+    const quad mantissa = frexpq(fabsq(value), &exponent);
+    return expand(signbitq(value) != 0, static_cast<uint128>(ldexpq(mantissa, 113)), exponent - 113);
+}
+
+std::optional<TypedNumber> exact_value_of(const std::string& text, RealType type) {
+    const char* begin = text.c_str();
+    char* end = nullptr;
+    if (text.empty() || text.find_first_not_of("0123456789.eE+-") != std::string::npos) return std::nullopt;
+    std::optional<TypedNumber> out;
+    switch (type) {
+        case RealType::float_: {
+            const float x = std::strtof(begin, &end);
+            if (std::isfinite(x)) out = exact_decimal(static_cast<double>(x));
+            break;
+        }
+        case RealType::double_: {
+            const double x = std::strtod(begin, &end);
+            if (std::isfinite(x)) out = exact_decimal(x);
+            break;
+        }
+        case RealType::long_double: {
+            const long double x = std::strtold(begin, &end);
+            if (std::isfinite(x)) out = exact_decimal(x);
+            break;
+        }
+        case RealType::quad: {
+            const quad x = strtoflt128(begin, &end);
+            if (finiteq(x)) out = exact_decimal(x);
+            break;
+        }
+    }
+    if (end != begin + text.size()) return std::nullopt;
+    return out;
+}
+
+std::string strip_zeros(const std::string& digits) {
+    const std::size_t first = digits.find_first_not_of('0');
+    return first == std::string::npos ? "0" : digits.substr(first);
+}
+
+bool is_zero(const TypedNumber& number) { return number.digits.find_first_not_of('0') == std::string::npos; }
+
+int compare_magnitude(const TypedNumber& a, const TypedNumber& b) {
+    int scale = 0;
+    const auto [x, y] = aligned(a, b, scale);
+    return compare_digits(x, y);
+}
+
+TypedNumber absolute_difference(const TypedNumber& a, const TypedNumber& b) {
+    TypedNumber out;
+    const auto [x, y] = aligned(a, b, out.scale);
+    const bool same_sign = a.negative == b.negative || is_zero(a) || is_zero(b);
+    if (!same_sign)
+        out.digits = add_digits(x, y);
+    else
+        out.digits = compare_digits(x, y) >= 0 ? subtract_digits(x, y) : subtract_digits(y, x);
+    return out;
+}
+
+quad to_quad(const TypedNumber& number) {
+    const std::string text = (number.negative ? "-" : "") + strip_zeros(number.digits) + "e" + std::to_string(-number.scale);
+    return strtoflt128(text.c_str(), nullptr);
+}
+
+}  // namespace promyk
