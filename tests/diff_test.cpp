@@ -55,8 +55,8 @@ TEST_CASE("Digits that agree are computed exactly") {
 
 TEST_CASE("Exact values of the real types") {
     CHECK(typed_number_text(*exact_value_of("0.1", RealType::float_), Language::en) == "0.100000001490116119384765625");
-    CHECK(typed_number_text(*exact_value_of("0.5", RealType::quad), Language::en) == "0.5");
-    CHECK(strip_zeros(exact_value_of("6.400000000000000355271367880050093", RealType::quad)->digits).size() > 34);
+    CHECK(typed_number_text(*exact_value_of("0.5", RealType::quad_), Language::en) == "0.5");
+    CHECK(strip_zeros(exact_value_of("6.400000000000000355271367880050093", RealType::quad_)->digits).size() > 34);
     CHECK_FALSE(exact_value_of("nan", RealType::double_));
     CHECK_FALSE(exact_value_of("1x", RealType::double_));
     CHECK(real_type_bits("float") == 24);
@@ -75,7 +75,7 @@ TEST_CASE("Identical traces agree at every step") {
 }
 
 TEST_CASE("Float against quad: the first step beyond float's precision is named") {
-    const DiffResult result = diff(input(trace_json(RealType::float_)), input(trace_json(RealType::quad)));
+    const DiffResult result = diff(input(trace_json(RealType::float_)), input(trace_json(RealType::quad_)));
     REQUIRE(result.first);
     // 3.2 is not a float: S·S in float is 10.24000072479248046875, 7.1e-8 off
     // relative, more than one rounding (2^-24 ≈ 6.0e-8) can make.
@@ -94,7 +94,7 @@ TEST_CASE("Float against quad: the first step beyond float's precision is named"
 }
 
 TEST_CASE("A relative tolerance replaces the sides' precision") {
-    const DiffInput a = input(trace_json(RealType::float_)), b = input(trace_json(RealType::quad));
+    const DiffInput a = input(trace_json(RealType::float_)), b = input(trace_json(RealType::quad_));
     DiffOptions loose;
     loose.relative_tolerance = 1e-6;
     CHECK_FALSE(diff(a, b, loose).first);
@@ -155,7 +155,7 @@ TEST_CASE("Two students' files must each name one pixel") {
 }
 
 TEST_CASE("The report and the JSON name the first divergence") {
-    const DiffInput a = input(trace_json(RealType::float_), "a.json"), b = input(trace_json(RealType::quad), "b.json");
+    const DiffInput a = input(trace_json(RealType::float_), "a.json"), b = input(trace_json(RealType::quad_), "b.json");
     const DiffResult result = diff(a, b);
     const std::string en = diff_report(result, a, b, {}, builtin_vocabulary(), Language::en);
     CHECK_THAT(en, Catch::Contains("First divergence: SS (|S|²): A 10.240001, B 10.240000000000001136868377216160329"));

@@ -102,7 +102,7 @@ struct TypeInfo {
 const TypeInfo real_types[] = {{"float", promyk::RealType::float_, 24},
                                {"double", promyk::RealType::double_, 53},
                                {"long-double", promyk::RealType::long_double, 64},
-                               {"quad", promyk::RealType::quad, 113}};
+                               {"quad", promyk::RealType::quad_, 113}};
 
 // A number's text read in the given type (correctly rounded by the C library
 // and libquadmath), held exactly in a quad.
@@ -243,7 +243,7 @@ TEST_CASE("Hard cases: the article's formula in every real type, as simulated an
             // in five is the other neighbour; errors up to 0.75 ulp measured,
             // below 1 ulp), so in quad only the values computed without a
             // square root (delta; n_hat here has exact roots) can be pinned.
-            const bool faithful_sqrt = type.real == promyk::RealType::quad;
+            const bool faithful_sqrt = type.real == promyk::RealType::quad_;
             auto before_sqrt = [](const std::string& label) {
                 return label.size() >= 5 && (label.substr(label.size() - 5) == "delta" ||
                                              label.substr(label.size() - 2) == "NE");

@@ -39,7 +39,7 @@ struct Side {
 };
 
 std::optional<RealType> real_type_of(const std::string& name) {
-    for (const RealType type : {RealType::float_, RealType::double_, RealType::long_double, RealType::quad})
+    for (const RealType type : {RealType::float_, RealType::double_, RealType::long_double, RealType::quad_})
         if (real_type_name(type) == name) return type;
     return std::nullopt;
 }

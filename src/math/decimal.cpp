@@ -141,7 +141,7 @@ std::optional<TypedNumber> exact_value_of(const std::string& text, RealType type
             if (std::isfinite(x)) out = exact_decimal(x);
             break;
         }
-        case RealType::quad: {
+        case RealType::quad_: {
             const quad x = strtoflt128(begin, &end);
             if (finiteq(x)) out = exact_decimal(x);
             break;
