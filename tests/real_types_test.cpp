@@ -54,9 +54,11 @@ T literal_intensity(int w, int i, int j) {
     return I * D / (r * root(K));
 }
 
+// The same value: equal, with the same sign for zeros (not memcmp: an x87
+// long double has 6 bytes of padding whose contents are arbitrary).
 template <class T>
 bool same(T a, T b) {
-    return std::memcmp(&a, &b, sizeof(T) == 16 || sizeof(T) == 8 || sizeof(T) == 4 ? sizeof(T) : 10) == 0;
+    return a == b && ((a < 0 || 1 / a < 0) == (b < 0 || 1 / b < 0));
 }
 
 template <class T>
