@@ -14,9 +14,8 @@
 //    and the result must equal the simulation's exactly: each is read from
 //    its text in its own type (real_text; the double value for double).
 //    This pins the rounding: an FMA, a reordered sum or a wider intermediate
-//    changes some value. Quad's square root (libquadmath's sqrtq) is not
-//    correctly rounded, so in quad only delta and n_hat.E are pinned, the
-//    branch is still the simulation's, and the bound of 3. is widened.
+//    changes some value. In quad too: libquadmath's sqrtq is only faithful,
+//    and promyk corrects it (math/real.hpp), so every type is pinned.
 //
 // 2. The branch against exact arithmetic. The exact branch is the engine's
 //    computation carried out exactly on the type's inputs. Where the article's
@@ -239,26 +238,19 @@ TEST_CASE("Hard cases: the article's formula in every real type, as simulated an
                 expected.emplace_back(label, read_in(step.at(1).get<std::string>(), type.name));
             }
             const auto got = engine_steps(trace, type.name);
-            // libquadmath's sqrtq is not correctly rounded (about one result
-            // in five is the other neighbour; errors up to 0.75 ulp measured,
-            // below 1 ulp), so in quad only the values computed without a
-            // square root (delta; n_hat here has exact roots) can be pinned.
-            const bool faithful_sqrt = type.real == promyk::RealType::quad_;
-            auto before_sqrt = [](const std::string& label) {
-                return label.size() >= 5 && (label.substr(label.size() - 5) == "delta" ||
-                                             label.substr(label.size() - 2) == "NE");
-            };
+            // Every type's square root is correctly rounded (quad's too:
+            // libquadmath's sqrtq is corrected in math/real.hpp).
             REQUIRE(got.size() == expected.size());
             for (std::size_t k = 0; k < got.size(); ++k) {
                 INFO("step " << got[k].first << ": engine " << show(got[k].second) << ", simulated "
                              << show(expected[k].second));
                 CHECK(got[k].first == expected[k].first);
-                if (!faithful_sqrt || before_sqrt(got[k].first)) CHECK(got[k].second == expected[k].second);
+                CHECK(got[k].second == expected[k].second);
             }
             const quad result = type.real == promyk::RealType::double_
                                     ? quad(trace.result)
                                     : read_in(trace.result_real_text.at(0), type.name);
-            if (article.contains("result") && !faithful_sqrt) {
+            if (article.contains("result")) {
                 CHECK(result == read_in(article.at("result").get<std::string>(), type.name));
             }
 
@@ -289,12 +281,8 @@ TEST_CASE("Hard cases: the article's formula in every real type, as simulated an
 
             // 3. t and the result within the running error bound of the exact values.
             // The bound assumes correctly rounded operations (|error| <= u|v|
-            // each). A faithful square root errs by less than 2u|v|: with
-            // every rounding term doubled the first-order terms of the bound
-            // double and the second-order ones quadruple, so 4 times the
-            // bound holds for quad's sqrtq (third-order terms are below
-            // 2^-300 of the value here).
-            const quad slack = faithful_sqrt ? quad(4) : quad(1);
+            // each), which every type's operations are.
+            const quad slack = quad(1);
             if (correct && article.contains("t_error")) {
                 const quad t = got.empty() ? quad(0) : [&] {
                     for (auto it = got.rbegin(); it != got.rend(); ++it)

@@ -23,10 +23,13 @@ using namespace promyk;
 
 namespace {
 
+// The correctly rounded square root: std::sqrt, and for quad promyk's
+// correction of libquadmath's faithful sqrtq (checked against the 4096-bit
+// simulation in tests/hard_cases_test.cpp).
 template <class T>
 T root(T x) {
     if constexpr (std::is_same_v<T, quad>)
-        return sqrtq(x);
+        return square_root(x);
     else
         return std::sqrt(x);
 }

@@ -53,7 +53,26 @@ struct RealTraits<quad> {
     static quad lowest() { return -max(); }
     static quad infinity() { return quad(std::numeric_limits<double>::infinity()); }
     static quad quiet_nan() { return nanq(""); }
-    static quad sqrt(quad x) { return sqrtq(x); }
+    // libquadmath's sqrtq is faithful, not correctly rounded (about one
+    // result in five is the other neighbour): corrected here, so that quad
+    // rounds like every other type. The remainder r = x - s^2 of a faithful
+    // s is exact in quad (and fmaq computes it exactly); s is the correctly
+    // rounded root when x lies between (s - u/2)^2 and (s + u/2)^2 (u the
+    // spacing of quads at s, the same both sides unless s is a power of two),
+    // that is when -s u + u^2/4 <= r <= s u + u^2/4; ties cannot happen.
+    static quad sqrt(quad x) {
+        const quad s = sqrtq(x);
+        if (!(s > 0) || !(s < max())) return s;  // 0, NaN, infinity, negative
+        const quad up = nextafterq(s, infinity());
+        const quad down = nextafterq(s, quad(0));
+        const quad r = fmaq(-s, s, x);
+        // Compare x with the midpoints exactly: (s + up)/2 squared against x
+        // is the sign of x - ((s + up)/2)^2 = r - (up - s)(s + (up - s)/4).
+        const quad u_up = up - s, u_down = s - down;  // exact: neighbours
+        if (r > 0 && r - u_up * s > u_up * u_up / 4) return up;
+        if (r < 0 && r + u_down * s < u_down * u_down / 4) return down;
+        return s;
+    }
 };
 
 // The correctly rounded square root in the value's own type.
