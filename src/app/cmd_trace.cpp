@@ -24,12 +24,13 @@ struct TraceOptions {
     bool explain = false;
     std::string lang;  // empty: from LANG
     RealType real = RealType::double_;
+    Formula formula = Formula::article;
 };
 
 int run_trace(const TraceOptions& options) {
     const cli::Pixel pixel = cli::parse_pixel(options.pixel, "--pixel", options.w);
     const Scene scene = cli::load_scene_option(options.scene_file);
-    const PixelTrace trace = trace_pixel(scene, options.w, pixel.i, pixel.j, options.real);
+    const PixelTrace trace = trace_pixel(scene, options.w, pixel.i, pixel.j, options.real, options.formula);
     std::string out;
     if (options.format == "json") {
         append_trace_json(out, trace);
@@ -55,6 +56,7 @@ std::function<int()> setup_trace(CLI::App& app) {
         ->capture_default_str();
     add_w_option(*cmd, options->w);
     add_real_option(*cmd, options->real);
+    add_formula_option(*cmd, options->formula);
     add_scene_option(*cmd, options->scene_file);
     cmd->add_option("--format", options->format, "text: an aligned table; json: the trace as one JSON line")
         ->check(CLI::IsMember({"text", "json"}))

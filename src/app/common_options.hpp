@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "geometry/formula.hpp"
 #include "math/real.hpp"
 
 namespace promyk::app {
@@ -29,5 +30,9 @@ CLI::Option* add_threads_option(CLI::App& cmd, int& threads);
 // --real float|double|long-double|quad: the type the whole computation is
 // done in (default double, the article's).
 CLI::Option* add_real_option(CLI::App& cmd, RealType& real);
+
+// --formula article|stable|fma|geometric: how the eye's rays meet a sphere
+// (default article, the article's quadratic).
+CLI::Option* add_formula_option(CLI::App& cmd, Formula& formula);
 
 }  // namespace promyk::app

@@ -21,6 +21,35 @@ struct SphereRoot {
     bool inside;  // the far root: the ray leaves the sphere there (the eye is inside)
 };
 
+// A discriminant that misses: <= 0 and finite below (a delta of -inf, like
+// NaN, decides nothing and must not pass for a miss).
+template <class Real>
+bool discriminant_misses(Real delta) {
+    return delta <= 0 && delta >= RealTraits<Real>::lowest();
+}
+
+// The engine's choice between a formula's two roots (either order): the
+// nearer if it is > 0, else the farther if it is > 0 (the eye inside the
+// sphere), else the sphere is behind the eye. A root that is NaN or infinite
+// is returned as the near one, so the caller reports the pixel non-finite.
+template <class Real, class Recorder>
+std::optional<SphereRoot<Real>> nearest_root_ahead(Real t_a, Real t_b, Recorder& record) {
+    const bool finite = t_a * Real(0) == Real(0) && t_b * Real(0) == Real(0);
+    const Real near = !finite ? (t_a * Real(0) == Real(0) ? t_b : t_a) : t_a < t_b ? t_a : t_b;
+    const Real far = t_a < t_b ? t_b : t_a;
+    if (!(near <= 0)) {
+        if constexpr (Recorder::records) record(Key::found, "near");
+        return SphereRoot<Real>{near, false};
+    }
+    if (far > 0) {
+        if constexpr (Recorder::records) record(Key::found, "far");
+        return SphereRoot<Real>{far, true};
+    }
+    if constexpr (Recorder::records) record(Key::found, "behind");
+    return std::nullopt;
+}
+
+// The article's formula, with the engine's choice of root.
 template <class Real, class Recorder>
 std::optional<SphereRoot<Real>> intersect_sphere(const Vec3<Real>& E, const Vec3<Real>& S, Real r,
                                                  Recorder& record) {
