@@ -68,17 +68,14 @@ struct FanResult {
     double max_ulps = 0;  // over the rays that hit
 };
 
-// A fan of rays E = (a, 0, 1) from the eye towards a unit sphere centred at
-// (0, 0, D): a from 0 up to 0.9 / D, so each passes the centre at a distance
-// D a / sqrt(1 + a^2) < 0.9 and must hit.
-template <class Real>
-FanResult far_sphere_fan(Formula formula, double D, int rays = 200) {
+// The formula on rays E_k = ray(k), k = 0 .. rays - 1, that must all hit the
+// sphere (S, r): how many it misses, and its largest error in t in ulps.
+template <class Real, class Ray>
+FanResult fan(Formula formula, const Vec3<Real>& S, Real r, Ray ray, int rays = 200) {
     NullRecorder none;
     FanResult result;
-    const Vec3<Real> S = vec<Real>(0, 0, D);
-    const Real r = 1;
     for (int k = 0; k < rays; ++k) {
-        const Vec3<Real> E = vec<Real>(0.9 * k / rays / D, 0, 1);
+        const Vec3<Real> E = ray(k, rays);
         const quad exact = exact_root(E, S, r);
         const auto root = intersect_sphere_with(formula, E, S, r, none);
         if (!root) {
@@ -90,27 +87,24 @@ FanResult far_sphere_fan(Formula formula, double D, int rays = 200) {
     return result;
 }
 
+// A fan of rays E = (a, 0, 1) from the eye towards a unit sphere centred at
+// (0, 0, D): a from 0 up to 0.9 / D, so each passes the centre at a distance
+// D a / sqrt(1 + a^2) < 0.9 and must hit.
+template <class Real>
+FanResult far_sphere_fan(Formula formula, double D) {
+    return fan(formula, vec<Real>(0, 0, D), Real(1),
+               [D](int k, int rays) { return vec<Real>(0.9 * k / rays / D, 0, 1); });
+}
+
 // A huge sphere (radius R, an integer) whose surface is at distance 1 in
 // front of the eye: S = (0, 0, R + 1), so |S|^2 - r^2 = 2R + 1 is exact. The
 // rays E = (a, a/2, 1), a from 0 to 1/2, all hit near t = 1.
 template <class Real>
-FanResult huge_near_sphere_fan(Formula formula, double R, int rays = 200) {
-    NullRecorder none;
-    FanResult result;
-    const Vec3<Real> S = vec<Real>(0, 0, R + 1);
-    const Real r = Real(R);
-    for (int k = 0; k < rays; ++k) {
+FanResult huge_near_sphere_fan(Formula formula, double R) {
+    return fan(formula, vec<Real>(0, 0, R + 1), Real(R), [](int k, int rays) {
         const Real a = Real(0.5 * k / rays);
-        const Vec3<Real> E{a, a / 2, Real(1)};
-        const quad exact = exact_root(E, S, r);
-        const auto root = intersect_sphere_with(formula, E, S, r, none);
-        if (!root) {
-            ++result.misses;
-            continue;
-        }
-        result.max_ulps = std::max(result.max_ulps, ulps(root->t, exact));
-    }
-    return result;
+        return Vec3<Real>{a, a / 2, Real(1)};
+    });
 }
 
 }  // namespace

@@ -33,24 +33,14 @@ namespace promyk {
 template <class Real, class Recorder>
 std::optional<SphereRoot<Real>> intersect_sphere_fma(const Vec3<Real>& E, const Vec3<Real>& S, Real r,
                                                      Recorder& record) {
-    const Real EE = length_squared(E);
-    record(Key::EE, EE);
-    const Real SS = length_squared(S);
-    record(Key::SS, SS);
-    const Real C = dot(E, S);
-    record(Key::C, C);
-    const Real c_0 = SS - r * r;
-    record(Key::c_0, c_0);
+    const auto [EE, SS, C, c_0] = sphere_coefficients(E, S, r, record);
     const Real w = EE * c_0;
     record(Key::w_fma, w);
     const Real e = fused_multiply_add(-EE, c_0, w);
     record(Key::e_fma, e);
     const Real delta = fused_multiply_add(C, C, -w) + e;
     record(Key::delta_fma, delta);
-    if (discriminant_misses(delta)) {
-        if constexpr (Recorder::records) record(Key::found, "miss");
-        return std::nullopt;
-    }
+    if (records_miss(delta, record)) return std::nullopt;
     const Real root = square_root(delta);
     const Real t = (C - root) / EE;
     record(Key::t, t);

@@ -16,45 +16,19 @@
 namespace promyk {
 
 template <Formula F>
-struct SphereFormula;
-
-template <>
-struct SphereFormula<Formula::article> {
-    static constexpr Formula id = Formula::article;
+struct SphereFormula {
+    static constexpr Formula id = F;
     template <class Real, class Recorder>
     static std::optional<SphereRoot<Real>> intersect(const Vec3<Real>& E, const Vec3<Real>& S, Real r,
                                                      Recorder& record) {
-        return intersect_sphere(E, S, r, record);
-    }
-};
-
-template <>
-struct SphereFormula<Formula::stable> {
-    static constexpr Formula id = Formula::stable;
-    template <class Real, class Recorder>
-    static std::optional<SphereRoot<Real>> intersect(const Vec3<Real>& E, const Vec3<Real>& S, Real r,
-                                                     Recorder& record) {
-        return intersect_sphere_stable(E, S, r, record);
-    }
-};
-
-template <>
-struct SphereFormula<Formula::fma> {
-    static constexpr Formula id = Formula::fma;
-    template <class Real, class Recorder>
-    static std::optional<SphereRoot<Real>> intersect(const Vec3<Real>& E, const Vec3<Real>& S, Real r,
-                                                     Recorder& record) {
-        return intersect_sphere_fma(E, S, r, record);
-    }
-};
-
-template <>
-struct SphereFormula<Formula::geometric> {
-    static constexpr Formula id = Formula::geometric;
-    template <class Real, class Recorder>
-    static std::optional<SphereRoot<Real>> intersect(const Vec3<Real>& E, const Vec3<Real>& S, Real r,
-                                                     Recorder& record) {
-        return intersect_sphere_geometric(E, S, r, record);
+        if constexpr (F == Formula::stable)
+            return intersect_sphere_stable(E, S, r, record);
+        else if constexpr (F == Formula::fma)
+            return intersect_sphere_fma(E, S, r, record);
+        else if constexpr (F == Formula::geometric)
+            return intersect_sphere_geometric(E, S, r, record);
+        else
+            return intersect_sphere(E, S, r, record);
     }
 };
 

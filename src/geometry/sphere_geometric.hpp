@@ -34,14 +34,7 @@ namespace promyk {
 template <class Real, class Recorder>
 std::optional<SphereRoot<Real>> intersect_sphere_geometric(const Vec3<Real>& E, const Vec3<Real>& S, Real r,
                                                            Recorder& record) {
-    const Real EE = length_squared(E);
-    record(Key::EE, EE);
-    const Real SS = length_squared(S);
-    record(Key::SS, SS);
-    const Real C = dot(E, S);
-    record(Key::C, C);
-    const Real c_0 = SS - r * r;
-    record(Key::c_0, c_0);
+    const auto [EE, SS, C, c_0] = sphere_coefficients(E, S, r, record);
     const Real t_mid = C / EE;
     record(Key::t_mid, t_mid);
     const Vec3<Real> l = t_mid * E - S;
@@ -50,10 +43,7 @@ std::optional<SphereRoot<Real>> intersect_sphere_geometric(const Vec3<Real>& E, 
     record(Key::ll, ll);
     const Real delta_g = r * r - ll;
     record(Key::delta_g, delta_g);
-    if (discriminant_misses(delta_g)) {
-        if constexpr (Recorder::records) record(Key::found, "miss");
-        return std::nullopt;
-    }
+    if (records_miss(delta_g, record)) return std::nullopt;
     return cancellation_free_roots(C, square_root(EE * delta_g), c_0, EE, record);
 }
 

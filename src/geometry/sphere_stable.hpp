@@ -40,20 +40,10 @@ std::optional<SphereRoot<Real>> cancellation_free_roots(Real C, Real root_term, 
 template <class Real, class Recorder>
 std::optional<SphereRoot<Real>> intersect_sphere_stable(const Vec3<Real>& E, const Vec3<Real>& S, Real r,
                                                         Recorder& record) {
-    const Real EE = length_squared(E);
-    record(Key::EE, EE);
-    const Real SS = length_squared(S);
-    record(Key::SS, SS);
-    const Real C = dot(E, S);
-    record(Key::C, C);
-    const Real c_0 = SS - r * r;
-    record(Key::c_0, c_0);
+    const auto [EE, SS, C, c_0] = sphere_coefficients(E, S, r, record);
     const Real delta = C * C - EE * c_0;
     record(Key::delta, delta);
-    if (discriminant_misses(delta)) {
-        if constexpr (Recorder::records) record(Key::found, "miss");
-        return std::nullopt;
-    }
+    if (records_miss(delta, record)) return std::nullopt;
     return cancellation_free_roots(C, square_root(delta), c_0, EE, record);
 }
 
