@@ -52,7 +52,8 @@ TEST_CASE("the tracer emits only vocabulary keys, with values of the vocabulary'
     const Vocabulary& vocabulary = builtin_vocabulary();
     // Every example scene, and the cases no example scene has: an eye inside
     // a sphere (t_far, flipped inside), a plane seen from its back, a sphere
-    // behind the eye, and a blocker lit from inside its own sphere (s_own).
+    // behind the eye, and a blocker lit from inside its own sphere (s_own);
+    // each with every formula (their own keys: c_0, q, delta_g, ...).
     std::vector<std::pair<Scene, int>> scenes;
     for (const auto& entry : std::filesystem::directory_iterator(PROMYK_SOURCE_DIR "/lessons/scenes"))
         if (entry.path().extension() == ".json" && entry.path().string().find(".schema.") == std::string::npos)
@@ -74,13 +75,15 @@ TEST_CASE("the tracer emits only vocabulary keys, with values of the vocabulary'
     for (const auto& [scene, w] : scenes) {
         for (int i = 0; i < w; ++i) {
             for (int j = 0; j < w; ++j) {
-                for (const Step& step : trace_pixel(scene, w, i, j).steps) {
-                    const std::string key(key_name(step.key));
-                    const VocabularyEntry* entry = vocabulary.find(key);
-                    INFO("scene " << scene.name << ", key " << key);
-                    REQUIRE(entry != nullptr);
-                    CHECK(kind_matches(entry->kind, step.value));
-                    seen.insert(key);
+                for (const Formula formula : all_formulas) {
+                    for (const Step& step : trace_pixel(scene, w, i, j, RealType::double_, formula).steps) {
+                        const std::string key(key_name(step.key));
+                        const VocabularyEntry* entry = vocabulary.find(key);
+                        INFO("scene " << scene.name << ", formula " << formula_name(formula) << ", key " << key);
+                        REQUIRE(entry != nullptr);
+                        CHECK(kind_matches(entry->kind, step.value));
+                        seen.insert(key);
+                    }
                 }
             }
         }

@@ -43,6 +43,7 @@ struct RenderOptions {
     int w = 512;
     int threads = 0;
     RealType real = RealType::double_;
+    Formula formula = Formula::article;
     bool plain = false;
     bool stats = false;
     int scale = 1;
@@ -200,7 +201,8 @@ int run_render(const RenderOptions& options) {
     // regular file (a path, or standard output redirected to one), not to a
     // pipe, a terminal or /dev/null.
     if (traces_target && traces_target->lands_in_regular_file && !options.force) {
-        const TraceSizeEstimate estimate = estimate_trace_size(scene, options.w, traced.pixels, 256, options.real);
+        const TraceSizeEstimate estimate = estimate_trace_size(scene, options.w, traced.pixels, 256, options.real,
+                                                                     options.formula);
         if (estimate.bytes() > trace_file_limit) {
             throw UsageError(fmt::format(
                 "--traces {} would be about {} ({} traces of about {} each); add --force to write it anyway, "
@@ -223,7 +225,7 @@ int run_render(const RenderOptions& options) {
     {
         Progress progress("promyk render", "rows");
         FileSink sink(*image, traces ? &*traces : nullptr, progress);
-        render(scene, {options.w, options.threads, options.real}, traced.selection, sink, &stats);
+        render(scene, {options.w, options.threads, options.real, options.formula}, traced.selection, sink, &stats);
         trace_count = sink.trace_count();
     }
     image->finish();
@@ -282,6 +284,7 @@ std::function<int()> setup_render(CLI::App& app) {
     cmd->add_flag("--grid", options->grid, "Draw 1-pixel grey lines between the pixels' blocks (see --scale)");
     add_threads_option(*cmd, options->threads);
     add_real_option(*cmd, options->real);
+    add_formula_option(*cmd, options->formula);
     cmd->add_option("--traces", options->traces_file,
                     "Also write one JSON trace per pixel to FILE, or to standard output with -\n"
                     "(JSON Lines, rows in order); all pixels unless --trace-pixel or --trace-region choose some")

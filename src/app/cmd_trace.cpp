@@ -32,6 +32,7 @@ struct TraceOptions {
     std::string lang;  // empty: from LANG
     RealType real = RealType::double_;
     std::string compare;  // "float,double,quad": trace in each, side by side
+    Formula formula = Formula::article;
 };
 
 // The types of --compare, least precise first (the last is the reference).
@@ -66,7 +67,7 @@ int run_trace(const TraceOptions& options) {
     if (!options.compare.empty()) {
         std::vector<PixelTrace> traces;
         for (const RealType type : compared_types(options.compare))
-            traces.push_back(trace_pixel(scene, options.w, pixel.i, pixel.j, type));
+            traces.push_back(trace_pixel(scene, options.w, pixel.i, pixel.j, type, options.formula));
         std::string out;
         if (options.format == "json") {
             for (const PixelTrace& trace : traces) {
@@ -79,7 +80,7 @@ int run_trace(const TraceOptions& options) {
         std::fputs(out.c_str(), stdout);
         return 0;
     }
-    const PixelTrace trace = trace_pixel(scene, options.w, pixel.i, pixel.j, options.real);
+    const PixelTrace trace = trace_pixel(scene, options.w, pixel.i, pixel.j, options.real, options.formula);
     std::string out;
     if (options.format == "json") {
         append_trace_json(out, trace);
@@ -112,6 +113,7 @@ std::function<int()> setup_trace(CLI::App& app) {
         ->type_name("TYPES")
         ->check(non_empty())
         ->excludes("--real");
+    add_formula_option(*cmd, options->formula);
     add_scene_option(*cmd, options->scene_file);
     cmd->add_option("--format", options->format, "text: an aligned table; json: the trace as one JSON line")
         ->check(CLI::IsMember({"text", "json"}))

@@ -58,4 +58,29 @@ CLI::Option* add_lang_option(CLI::App& cmd, std::string& lang, const std::string
         ->option_text("pl|en");
 }
 
+CLI::Option* add_formula_option(CLI::App& cmd, Formula& formula) {
+    // Only the names: the text becomes the enum's number here, so a number
+    // typed on the command line is refused like any other unknown word.
+    const CLI::Validator names(
+        [](std::string& text) {
+            for (const Formula f : all_formulas) {
+                if (text == formula_name(f)) {
+                    text = std::to_string(static_cast<int>(f));
+                    return std::string();
+                }
+            }
+            return "expects article, stable, fma or geometric, got " + text;
+        },
+        "", "");
+    return cmd.add_option("--formula", formula,
+                          "How the eye's rays meet a sphere: article (the article's quadratic, the default);\n"
+                          "stable (roots from q = C + sign(C)·√delta and Vieta: no cancellation in the near\n"
+                          "root); fma (Kahan's discriminant with fused multiply-adds, then the article's roots);\n"
+                          "geometric (the discriminant from the ray's distance to the centre, Haines et al.\n"
+                          "2019: keeps small far spheres). Shadow rays keep their own test")
+        ->type_name("article|stable|fma|geometric")
+        ->transform(names)
+        ->default_str("article");
+}
+
 }  // namespace promyk::app

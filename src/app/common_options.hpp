@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "geometry/formula.hpp"
 #include "math/real.hpp"
 
 namespace promyk::app {
@@ -33,5 +34,9 @@ CLI::Option* add_real_option(CLI::App& cmd, RealType& real);
 // --lang pl|en: the language of the text (empty: from LANG). `applies_to`
 // starts the description ("text: " when other formats have no language).
 CLI::Option* add_lang_option(CLI::App& cmd, std::string& lang, const std::string& applies_to = "");
+
+// --formula article|stable|fma|geometric: how the eye's rays meet a sphere
+// (default article, the article's quadratic).
+CLI::Option* add_formula_option(CLI::App& cmd, Formula& formula);
 
 }  // namespace promyk::app

@@ -21,6 +21,64 @@ struct SphereRoot {
     bool inside;  // the far root: the ray leaves the sphere there (the eye is inside)
 };
 
+// A discriminant that misses: <= 0 and finite below (a delta of -inf, like
+// NaN, decides nothing and must not pass for a miss).
+template <class Real>
+bool discriminant_misses(Real delta) {
+    return delta <= 0 && delta >= RealTraits<Real>::lowest();
+}
+
+// A formula's discriminant that misses, recorded as the article's miss is.
+template <class Real, class Recorder>
+bool records_miss(Real delta, Recorder& record) {
+    if (!discriminant_misses(delta)) return false;
+    if constexpr (Recorder::records) record(Key::found, "miss");
+    return true;
+}
+
+// The coefficients the other formulas share, each recorded: EE = |E|^2,
+// SS = |S|^2 and C = E.S computed as the article's, and c_0 = SS - r*r.
+template <class Real>
+struct SphereCoefficients {
+    Real EE, SS, C, c_0;
+};
+
+template <class Real, class Recorder>
+SphereCoefficients<Real> sphere_coefficients(const Vec3<Real>& E, const Vec3<Real>& S, Real r, Recorder& record) {
+    SphereCoefficients<Real> k;
+    k.EE = length_squared(E);
+    record(Key::EE, k.EE);
+    k.SS = length_squared(S);
+    record(Key::SS, k.SS);
+    k.C = dot(E, S);
+    record(Key::C, k.C);
+    k.c_0 = k.SS - r * r;
+    record(Key::c_0, k.c_0);
+    return k;
+}
+
+// The engine's choice between a formula's two roots (either order): the
+// nearer if it is > 0, else the farther if it is > 0 (the eye inside the
+// sphere), else the sphere is behind the eye. A root that is NaN or infinite
+// is returned as the near one, so the caller reports the pixel non-finite.
+template <class Real, class Recorder>
+std::optional<SphereRoot<Real>> nearest_root_ahead(Real t_a, Real t_b, Recorder& record) {
+    const bool finite = t_a * Real(0) == Real(0) && t_b * Real(0) == Real(0);
+    const Real near = !finite ? (t_a * Real(0) == Real(0) ? t_b : t_a) : t_a < t_b ? t_a : t_b;
+    const Real far = t_a < t_b ? t_b : t_a;
+    if (!(near <= 0)) {
+        if constexpr (Recorder::records) record(Key::found, "near");
+        return SphereRoot<Real>{near, false};
+    }
+    if (far > 0) {
+        if constexpr (Recorder::records) record(Key::found, "far");
+        return SphereRoot<Real>{far, true};
+    }
+    if constexpr (Recorder::records) record(Key::found, "behind");
+    return std::nullopt;
+}
+
+// The article's formula, with the engine's choice of root.
 template <class Real, class Recorder>
 std::optional<SphereRoot<Real>> intersect_sphere(const Vec3<Real>& E, const Vec3<Real>& S, Real r,
                                                  Recorder& record) {

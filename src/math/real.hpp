@@ -42,6 +42,7 @@ struct RealTraits {
     static Real infinity() { return std::numeric_limits<Real>::infinity(); }
     static Real quiet_nan() { return std::numeric_limits<Real>::quiet_NaN(); }
     static Real sqrt(Real x) { return std::sqrt(x); }
+    static Real fma(Real a, Real b, Real c) { return std::fma(a, b, c); }
 };
 
 template <>
@@ -73,12 +74,19 @@ struct RealTraits<quad> {
         if (r < 0 && r + u_down * s < u_down * u_down / 4) return down;
         return s;
     }
+    static quad fma(quad a, quad b, quad c) { return fmaq(a, b, c); }
 };
 
 // The correctly rounded square root in the value's own type.
 template <class Real>
 Real square_root(Real x) {
     return RealTraits<Real>::sqrt(x);
+}
+
+// a * b + c with one rounding (a fused multiply-add), in the value's own type.
+template <class Real>
+Real fused_multiply_add(Real a, Real b, Real c) {
+    return RealTraits<Real>::fma(a, b, c);
 }
 
 // The shortest decimal text that reads back to the same value in its own

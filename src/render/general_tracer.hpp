@@ -13,6 +13,7 @@
 #include "geometry/plane.hpp"
 #include "geometry/segment.hpp"
 #include "geometry/sphere.hpp"
+#include "geometry/sphere_formulas.hpp"
 #include "math/real.hpp"
 #include "math/vec3.hpp"
 #include "render/world.hpp"
@@ -87,7 +88,9 @@ inline std::string object_name(int kind, int index) {
     return std::string(kind == 1 ? "sphere " : "plane ") + std::to_string(index);
 }
 
-template <class Sw, class Real, bool Rgb, class Recorder>
+// F: the sphere's formula for the eye's rays (geometry/sphere_formulas.hpp);
+// shadow rays keep sphere_blocks whatever the formula.
+template <class Sw, class F = SphereFormula<Formula::article>, class Real, bool Rgb, class Recorder>
 GeneralResult<typename World<Real, Rgb>::Intensity> trace_general(const World<Real, Rgb>& world, const Vec3<Real>& E,
                                                                    WorkCounts& work, Recorder& record) {
     using Intensity = typename World<Real, Rgb>::Intensity;
@@ -104,7 +107,7 @@ GeneralResult<typename World<Real, Rgb>::Intensity> trace_general(const World<Re
         const auto& sphere = world.spheres[k];
         record.begin_group("sphere", static_cast<int>(k));
         ++work.sphere_tests;
-        if (const auto root = intersect_sphere(E, sphere.S, sphere.r, record)) {
+        if (const auto root = F::intersect(E, sphere.S, sphere.r, record)) {
             if (!finite_value(root->t)) {
                 undecided = true;
             } else if (root->t < best_t) {

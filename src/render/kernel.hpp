@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 
+#include "geometry/formula.hpp"
 #include "math/real.hpp"
 #include "render/stages.hpp"
 #include "scene/scene.hpp"
@@ -48,7 +49,9 @@ private:
     Stages stages_;
 };
 
-// The kernel for the scene, computing in `real` (PRODUCT.md: --real).
-std::unique_ptr<Kernel> make_kernel(const Scene& scene, RealType real = RealType::double_);
+// The kernel for the scene, computing in `real` (PRODUCT.md: --real) with
+// `formula` for the eye's rays against spheres (--formula).
+std::unique_ptr<Kernel> make_kernel(const Scene& scene, RealType real = RealType::double_,
+                                    Formula formula = Formula::article);
 
 }  // namespace promyk

@@ -211,7 +211,7 @@ void render(const Scene& scene, const RenderSettings& settings, const PixelSelec
     RenderStats local_stats;
     RenderStats& out_stats = stats != nullptr ? *stats : local_stats;
     out_stats = RenderStats{};
-    const std::unique_ptr<Kernel> kernel = make_kernel(scene, settings.real);
+    const std::unique_ptr<Kernel> kernel = make_kernel(scene, settings.real, settings.formula);
     const int w = settings.w;
     const int threads = std::min(resolve_threads(settings.threads), w);
     const int rows_per_band = band_rows(w, threads, !traced.empty());

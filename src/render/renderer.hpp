@@ -45,6 +45,7 @@ struct RenderSettings {
     int w = 512;
     int threads = 0;  // 0: all cores
     RealType real = RealType::double_;  // the type every number is computed in
+    Formula formula = Formula::article;  // the sphere's formula for the eye's rays
 };
 
 // The number of threads a setting means (0: all cores).

@@ -2,6 +2,7 @@
 // the header that says what was computed.
 #pragma once
 
+#include "geometry/formula.hpp"
 #include "math/real.hpp"
 #include "render/tracer.hpp"
 #include "scene/scene.hpp"
@@ -16,6 +17,7 @@ TraceHeader trace_header(const Scene& scene, int w);
 PixelTrace trace_pixel(const ArticleWorld<double>& world, const TraceHeader& header, int i, int j);
 
 // Traces pixel (i, j) of a w x w pane of the scene.
-PixelTrace trace_pixel(const Scene& scene, int w, int i, int j, RealType real = RealType::double_);
+PixelTrace trace_pixel(const Scene& scene, int w, int i, int j, RealType real = RealType::double_,
+                       Formula formula = Formula::article);
 
 }  // namespace promyk

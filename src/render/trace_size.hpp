@@ -3,6 +3,7 @@
 // trace at w = 512 is ~150 MB; a command warns before such a file.
 #pragma once
 
+#include "geometry/formula.hpp"
 #include "math/real.hpp"
 
 #include <cstdint>
@@ -38,6 +39,6 @@ struct TraceSizeEstimate {
 // Traces `samples` of the chosen pixels (trace_pixel + append_trace_json)
 // and averages their size. InputError for a scene the engine cannot trace.
 TraceSizeEstimate estimate_trace_size(const Scene& scene, int w, const TracedPixels& traced, int samples = 256,
-                                      RealType real = RealType::double_);
+                                      RealType real = RealType::double_, Formula formula = Formula::article);
 
 }  // namespace promyk

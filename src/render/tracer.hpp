@@ -6,6 +6,7 @@
 
 #include "geometry/hit.hpp"
 #include "geometry/sphere_article.hpp"
+#include "geometry/sphere_formulas.hpp"
 #include "math/vec3.hpp"
 #include "render/pane.hpp"
 #include "scene/scene.hpp"
@@ -37,29 +38,43 @@ struct PixelResult {
     Branch branch;  // miss, dark, lit or non_finite
 };
 
-// The article's intensity(x_E, y_E, z_E).
-template <class Real, class Recorder>
+// The article's intensity(x_E, y_E, z_E), with the sphere's formula F
+// (geometry/sphere_formulas.hpp; the article's by default).
+template <class F = SphereFormula<Formula::article>, class Real, class Recorder>
 PixelResult<Real> trace_ray(const ArticleWorld<Real>& world, const Vec3<Real>& E, Recorder& record) {
     record(Key::E, E);
-    const auto t = intersect_sphere_article(E, world.S, world.r, record);
-    if (!t) return {world.background, Branch::miss};
-    // The engine's convention: only a hit in front of the eye is drawn. The
-    // eye is outside the sphere here, so both roots are behind it too.
-    if (*t <= 0) {
-        if constexpr (Recorder::records) record(Key::found, "behind");
-        return {world.background, Branch::miss};
+    Real t;
+    if constexpr (F::id == Formula::article) {
+        const auto near = intersect_sphere_article(E, world.S, world.r, record);
+        if (!near) return {world.background, Branch::miss};
+        // The engine's convention: only a hit in front of the eye is drawn. The
+        // eye is outside the sphere here, so both roots are behind it too.
+        if (*near <= 0) {
+            if constexpr (Recorder::records) record(Key::found, "behind");
+            return {world.background, Branch::miss};
+        }
+        t = *near;
+    } else {
+        // The formula chooses its root as it does for every scene (near, else
+        // far, else behind). The far root cannot be in front of an eye outside
+        // the sphere unless rounding puts the near one at t <= 0; it is then
+        // taken as the near one would be (the normal is the program's).
+        const auto root = F::intersect(E, world.S, world.r, record);
+        if (!root) return {world.background, Branch::miss};
+        t = root->t;
+        record(Key::t_hit, t);
     }
     // A t that is not finite (from a delta that was not) needs no test of its
     // own: it makes P, and so |K|^2 and D, non-finite, which shading checks.
-    const Vec3<Real> P = hit_point(*t, E, record);
+    const Vec3<Real> P = hit_point(t, E, record);
     const Vec3<Real> N = sphere_normal(P, world.S, world.r, record);
     const Shade<Real> shade = shade_lambert(P, N, world.r, world.L, world.I, record);
     return {shade.I_P, shade.branch};
 }
 
-template <class Real, class Recorder>
+template <class F = SphereFormula<Formula::article>, class Real, class Recorder>
 PixelResult<Real> trace_pixel_ray(const ArticleWorld<Real>& world, int w, int i, int j, Recorder& record) {
-    return trace_ray(world, pane_point(i, j, w, world.z_E), record);
+    return trace_ray<F>(world, pane_point(i, j, w, world.z_E), record);
 }
 
 }  // namespace promyk

@@ -57,14 +57,28 @@ enum class Key {
     t_plane,  // a plane's root: n_hat.Q / n_hat.E
     t_hit,    // the nearest hit's t, over all objects
     N_plane,  // a plane's normal used for shading: n_hat, or -n_hat seen from the back
+    // The other formulas for the sphere (--formula, geometry/formula.hpp).
+    c_0,        // |S|^2 - r^2, the quadratic's constant term (stable, fma, geometric)
+    q,          // C + sign(C) sqrt(delta): the roots' cancellation-free sum (stable, geometric)
+    t_q,        // q / |E|^2: one root (the far one when C > 0)
+    t_c,        // c_0 / q: the other root, by Vieta (the near one when C > 0)
+    w_fma,      // |E|^2 c_0, rounded (fma)
+    e_fma,      // fma(-|E|^2, c_0, w_fma): the rounding error of w_fma, exactly (fma)
+    delta_fma,  // fma(C, C, -w_fma) + e_fma: Kahan's discriminant (fma)
+    t_mid,      // C / |E|^2: the ray's point closest to the centre (geometric)
+    l,          // t_mid E - S: from the centre to that point (geometric)
+    ll,         // |l|^2, the ray's squared distance from the centre (geometric)
+    delta_g,    // r^2 - |l|^2: the discriminant from the distance, delta / |E|^2 (geometric)
 };
 
-inline constexpr std::array<std::string_view, 43> key_names = {
+inline constexpr std::array<std::string_view, 54> key_names = {
     "E",       "EE",     "SS",    "C",     "delta",   "t",     "P",       "N",        "K",
     "KK",      "D",      "Delta", "sqrt_Delta", "N_P", "K_len", "K_P",   "cos_alpha", "t_far",
     "found",   "nearest", "flipped", "n_hat", "NQ",   "NE",    "b_s",     "c_s",      "delta_s",
     "s_1",     "s_2",    "NK",    "s",     "s_own",   "blocker", "diffuse", "V_hat",  "R_hat",
     "RV",      "RV_n",   "specular", "contribution", "t_plane", "t_hit", "N_plane",
+    "c_0",     "q",      "t_q",   "t_c",   "w_fma",   "e_fma", "delta_fma", "t_mid", "l",
+    "ll",      "delta_g",
 };
 
 // The article's program's own steps, as opposed to the lessons' extra ones.

@@ -1,8 +1,0 @@
-// The kernels computing in long double (see render/kernel_impl.hpp).
-#include "render/kernel_impl.hpp"
-
-namespace promyk::kernels {
-
-template std::unique_ptr<Kernel> make_kernel_in<long double>(const Scene&, const Stages&);
-
-}  // namespace promyk::kernels
