@@ -238,7 +238,7 @@ const FormulaFailure documented_failures[] = {
     {"fma", "grazing_double", "double", "17.1", "miss (exact lit): the cancellation reaches the type's digits"},
     {"fma", "eye_just_outside", "float", "0.0", "dark (exact miss): the near root rounds to t <= 0 and the far root is taken"},
     // geometric
-    {"geometric", "far_1e8", "float", "16.0", "dark (exact lit): the cancellation reaches the type's digits"},
+    {"geometric", "far_1e8", "float", "16.0", "dark (exact lit): t E rounds to the centre's depth 1e8, N = P - S = 0, D = 0"},
     {"geometric", "huge_near_1e9", "float", "0.0", "dark (exact miss): the near root rounds to t <= 0 and the far root is taken"},
     {"geometric", "tangent_off_axis_1", "float", "9.6", "lit (exact miss): the cancellation reaches the type's digits"},
     {"geometric", "tangent_off_axis_4", "float", "8.0", "miss (exact dark): the cancellation reaches the type's digits"},
