@@ -338,77 +338,85 @@ def sphere_article(ctx, E, S, r, article_kernel):
     return None, None, log, delta
 
 
-def nearest_positive(ctx, roots, log, article_kernel):
-    """The smaller root > 0 of two (the second is the far one), and whether it
-    is the far root (the eye inside). The article's kernel (the eye outside)
-    takes the near root only, as the engine does."""
+def nearest_root_ahead(roots):
+    """geometry/sphere.hpp's nearest_root_ahead: of two roots (either order)
+    the nearer if it is > 0, else the farther if it is > 0 (returned as the
+    far root: the eye inside), else none. The engine's stable, fma and
+    geometric formulas choose so in either kernel (render/tracer.hpp)."""
     a, b = roots
-    if a.gt(b, "root order"):
-        a, b = b, a
-    log.append(("t", a))
-    if a.gt(0, "t > 0"):
-        return a, False
-    if article_kernel:
-        return None, None
-    log.append(("t_far", b))
-    if b.gt(0, "t_far > 0"):
-        return b, True
+    near, far = (a, b) if a.lt(b, "root order") else (b, a)
+    if near.gt(0, "t > 0"):
+        return near, False
+    if far.gt(0, "t_far > 0"):
+        return far, True
     return None, None
+
+
+# The other formulas follow the engine's operation order exactly
+# (src/geometry/sphere_stable.hpp, sphere_fma.hpp, sphere_geometric.hpp) and
+# log the scalar values the engine records under the same keys.
+
+
+def coefficients(E, S, r):
+    """sphere_coefficients: EE, SS, C as the article's, c_0 = SS - r*r."""
+    EE, SS, C = vdot(E, E), vdot(S, S), vdot(E, S)
+    return EE, SS, C, SS - r * r
+
+
+def cancellation_free_roots(C, root_term, c_0, EE, log):
+    q = C + root_term if C.sign() >= 0 else C - root_term
+    log.append(("q", q))
+    t_q = q / EE
+    log.append(("t_q", t_q))
+    t_c = c_0 / q
+    log.append(("t_c", t_c))
+    return nearest_root_ahead((t_q, t_c))
 
 
 def sphere_stable(ctx, E, S, r, article_kernel):
     log = []
-    EE, SS, C = vdot(E, E), vdot(S, S), vdot(E, S)
-    c = SS - r * r
-    delta = C * C - EE * c
+    EE, SS, C, c_0 = coefficients(E, S, r)
+    delta = C * C - EE * c_0
     log.append(("delta", delta))
     if delta.le(0, "delta > 0"):
         return None, None, log, delta
-    root = delta.sqrt()
-    q = C + root if C.sign() >= 0 else C - root
-    t, inside = nearest_positive(ctx, (q / EE, c / q), log, article_kernel)
+    t, inside = cancellation_free_roots(C, delta.sqrt(), c_0, EE, log)
     return t, inside, log, delta
 
 
 def sphere_fma(ctx, E, S, r, article_kernel):
     log = []
-    EE, SS, C = vdot(E, E), vdot(S, S), vdot(E, S)
-    c = SS - r * r
-    w = EE * c
-    e = (-EE).fma(c, w)
+    EE, SS, C, c_0 = coefficients(E, S, r)
+    w = EE * c_0
+    log.append(("w_fma", w))
+    e = (-EE).fma(c_0, w)
+    log.append(("e_fma", e))
     delta = C.fma(C, -w) + e
-    log.append(("delta", delta))
+    log.append(("delta_fma", delta))
     if delta.le(0, "delta > 0"):
         return None, None, log, delta
     root = delta.sqrt()
     t = (C - root) / EE
     log.append(("t", t))
-    if t.gt(0, "t > 0"):
-        return t, False, log, delta
-    if article_kernel:
-        return None, None, log, delta
     t_far = (C + root) / EE
     log.append(("t_far", t_far))
-    if t_far.gt(0, "t_far > 0"):
-        return t_far, True, log, delta
-    return None, None, log, delta
+    t, inside = nearest_root_ahead((t, t_far))
+    return t, inside, log, delta
 
 
 def sphere_geometric(ctx, E, S, r, article_kernel):
     log = []
-    length = vdot(E, E).sqrt()
-    d = vdiv(E, length)
-    f = vneg(S)
-    b = -vdot(f, d)
-    l = (f[0] + b * d[0], f[1] + b * d[1], f[2] + b * d[2])
-    delta = r * r - vdot(l, l)
-    log.append(("delta", delta))
+    EE, SS, C, c_0 = coefficients(E, S, r)
+    t_mid = C / EE
+    log.append(("t_mid", t_mid))
+    l = vsub(vscale(t_mid, E), S)
+    ll = vdot(l, l)
+    log.append(("ll", ll))
+    delta = r * r - ll
+    log.append(("delta_g", delta))
     if delta.le(0, "delta > 0"):
         return None, None, log, delta
-    c = vdot(f, f) - r * r
-    root = delta.sqrt()
-    q = b + root if b.sign() >= 0 else b - root
-    t, inside = nearest_positive(ctx, (c / q / length, q / length), log, article_kernel)
+    t, inside = cancellation_free_roots(C, (EE * delta).sqrt(), c_0, EE, log)
     return t, inside, log, delta
 
 
@@ -471,13 +479,15 @@ def trace(ctx, inputs, formula, article_kernel, naive_own=False):
         out.update(branch="miss", hit="", result=None)
         return out
     t, kind, index, extra = best
-    if not article_kernel:
-        log.append(("t_hit", t))  # the article's kernel has no nearest-hit step
+    if not article_kernel or formula != "article":
+        log.append(("t_hit", t))  # the article's kernel has no nearest-hit step for its own formula
     P = vscale(t, E)
     if kind == 1:
         N = vsub(P, spheres[index]["S"])
         r = spheres[index]["r"]
-        inside = extra
+        # The article's kernel takes the normal P - S whatever the root
+        # (render/tracer.hpp: an eye outside, a far root only by rounding).
+        inside = extra and not article_kernel
         if inside:
             N = vneg(N)
     else:
