@@ -205,7 +205,19 @@ GeneralResult<typename World<Real, Rgb>::Intensity> trace_general(const World<Re
         if constexpr (Sw::shadows) {
             if (faces) {
                 ++work.shadow_rays;
-                std::string blocker;
+                // The first blocking object, by kind (1 sphere, 2 plane) and
+                // index: a number, so rendering builds no name per shadow ray.
+                int blocker_kind = 0, blocker_index = -1;
+                // Takes one object's verdict; true when it decides nothing.
+                auto takes_undecided = [&](Blocks b, int object_kind, std::size_t k) {
+                    record.end_group();
+                    if (b == Blocks::yes && !blocked) {
+                        blocked = true;
+                        blocker_kind = object_kind;
+                        blocker_index = static_cast<int>(k);
+                    }
+                    return b == Blocks::undecided;
+                };
                 for (std::size_t k = 0; k < world.spheres.size(); ++k) {
                     const auto& sphere = world.spheres[k];
                     record.begin_group("sphere", static_cast<int>(k));
@@ -221,14 +233,9 @@ GeneralResult<typename World<Real, Rgb>::Intensity> trace_general(const World<Re
                     } else {
                         b = sphere_blocks(P, K, KK, sphere.S, sphere.r, record);
                     }
-                    record.end_group();
-                    if (b == Blocks::undecided) {
+                    if (takes_undecided(b, 1, k)) {
                         record.end_group();
                         return Result{nan_of<Real, Rgb>(), Branch::non_finite, kind, index};
-                    }
-                    if (b == Blocks::yes && !blocked) {
-                        blocked = true;
-                        if constexpr (Recorder::records) blocker = object_name(1, static_cast<int>(k));
                     }
                 }
                 for (std::size_t k = 0; k < world.planes.size(); ++k) {
@@ -239,17 +246,13 @@ GeneralResult<typename World<Real, Rgb>::Intensity> trace_general(const World<Re
                     const Blocks b = kind == 2 && static_cast<int>(k) == index
                                          ? Blocks::no
                                          : plane_blocks(P, K, plane.n_hat, plane.NQ, record);
-                    record.end_group();
-                    if (b == Blocks::undecided) {
+                    if (takes_undecided(b, 2, k)) {
                         record.end_group();
                         return Result{nan_of<Real, Rgb>(), Branch::non_finite, kind, index};
                     }
-                    if (b == Blocks::yes && !blocked) {
-                        blocked = true;
-                        if constexpr (Recorder::records) blocker = object_name(2, static_cast<int>(k));
-                    }
                 }
-                if constexpr (Recorder::records) record(Key::blocker, blocked ? blocker : std::string("none"));
+                if constexpr (Recorder::records)
+                    record(Key::blocker, blocked ? object_name(blocker_kind, blocker_index) : std::string("none"));
             }
         }
         const bool reaches = faces && !blocked;
