@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <iterator>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -75,8 +76,12 @@ TEST_CASE("the tracer emits only vocabulary keys, with values of the vocabulary'
     for (const auto& [scene, w] : scenes) {
         for (int i = 0; i < w; ++i) {
             for (int j = 0; j < w; ++j) {
-                for (const Formula formula : all_formulas) {
-                    for (const Step& step : trace_pixel(scene, w, i, j, RealType::double_, formula).steps) {
+                // Every formula with one sample; the article's also with 4 (sample_u, I_s, ...).
+                constexpr int formulas = static_cast<int>(std::size(all_formulas));
+                for (int run = 0; run <= formulas; ++run) {
+                    const bool sampled = run == formulas;
+                    const Formula formula = sampled ? Formula::article : all_formulas[run];
+                    for (const Step& step : trace_pixel(scene, w, i, j, RealType::double_, formula, sampled ? 4 : 1).steps) {
                         const std::string key(key_name(step.key));
                         const VocabularyEntry* entry = vocabulary.find(key);
                         INFO("scene " << scene.name << ", formula " << formula_name(formula) << ", key " << key);

@@ -44,6 +44,7 @@ struct RenderOptions {
     int threads = 0;
     RealType real = RealType::double_;
     Formula formula = Formula::article;
+    int spp = 1;
     bool plain = false;
     bool stats = false;
     int scale = 1;
@@ -165,16 +166,20 @@ std::string image_description(const RenderOptions& options, const Scene& scene) 
 
 // What the engine did, on stderr: the stages it ran, rays by kind,
 // intersection tests by shape, pixels by branch.
-void print_stats(const RenderStats& stats, const Scene& scene) {
+void print_stats(const RenderStats& stats, const Scene& scene, int spp) {
     std::string stages;
     for (const std::string& id : effect_ids(scene, plan_stages(scene))) stages += (stages.empty() ? "" : ", ") + id;
     fmt::print(stderr, "statistics:\n");
     fmt::print(stderr, "  stages: {}\n", stages);
-    fmt::print(stderr, "  rays cast: {} primary (one a pixel), {} shadow\n", stats.primary_rays, stats.shadow_rays);
+    fmt::print(stderr, "  rays cast: {} primary ({} a pixel), {} shadow\n", stats.primary_rays,
+               spp == 1 ? std::string("one") : std::to_string(spp), stats.shadow_rays);
     fmt::print(stderr, "  intersection tests: {} ray-sphere, {} ray-plane\n", stats.sphere_tests, stats.plane_tests);
     fmt::print(stderr, "  pixels: {} miss, {} dark, {} lit, {} shadowed, {} non-finite\n", stats.count(Branch::miss),
                stats.count(Branch::dark), stats.count(Branch::lit), stats.count(Branch::shadowed),
                stats.count(Branch::non_finite));
+    if (spp > 1)
+        fmt::print(stderr, "  pixels whose samples disagree: {} (a pixel's branch is its centre sample's)\n",
+                   stats.disagreeing);
 }
 
 int run_render(const RenderOptions& options) {
@@ -202,7 +207,7 @@ int run_render(const RenderOptions& options) {
     // pipe, a terminal or /dev/null.
     if (traces_target && traces_target->lands_in_regular_file && !options.force) {
         const TraceSizeEstimate estimate = estimate_trace_size(scene, options.w, traced.pixels, 256, options.real,
-                                                                     options.formula);
+                                                                     options.formula, options.spp);
         if (estimate.bytes() > trace_file_limit) {
             throw UsageError(fmt::format(
                 "--traces {} would be about {} ({} traces of about {} each); add --force to write it anyway, "
@@ -225,7 +230,7 @@ int run_render(const RenderOptions& options) {
     {
         Progress progress("promyk render", "rows");
         FileSink sink(*image, traces ? &*traces : nullptr, progress);
-        render(scene, {options.w, options.threads, options.real, options.formula}, traced.selection, sink, &stats);
+        render(scene, {options.w, options.threads, options.real, options.formula, options.spp}, traced.selection, sink, &stats);
         trace_count = sink.trace_count();
     }
     image->finish();
@@ -248,11 +253,11 @@ int run_render(const RenderOptions& options) {
                    "promyk: warning: {} of {} pixels are non-finite: their numbers left the range of a double, so "
                    "no branch could be decided (drawn as grey 0, or 255 for an intensity of inf); the first is ({}, "
                    "{}): see promyk trace --pixel {},{} --w {}{}\n",
-                   non_finite, stats.primary_rays, stats.first_non_finite_i, stats.first_non_finite_j,
+                   non_finite, static_cast<long long>(options.w) * options.w, stats.first_non_finite_i, stats.first_non_finite_j,
                    stats.first_non_finite_i, stats.first_non_finite_j, options.w,
                    options.scene_file.empty() ? "" : " --scene " + printable(options.scene_file));
     }
-    if (options.stats) print_stats(stats, scene);
+    if (options.stats) print_stats(stats, scene, options.spp);
     return 0;
 }
 
@@ -285,6 +290,7 @@ std::function<int()> setup_render(CLI::App& app) {
     add_threads_option(*cmd, options->threads);
     add_real_option(*cmd, options->real);
     add_formula_option(*cmd, options->formula);
+    add_spp_option(*cmd, options->spp);
     cmd->add_option("--traces", options->traces_file,
                     "Also write one JSON trace per pixel to FILE, or to standard output with -\n"
                     "(JSON Lines, rows in order); all pixels unless --trace-pixel or --trace-region choose some")

@@ -33,6 +33,7 @@ struct TraceOptions {
     RealType real = RealType::double_;
     std::string compare;  // "float,double,quad": trace in each, side by side
     Formula formula = Formula::article;
+    int spp = 1;
 };
 
 // The types of --compare, least precise first (the last is the reference).
@@ -67,7 +68,7 @@ int run_trace(const TraceOptions& options) {
     if (!options.compare.empty()) {
         std::vector<PixelTrace> traces;
         for (const RealType type : compared_types(options.compare))
-            traces.push_back(trace_pixel(scene, options.w, pixel.i, pixel.j, type, options.formula));
+            traces.push_back(trace_pixel(scene, options.w, pixel.i, pixel.j, type, options.formula, options.spp));
         std::string out;
         if (options.format == "json") {
             for (const PixelTrace& trace : traces) {
@@ -80,7 +81,7 @@ int run_trace(const TraceOptions& options) {
         std::fputs(out.c_str(), stdout);
         return 0;
     }
-    const PixelTrace trace = trace_pixel(scene, options.w, pixel.i, pixel.j, options.real, options.formula);
+    const PixelTrace trace = trace_pixel(scene, options.w, pixel.i, pixel.j, options.real, options.formula, options.spp);
     std::string out;
     if (options.format == "json") {
         append_trace_json(out, trace);
@@ -114,6 +115,7 @@ std::function<int()> setup_trace(CLI::App& app) {
         ->check(non_empty())
         ->excludes("--real");
     add_formula_option(*cmd, options->formula);
+    add_spp_option(*cmd, options->spp);
     add_scene_option(*cmd, options->scene_file);
     cmd->add_option("--format", options->format, "text: an aligned table; json: the trace as one JSON line")
         ->check(CLI::IsMember({"text", "json"}))

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "app/cli_values.hpp"
+#include "render/samples.hpp"
 
 namespace promyk::app {
 
@@ -81,6 +82,29 @@ CLI::Option* add_formula_option(CLI::App& cmd, Formula& formula) {
         ->type_name("article|stable|fma|geometric")
         ->transform(names)
         ->default_str("article");
+}
+
+CLI::Option* add_spp_option(CLI::App& cmd, int& spp) {
+    const CLI::Validator square(
+        [](std::string& text) {
+            if (auto problem = cli::whole_number_problem(text, 1, max_spp)) return *problem;
+            const int n = std::stoi(text);
+            if (!valid_spp(n)) {
+                const int below = spp_side(n) * spp_side(n), above = (spp_side(n) + 1) * (spp_side(n) + 1);
+                return "must be a square (1, 4, 9, 16, ...), so that the pixel splits into n × n cells; got " + text +
+                       ", try " + std::to_string(below) + " or " + std::to_string(above);
+            }
+            return std::string();
+        },
+        "", "");
+    return cmd.add_option("--spp", spp,
+                          "Samples per pixel: 1 (the default) is the pixel's centre, the article's ray; a square\n"
+                          "N = n² splits the pixel into n × n cells with one sample in each, jittered by a hash of\n"
+                          "(i, j, sample), the same in every run. The pixel is their mean; its branch is the\n"
+                          "branch of the sample nearest the centre")
+        ->type_name("N")
+        ->check(square)
+        ->capture_default_str();
 }
 
 }  // namespace promyk::app

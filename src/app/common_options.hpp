@@ -39,4 +39,8 @@ CLI::Option* add_lang_option(CLI::App& cmd, std::string& lang, const std::string
 // (default article, the article's quadratic).
 CLI::Option* add_formula_option(CLI::App& cmd, Formula& formula);
 
+// --spp N: samples per pixel, a square from 1 (the pixel's centre, the
+// default) to max_spp, on the deterministic pattern of render/samples.hpp.
+CLI::Option* add_spp_option(CLI::App& cmd, int& spp);
+
 }  // namespace promyk::app

@@ -60,11 +60,14 @@ PathCheck check_path(const std::string& text, const Vocabulary& vocabulary, cons
     if (!path) return {PathFault::malformed, "", ""};
     if (vocabulary.find(path->key) == nullptr) return {PathFault::unknown_key, "", ""};
     std::string kinds;
-    for (std::size_t g = 0; g < path->groups.size(); ++g) {
+    // A sample (--spp) holds a whole pixel's computation: what follows it is
+    // checked as a path from the top level.
+    const std::size_t first = !path->groups.empty() && path->groups.front().kind == "sample" ? 1 : 0;
+    for (std::size_t g = first; g < path->groups.size(); ++g) {
         const PathGroup& group = path->groups[g];
         const std::string name = group.kind + "[" + std::to_string(group.index) + "]";
         if (group.kind != "sphere" && group.kind != "plane" && group.kind != "light" && group.kind != "material")
-            return {PathFault::unknown_group, group.kind, "sphere, plane, light, material"};
+            return {PathFault::unknown_group, group.kind, "sphere, plane, light, material, sample (first)"};
         kinds += (kinds.empty() ? "" : ".") + group.kind;
         const auto shape = std::find_if(group_shapes().begin(), group_shapes().end(),
                                         [&](const GroupShape& s) { return s.path == kinds; });

@@ -64,4 +64,14 @@ constexpr bool operator==(const Vec3<Real>& P, const Vec3<Real>& Q) {
     return P.x == Q.x && P.y == Q.y && P.z == Q.z;
 }
 
+// True when a number, or every component, finite (x * 0 is 0 only for a finite x).
+template <class Real>
+bool finite_value(Real x) {
+    return x * Real(0) == Real(0);
+}
+template <class Real>
+bool finite_value(const Vec3<Real>& v) {
+    return finite_value(v.x) && finite_value(v.y) && finite_value(v.z);
+}
+
 }  // namespace promyk

@@ -46,16 +46,6 @@ struct GeneralResult {
     int hit_index = -1;
 };
 
-// True when every channel is finite (x * 0 is 0 only for a finite x).
-template <class Real>
-bool finite_value(Real x) {
-    return x * Real(0) == Real(0);
-}
-template <class Real>
-bool finite_value(const Vec3<Real>& v) {
-    return finite_value(v.x) && finite_value(v.y) && finite_value(v.z);
-}
-
 template <class Real, bool Rgb>
 typename World<Real, Rgb>::Intensity zero_intensity() {
     if constexpr (Rgb)

@@ -20,7 +20,8 @@ namespace promyk {
 // One row's pixels per branch, its first non-finite pixel's column, and the
 // work done (rays and intersection tests).
 struct RowCounts {
-    int branches[branch_count] = {};
+    int branches[branch_count] = {};  // by the pixel's branch (its centre sample's)
+    int disagreeing = 0;              // pixels whose samples took different branches
     int first_non_finite_j = -1;
     long long shadow_rays = 0;
     long long sphere_tests = 0;
@@ -41,17 +42,21 @@ public:
     // Traces pixel (i, j) of the header's pane (header.w).
     virtual PixelTrace trace(const TraceHeader& header, int i, int j) const = 0;
     const Stages& stages() const { return stages_; }
+    // Samples per pixel (render/samples.hpp): 1 is the pixel's centre.
+    int spp() const { return spp_; }
 
 protected:
-    explicit Kernel(const Stages& stages) : stages_(stages) {}
+    Kernel(const Stages& stages, int spp) : stages_(stages), spp_(spp) {}
 
 private:
     Stages stages_;
+    int spp_;
 };
 
 // The kernel for the scene, computing in `real` (PRODUCT.md: --real) with
-// `formula` for the eye's rays against spheres (--formula).
+// `formula` for the eye's rays against spheres (--formula), with spp samples
+// per pixel (--spp; throws UsageError unless valid_spp(spp)).
 std::unique_ptr<Kernel> make_kernel(const Scene& scene, RealType real = RealType::double_,
-                                    Formula formula = Formula::article);
+                                    Formula formula = Formula::article, int spp = 1);
 
 }  // namespace promyk

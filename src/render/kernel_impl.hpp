@@ -16,6 +16,7 @@
 #include "render/pane.hpp"
 #include "render/quantize.hpp"
 #include "render/renderer.hpp"
+#include "render/sampling.hpp"
 #include "render/trace_pixel.hpp"
 #include "render/tracer.hpp"
 
@@ -29,22 +30,69 @@ Vec3d to_double(const Vec3<Real>& v) {
 
 // The header's numeric settings for a kernel in Real with formula F.
 template <class Real, class F>
-void set_numeric(TraceHeader& header) {
+void set_numeric(TraceHeader& header, int spp) {
     header.real = std::string(real_type_name(RealTraits<Real>::type));
     header.formula = std::string(formula_name(F::id));
+    header.spp = spp;
 }
+
+// A trace of pixel (i, j) with the header's scene and these settings, to fill.
+template <class Real, class F>
+PixelTrace new_trace(const TraceHeader& header, int i, int j, int spp) {
+    PixelTrace trace;
+    trace.header = header;
+    trace.header.i = i;
+    trace.header.j = j;
+    set_numeric<Real, F>(trace.header, spp);
+    return trace;
+}
+
+// Counts a pixel of a row: its branch, and whether its samples agreed.
+template <class Intensity>
+void count_pixel(RowCounts& counts, const SampledPixel<Intensity>& pixel, int j) {
+    ++counts.branches[static_cast<int>(pixel.branch)];
+    if (!pixel.agree()) ++counts.disagreeing;
+    if (pixel.branch == Branch::non_finite && counts.first_non_finite_j < 0) counts.first_non_finite_j = j;
+}
+
+// A trace's fields for a pixel of several samples: each sample's steps were
+// recorded in its own group ("sample", s), and its intensity as I_s; the
+// mean closes the trace as I_mean.
+template <class Intensity>
+void set_samples(PixelTrace& trace, const SampledPixel<Intensity>& pixel) {
+    SampleSummary summary;
+    summary.centre = pixel.centre;
+    for (int b = 0; b < branch_count; ++b) summary.branches[static_cast<std::size_t>(b)] = pixel.branches[b];
+    trace.samples = summary;
+    trace.branch = pixel.branch;
+}
+
+// Opens sample s's group and records where the sample lies in its pixel.
+inline void begin_sample(RecordingRecorder& recorder, int i, int j, int s, int spp) {
+    recorder.begin_group("sample", s);
+    const SampleOffset o = sample_offset(i, j, s, spp);
+    recorder(Key::sample_u, o.u);
+    recorder(Key::sample_v, o.v);
+}
+
+// Ignores each sample's result (rendering).
+struct IgnoreSample {
+    template <class Result>
+    void operator()(int, const Result&) const {}
+};
 
 template <class Real, class F>
 class ArticleKernel final : public Kernel {
     static constexpr bool literal = std::is_same_v<Real, double> && F::id == Formula::article;
 
 public:
-    ArticleKernel(const Stages& stages, const ArticleWorld<double>& world)
-        : Kernel(stages),
+    ArticleKernel(const Stages& stages, const ArticleWorld<double>& world, int spp)
+        : Kernel(stages, spp),
           world_{Real(world.z_E), to_real<Real>(world.S), Real(world.r), to_real<Real>(world.L), Real(world.I),
                  Real(world.background)} {}
     int channels() const override { return 1; }
     RowCounts row(int w, int i, std::uint8_t* out) const override {
+        if (spp() > 1) return sampled_row(w, i, out);
         if constexpr (literal) {
             return render_row(world_, w, i, out);  // the tuned loop of the article's program
         } else {
@@ -62,20 +110,24 @@ public:
     }
     Vec3d intensity(int w, int i, int j, Branch* branch) const override {
         NullRecorder none;
-        const PixelResult<Real> pixel = trace_pixel_ray<F>(world_, w, i, j, none);
-        if (branch) *branch = pixel.branch;
-        const double I_P = static_cast<double>(pixel.I_P);
+        double I_P;
+        if (spp() > 1) {
+            const auto pixel = sampled(w, i, j, none, IgnoreSample{});
+            if (branch) *branch = pixel.branch;
+            I_P = static_cast<double>(pixel.I_P);
+        } else {
+            const PixelResult<Real> pixel = trace_pixel_ray<F>(world_, w, i, j, none);
+            if (branch) *branch = pixel.branch;
+            I_P = static_cast<double>(pixel.I_P);
+        }
         return {I_P, I_P, I_P};
     }
     PixelTrace trace(const TraceHeader& header, int i, int j) const override {
+        if (spp() > 1) return sampled_trace(header, i, j);
         if constexpr (literal) {
             return trace_pixel(world_, header, i, j);
         } else {
-            PixelTrace trace;
-            trace.header = header;
-            trace.header.i = i;
-            trace.header.j = j;
-            set_numeric<Real, F>(trace.header);
+            PixelTrace trace = new_trace<Real, F>(header, i, j, 1);
             RecordingRecorder recorder;
             const PixelResult<Real> pixel = trace_pixel_ray<F>(world_, header.w, i, j, recorder);
             trace.steps = recorder.take_steps();
@@ -89,32 +141,80 @@ public:
     }
 
 private:
+    // Pixel (i, j) from its samples; on_result sees each sample's result.
+    template <class Recorder, class OnResult>
+    SampledPixel<Real> sampled(int w, int i, int j, Recorder& record, OnResult&& on_result) const {
+        return sample_pixel<Real>(
+            w, i, j, spp(), world_.z_E,
+            [&](int s, const Vec3<Real>& E) {
+                if constexpr (Recorder::records) begin_sample(record, i, j, s, spp());
+                return trace_ray<F>(world_, E, record);
+            },
+            on_result);
+    }
+
+    RowCounts sampled_row(int w, int i, std::uint8_t* out) const {
+        NullRecorder none;
+        RowCounts counts;
+        counts.sphere_tests = static_cast<long long>(w) * spp();
+        for (int j = 0; j < w; ++j) {
+            const SampledPixel<Real> pixel = sampled(w, i, j, none, IgnoreSample{});
+            count_pixel(counts, pixel, j);
+            out[j] = to_byte(static_cast<double>(pixel.I_P));
+        }
+        return counts;
+    }
+
+    PixelTrace sampled_trace(const TraceHeader& header, int i, int j) const {
+        PixelTrace trace = new_trace<Real, F>(header, i, j, spp());
+        RecordingRecorder recorder;
+        const SampledPixel<Real> pixel = sampled(header.w, i, j, recorder, [&](int, const PixelResult<Real>& result) {
+            recorder(Key::I_s, result.I_P);
+            recorder.end_group();
+        });
+        recorder(Key::I_mean, pixel.I_P);
+        trace.steps = recorder.take_steps();
+        trace.groups = recorder.take_groups();
+        set_samples(trace, pixel);
+        trace.result = static_cast<double>(pixel.I_P);
+        if constexpr (!std::is_same_v<Real, double>) trace.result_real_text = {real_text(pixel.I_P)};
+        trace.grey = to_byte(trace.result);
+        trace.first_non_finite = first_non_finite_step(trace.steps);
+        return trace;
+    }
+
     ArticleWorld<Real> world_;
 };
 
 template <class Sw, bool Rgb, class Real, class F>
 class GeneralKernel final : public Kernel {
+    using Result = GeneralResult<typename World<Real, Rgb>::Intensity>;
+    using Pixel = SampledPixel<typename World<Real, Rgb>::Intensity>;
+
 public:
-    GeneralKernel(const Stages& stages, const Scene& scene)
-        : Kernel(stages), world_(compile_world<Real, Rgb>(scene)) {}
+    GeneralKernel(const Stages& stages, const Scene& scene, int spp)
+        : Kernel(stages, spp), world_(compile_world<Real, Rgb>(scene)) {}
 
     int channels() const override { return Rgb ? 3 : 1; }
 
     RowCounts row(int w, int i, std::uint8_t* out) const override {
-        const Real y_E = pane_y<Real>(i, w);
         NullRecorder none;
         WorkCounts work;
         RowCounts counts;
-        for (int j = 0; j < w; ++j) {
-            const auto pixel = trace_general<Sw, F>(world_, Vec3<Real>{pane_x<Real>(j, w), y_E, world_.z_E}, work, none);
-            ++counts.branches[static_cast<int>(pixel.branch)];
-            if (pixel.branch == Branch::non_finite && counts.first_non_finite_j < 0) counts.first_non_finite_j = j;
-            if constexpr (Rgb) {
-                out[3 * j] = to_byte(static_cast<double>(pixel.I_P.x));
-                out[3 * j + 1] = to_byte(static_cast<double>(pixel.I_P.y));
-                out[3 * j + 2] = to_byte(static_cast<double>(pixel.I_P.z));
-            } else {
-                out[j] = to_byte(static_cast<double>(pixel.I_P));
+        if (spp() > 1) {
+            for (int j = 0; j < w; ++j) {
+                const Pixel pixel = sampled(w, i, j, work, none, IgnoreSample{});
+                count_pixel(counts, pixel, j);
+                store(pixel.I_P, out, j);
+            }
+        } else {
+            const Real y_E = pane_y<Real>(i, w);
+            for (int j = 0; j < w; ++j) {
+                const Result pixel =
+                    trace_general<Sw, F>(world_, Vec3<Real>{pane_x<Real>(j, w), y_E, world_.z_E}, work, none);
+                ++counts.branches[static_cast<int>(pixel.branch)];
+                if (pixel.branch == Branch::non_finite && counts.first_non_finite_j < 0) counts.first_non_finite_j = j;
+                store(pixel.I_P, out, j);
             }
         }
         counts.shadow_rays = work.shadow_rays;
@@ -126,61 +226,103 @@ public:
     Vec3d intensity(int w, int i, int j, Branch* branch) const override {
         NullRecorder none;
         WorkCounts work;
-        const auto pixel = trace_general<Sw, F>(world_, pane_point(i, j, w, world_.z_E), work, none);
-        if (branch) *branch = pixel.branch;
-        if constexpr (Rgb) {
-            return to_double(pixel.I_P);
-        } else {
-            const double I_P = static_cast<double>(pixel.I_P);
-            return {I_P, I_P, I_P};
+        if (spp() > 1) {
+            const Pixel pixel = sampled(w, i, j, work, none, IgnoreSample{});
+            if (branch) *branch = pixel.branch;
+            return as_rgb(pixel.I_P);
         }
+        const Result pixel = trace_general<Sw, F>(world_, pane_point(i, j, w, world_.z_E), work, none);
+        if (branch) *branch = pixel.branch;
+        return as_rgb(pixel.I_P);
     }
 
     PixelTrace trace(const TraceHeader& header, int i, int j) const override {
-        PixelTrace trace;
-        trace.header = header;
-        trace.header.i = i;
-        trace.header.j = j;
-        set_numeric<Real, F>(trace.header);
+        PixelTrace trace = new_trace<Real, F>(header, i, j, spp());
         RecordingRecorder recorder;
         WorkCounts work;
-        const auto pixel =
-            trace_general<Sw, F>(world_, pane_point(i, j, header.w, world_.z_E), work, recorder);
+        if (spp() > 1) {
+            const int centre = centre_sample(i, j, spp());
+            const Pixel pixel = sampled(header.w, i, j, work, recorder, [&](int s, const Result& result) {
+                recorder(Key::I_s, result.I_P);
+                recorder.end_group();
+                if (s == centre && result.hit_kind != 0)
+                    trace.hit_object = object_name(result.hit_kind, result.hit_index);
+            });
+            recorder(Key::I_mean, pixel.I_P);
+            set_samples(trace, pixel);
+            set_result(trace, pixel.I_P);
+        } else {
+            const Result pixel = trace_general<Sw, F>(world_, pane_point(i, j, header.w, world_.z_E), work, recorder);
+            trace.branch = pixel.branch;
+            if (pixel.hit_kind != 0) trace.hit_object = object_name(pixel.hit_kind, pixel.hit_index);
+            set_result(trace, pixel.I_P);
+        }
         trace.steps = recorder.take_steps();
         trace.groups = recorder.take_groups();
-        trace.branch = pixel.branch;
-        if (pixel.hit_kind != 0) trace.hit_object = object_name(pixel.hit_kind, pixel.hit_index);
-        if constexpr (Rgb) {
-            const Vec3d I_P = to_double(pixel.I_P);
-            trace.result_rgb = I_P;
-            trace.result = I_P.x;
-            trace.rgb = {to_byte(I_P.x), to_byte(I_P.y), to_byte(I_P.z)};
-            trace.grey = trace.rgb[0];
-            if constexpr (!std::is_same_v<Real, double>)
-                trace.result_real_text = {real_text(pixel.I_P.x), real_text(pixel.I_P.y), real_text(pixel.I_P.z)};
-        } else {
-            trace.result = static_cast<double>(pixel.I_P);
-            trace.grey = to_byte(trace.result);
-            if constexpr (!std::is_same_v<Real, double>) trace.result_real_text = {real_text(pixel.I_P)};
-        }
         trace.first_non_finite = first_non_finite_step(trace.steps);
         return trace;
     }
 
 private:
+    template <class Recorder, class OnResult>
+    Pixel sampled(int w, int i, int j, WorkCounts& work, Recorder& record, OnResult&& on_result) const {
+        return sample_pixel<typename World<Real, Rgb>::Intensity>(
+            w, i, j, spp(), world_.z_E,
+            [&](int s, const Vec3<Real>& E) {
+                if constexpr (Recorder::records) begin_sample(record, i, j, s, spp());
+                return trace_general<Sw, F>(world_, E, work, record);
+            },
+            on_result);
+    }
+
+    static Vec3d as_rgb(const typename World<Real, Rgb>::Intensity& I_P) {
+        if constexpr (Rgb) {
+            return to_double(I_P);
+        } else {
+            const double grey = static_cast<double>(I_P);
+            return {grey, grey, grey};
+        }
+    }
+
+    static void store(const typename World<Real, Rgb>::Intensity& I_P, std::uint8_t* out, int j) {
+        if constexpr (Rgb) {
+            out[3 * j] = to_byte(static_cast<double>(I_P.x));
+            out[3 * j + 1] = to_byte(static_cast<double>(I_P.y));
+            out[3 * j + 2] = to_byte(static_cast<double>(I_P.z));
+        } else {
+            out[j] = to_byte(static_cast<double>(I_P));
+        }
+    }
+
+    static void set_result(PixelTrace& trace, const typename World<Real, Rgb>::Intensity& I_P) {
+        if constexpr (Rgb) {
+            const Vec3d rgb = to_double(I_P);
+            trace.result_rgb = rgb;
+            trace.result = rgb.x;
+            trace.rgb = {to_byte(rgb.x), to_byte(rgb.y), to_byte(rgb.z)};
+            trace.grey = trace.rgb[0];
+            if constexpr (!std::is_same_v<Real, double>)
+                trace.result_real_text = {real_text(I_P.x), real_text(I_P.y), real_text(I_P.z)};
+        } else {
+            trace.result = static_cast<double>(I_P);
+            trace.grey = to_byte(trace.result);
+            if constexpr (!std::is_same_v<Real, double>) trace.result_real_text = {real_text(I_P)};
+        }
+    }
+
     World<Real, Rgb> world_;
 };
 
 template <class Real, class F, bool Rgb, bool Shadows, bool Phong, bool Ambient, bool Many>
-std::unique_ptr<Kernel> general(const Stages& stages, const Scene& scene) {
-    return std::make_unique<GeneralKernel<Switches<Shadows, Phong, Ambient, Many>, Rgb, Real, F>>(stages, scene);
+std::unique_ptr<Kernel> general(const Stages& stages, const Scene& scene, int spp) {
+    return std::make_unique<GeneralKernel<Switches<Shadows, Phong, Ambient, Many>, Rgb, Real, F>>(stages, scene, spp);
 }
 
 // The 16 combinations of shadows, Phong, ambient and several objects, for
 // one channel count: each an instantiation with only its own stages.
 template <class Real, class F, bool Rgb>
-std::unique_ptr<Kernel> general(const Stages& s, const Scene& scene) {
-    using Make = std::unique_ptr<Kernel> (*)(const Stages&, const Scene&);
+std::unique_ptr<Kernel> general(const Stages& s, const Scene& scene, int spp) {
+    using Make = std::unique_ptr<Kernel> (*)(const Stages&, const Scene&, int);
     static constexpr std::array<Make, 16> table = {
         general<Real, F, Rgb, false, false, false, false>, general<Real, F, Rgb, false, false, false, true>,
         general<Real, F, Rgb, false, false, true, false>,  general<Real, F, Rgb, false, false, true, true>,
@@ -191,16 +333,17 @@ std::unique_ptr<Kernel> general(const Stages& s, const Scene& scene) {
         general<Real, F, Rgb, true, true, false, false>,   general<Real, F, Rgb, true, true, false, true>,
         general<Real, F, Rgb, true, true, true, false>,    general<Real, F, Rgb, true, true, true, true>,
     };
-    return table[(s.shadows ? 8 : 0) + (s.phong ? 4 : 0) + (s.ambient ? 2 : 0) + (s.objects ? 1 : 0)](s, scene);
+    return table[(s.shadows ? 8 : 0) + (s.phong ? 4 : 0) + (s.ambient ? 2 : 0) + (s.objects ? 1 : 0)](s, scene, spp);
 }
 
 // The kernel for the scene in type Real with formula F: the article's when
 // the stages say so.
 template <class Real, Formula F>
-std::unique_ptr<Kernel> make_kernel_in(const Scene& scene, const Stages& stages) {
+std::unique_ptr<Kernel> make_kernel_in(const Scene& scene, const Stages& stages, int spp) {
     using Policy = SphereFormula<F>;
-    if (stages.article) return std::make_unique<ArticleKernel<Real, Policy>>(stages, article_world(scene));
-    return stages.colour ? general<Real, Policy, true>(stages, scene) : general<Real, Policy, false>(stages, scene);
+    if (stages.article) return std::make_unique<ArticleKernel<Real, Policy>>(stages, article_world(scene), spp);
+    return stages.colour ? general<Real, Policy, true>(stages, scene, spp)
+                         : general<Real, Policy, false>(stages, scene, spp);
 }
 
 }  // namespace promyk::kernels

@@ -169,10 +169,11 @@ private:
 
 // Adds a delivered band's counts; rows arrive in order, so the first
 // non-finite pixel found is the first in row order.
-void count(const Band& band, int w, RenderStats& stats) {
+void count(const Band& band, int w, int spp, RenderStats& stats) {
     for (int k = 0; k < band.count; ++k) {
         const RowCounts& row = band.counts[k];
         for (int b = 0; b < branch_count; ++b) stats.branches[b] += row.branches[b];
+        stats.disagreeing += row.disagreeing;
         stats.shadow_rays += row.shadow_rays;
         stats.sphere_tests += row.sphere_tests;
         stats.plane_tests += row.plane_tests;
@@ -181,7 +182,7 @@ void count(const Band& band, int w, RenderStats& stats) {
             stats.first_non_finite_j = row.first_non_finite_j;
         }
     }
-    stats.primary_rays += static_cast<long long>(band.count) * w;
+    stats.primary_rays += static_cast<long long>(band.count) * w * spp;
 }
 
 // Writes rows_computed when render() leaves, by return or by exception.
@@ -191,8 +192,8 @@ struct RowsComputed {
     ~RowsComputed() { stats.rows_computed = work.rows_done(); }
 };
 
-void deliver(Band& band, int w, RenderSink& sink, RenderStats& stats) {
-    count(band, w, stats);
+void deliver(Band& band, int w, int spp, RenderSink& sink, RenderStats& stats) {
+    count(band, w, spp, stats);
     sink.image_rows(band.pixels.data(), band.count);
     for (int k = 0; k < band.count; ++k) {
         if (band.traces[k].empty()) continue;
@@ -211,11 +212,12 @@ void render(const Scene& scene, const RenderSettings& settings, const PixelSelec
     RenderStats local_stats;
     RenderStats& out_stats = stats != nullptr ? *stats : local_stats;
     out_stats = RenderStats{};
-    const std::unique_ptr<Kernel> kernel = make_kernel(scene, settings.real, settings.formula);
+    const std::unique_ptr<Kernel> kernel = make_kernel(scene, settings.real, settings.formula, settings.spp);
     const int w = settings.w;
     const int threads = std::min(resolve_threads(settings.threads), w);
     const int rows_per_band = band_rows(w, threads, !traced.empty());
-    const TraceHeader header = trace_header(scene, w);
+    TraceHeader header = trace_header(scene, w);
+    header.spp = settings.spp;
 
     // Two bands: while the helpers compute one, the calling thread hands the
     // other to the sink (PNG compression, trace writing), then joins them.
@@ -242,7 +244,7 @@ void render(const Scene& scene, const RenderSettings& settings, const PixelSelec
             next.start(done.first_row + done.count, rows_per_band, w);
             helpers.start(threads - 1, next);
         }
-        deliver(done, w, sink, out_stats);
+        deliver(done, w, settings.spp, sink, out_stats);
         if (!more) break;
         work(next);
         helpers.join();

@@ -28,11 +28,12 @@ public:
 // What a render did, counted row by row (PRODUCT.md: statistics on request).
 struct RenderStats {
     long long rows_computed = 0;  // rows whose pixels were computed (also when interrupted)
-    long long primary_rays = 0;   // one per pixel: the ray OE through the pixel's centre
+    long long primary_rays = 0;   // one per sample: the ray OE through the sample's point (spp 1: the centre)
     long long shadow_rays = 0;    // one per light a hit faces, when the scene asks for shadows
     long long sphere_tests = 0;   // ray-sphere intersection tests (primary and shadow rays)
     long long plane_tests = 0;    // ray-plane intersection tests
-    long long branches[branch_count] = {};  // pixels per Branch
+    long long branches[branch_count] = {};  // pixels per Branch (a pixel's is its centre sample's)
+    long long disagreeing = 0;  // pixels whose samples took different branches (spp > 1)
     int first_non_finite_i = -1, first_non_finite_j = -1;  // in row order; -1 if none
 
     long long count(Branch branch) const { return branches[static_cast<int>(branch)]; }
@@ -46,6 +47,7 @@ struct RenderSettings {
     int threads = 0;  // 0: all cores
     RealType real = RealType::double_;  // the type every number is computed in
     Formula formula = Formula::article;  // the sphere's formula for the eye's rays
+    int spp = 1;  // samples per pixel (render/samples.hpp)
 };
 
 // The number of threads a setting means (0: all cores).

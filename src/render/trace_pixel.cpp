@@ -93,8 +93,8 @@ PixelTrace trace_pixel(const ArticleWorld<double>& world, const TraceHeader& hea
     return trace;
 }
 
-PixelTrace trace_pixel(const Scene& scene, int w, int i, int j, RealType real, Formula formula) {
-    return make_kernel(scene, real, formula)->trace(trace_header(scene, w), i, j);
+PixelTrace trace_pixel(const Scene& scene, int w, int i, int j, RealType real, Formula formula, int spp) {
+    return make_kernel(scene, real, formula, spp)->trace(trace_header(scene, w), i, j);
 }
 
 }  // namespace promyk

@@ -18,6 +18,6 @@ PixelTrace trace_pixel(const ArticleWorld<double>& world, const TraceHeader& hea
 
 // Traces pixel (i, j) of a w x w pane of the scene.
 PixelTrace trace_pixel(const Scene& scene, int w, int i, int j, RealType real = RealType::double_,
-                       Formula formula = Formula::article);
+                       Formula formula = Formula::article, int spp = 1);
 
 }  // namespace promyk

@@ -96,12 +96,12 @@ std::vector<std::pair<int, int>> sample_traced_pixels(const TracedPixels& traced
 }
 
 TraceSizeEstimate estimate_trace_size(const Scene& scene, int w, const TracedPixels& traced, int samples,
-                                      RealType real, Formula formula) {
+                                      RealType real, Formula formula, int spp) {
     TraceSizeEstimate estimate;
     estimate.pixels = count_traced_pixels(traced, w);
     const auto sample = sample_traced_pixels(traced, w, samples);
     if (sample.empty()) return estimate;
-    const std::unique_ptr<Kernel> kernel = make_kernel(scene, real, formula);
+    const std::unique_ptr<Kernel> kernel = make_kernel(scene, real, formula, spp);
     const TraceHeader header = trace_header(scene, w);
     std::string line;
     std::size_t total = 0;

@@ -39,6 +39,7 @@ struct TraceSizeEstimate {
 // Traces `samples` of the chosen pixels (trace_pixel + append_trace_json)
 // and averages their size. InputError for a scene the engine cannot trace.
 TraceSizeEstimate estimate_trace_size(const Scene& scene, int w, const TracedPixels& traced, int samples = 256,
-                                      RealType real = RealType::double_, Formula formula = Formula::article);
+                                      RealType real = RealType::double_, Formula formula = Formula::article,
+                                      int spp = 1);
 
 }  // namespace promyk

@@ -69,16 +69,21 @@ enum class Key {
     l,          // t_mid E - S: from the centre to that point (geometric)
     ll,         // |l|^2, the ray's squared distance from the centre (geometric)
     delta_g,    // r^2 - |l|^2: the discriminant from the distance, delta / |E|^2 (geometric)
+    // Samples per pixel (--spp, render/samples.hpp), each sample in its group.
+    sample_u,  // the sample's offset from the pixel's centre along j, in pixels
+    sample_v,  // the same along i (down)
+    I_s,       // the sample's intensity (its r, g, b in a coloured scene)
+    I_mean,    // the pixel's intensity: the mean of its samples'
 };
 
-inline constexpr std::array<std::string_view, 54> key_names = {
+inline constexpr std::array<std::string_view, 58> key_names = {
     "E",       "EE",     "SS",    "C",     "delta",   "t",     "P",       "N",        "K",
     "KK",      "D",      "Delta", "sqrt_Delta", "N_P", "K_len", "K_P",   "cos_alpha", "t_far",
     "found",   "nearest", "flipped", "n_hat", "NQ",   "NE",    "b_s",     "c_s",      "delta_s",
     "s_1",     "s_2",    "NK",    "s",     "s_own",   "blocker", "diffuse", "V_hat",  "R_hat",
     "RV",      "RV_n",   "specular", "contribution", "t_plane", "t_hit", "N_plane",
     "c_0",     "q",      "t_q",   "t_c",   "w_fma",   "e_fma", "delta_fma", "t_mid", "l",
-    "ll",      "delta_g",
+    "ll",      "delta_g", "sample_u", "sample_v", "I_s", "I_mean",
 };
 
 // The article's program's own steps, as opposed to the lessons' extra ones.

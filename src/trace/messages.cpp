@@ -71,7 +71,7 @@ std::vector<std::string> message_ids(Language language) {
 }
 
 std::string group_text(Language language, std::string_view kind, int index) {
-    const std::string id = (kind == "light" || kind == "material" ? "group_" : "object_") + std::string(kind);
+    const std::string id = (kind == "light" || kind == "material" || kind == "sample" ? "group_" : "object_") + std::string(kind);
     if (table(language).count(id) == 0) return std::string(kind) + " " + std::to_string(index);
     return message(language, id, {{"index", std::to_string(index)}});
 }

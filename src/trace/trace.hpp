@@ -50,6 +50,18 @@ struct TraceHeader {
     std::vector<std::pair<std::string, std::string>> skipped;
 };
 
+// How a pixel's samples went (spp > 1): the centre sample, whose branch is
+// the pixel's, and how many samples took each branch.
+struct SampleSummary {
+    int centre = 0;
+    std::array<int, branch_count> branches{};
+    bool agree() const {
+        int branches_taken = 0;
+        for (int count : branches) branches_taken += count != 0;
+        return branches_taken <= 1;
+    }
+};
+
 struct PixelTrace {
     TraceHeader header;
     std::vector<Step> steps;
@@ -63,6 +75,7 @@ struct PixelTrace {
     std::vector<std::string> result_real_text;
     int grey = 0;  // the pixel's 8-bit grey level in the image (a coloured scene: red)
     std::array<int, 3> rgb{};  // a coloured scene's 8-bit r, g, b
+    std::optional<SampleSummary> samples;  // for spp > 1
     // The index into steps of the first value that is NaN or infinite.
     std::optional<std::size_t> first_non_finite;
 };

@@ -168,6 +168,20 @@ void append_trace_json(std::string& out, const PixelTrace& trace) {
     }
     out += ",\"branch\":";
     append_string(out, branch_name(trace.branch));
+    if (trace.samples) {
+        // Which sample's branch is the pixel's, and how the samples went.
+        fmt::format_to(std::back_inserter(out), ",\"samples\":{{\"centre\":{},\"branches\":{{", trace.samples->centre);
+        bool first = true;
+        for (int b = 0; b < branch_count; ++b) {
+            const int n = trace.samples->branches[static_cast<std::size_t>(b)];
+            if (n == 0) continue;
+            if (!first) out += ',';
+            first = false;
+            append_string(out, branch_name(static_cast<Branch>(b)));
+            fmt::format_to(std::back_inserter(out), ":{}", n);
+        }
+        fmt::format_to(std::back_inserter(out), "}},\"agree\":{}}}", trace.samples->agree() ? "true" : "false");
+    }
     if (!trace.hit_object.empty()) {
         out += ",\"hit\":";
         append_string(out, trace.hit_object);

@@ -201,6 +201,23 @@ std::string wide_steps(const PixelTrace& trace, const Vocabulary& vocabulary, co
     return out;
 }
 
+// How the samples went: all in one branch, or how many took each.
+std::string samples_text(const SampleSummary& samples, int spp, Language language) {
+    std::string counts, only;
+    for (int b = 0; b < branch_count; ++b) {
+        const int n = samples.branches[static_cast<std::size_t>(b)];
+        if (n == 0) continue;
+        only = std::string(branch_name(static_cast<Branch>(b)));
+        counts += (counts.empty() ? "" : ", ") + std::to_string(n) + " " + only;
+    }
+    if (samples.agree())
+        return wrap("", message(language, "trace_samples_agree", {{"spp", std::to_string(spp)}, {"branch", only}}), 2);
+    return wrap("",
+                message(language, "trace_samples_disagree",
+                        {{"counts", counts}, {"centre", std::to_string(samples.centre)}, {"spp", std::to_string(spp)}}),
+                2);
+}
+
 std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, Language language) {
     const std::string branch(branch_name(trace.branch));
     const BranchEntry* about = vocabulary.find_branch(branch);
@@ -215,15 +232,20 @@ std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, L
         const Step exact{Key::E, StepValue{0.0}, -1, trace.result_real_text};
         value = step_value_text(exact, vocabulary, trace.result_rgb ? "m" : "I_P", language);
     }
+    if (trace.samples) out += samples_text(*trace.samples, trace.header.spp, language);
     if (!trace.hit_object.empty())
         out += message(language, "trace_hit") + word_text(language, trace.hit_object) + "\n";
     // The article's kernel's result is its formula; a general scene's is a sum.
-    const std::string formula = trace.hit_object.empty() ? (result ? result->formula : "")
-                                                         : message(language, "trace_result_sum");
+    // With samples, it is their mean.
+    const VocabularyEntry* mean = vocabulary.find("I_mean");
+    const std::string formula = trace.samples ? (mean ? mean->formula : "")
+                                : trace.hit_object.empty() ? (result ? result->formula : "")
+                                                           : message(language, "trace_result_sum");
     const std::string result_lead = message(language, "trace_result");
     out += wrap(result_lead,
                 I_P + " = " +
-                    ((trace.branch == Branch::lit || trace.branch == Branch::shadowed) && !formula.empty()
+                    ((trace.branch == Branch::lit || trace.branch == Branch::shadowed || trace.samples) &&
+                             !formula.empty()
                          ? formula + " = "
                          : "") +
                     value,
