@@ -701,6 +701,16 @@ def cases():
         "1e-8 in float, 1e-17 in double), so t = NQ/NE is huge and its sign is the residue's: the computed "
         "NE keeps few or no digits of the exact one (NE_digits_lost).",
         scene("tilted plane", [], [((0, 5, 0), 1)], planes=[((0, -1, 0), (0, 3, 4))], z_E=0.3), 5, 3, 2)
+    # The article's own scene (Fig. 5) and the lessons' three pixels: nothing
+    # is hard here. The baseline: every type and formula must reach its own
+    # precision, so the reference covers the article's scene in every type.
+    article = scene("article", [((0, 0, 3.2), 1.1)], [((1.5, 1, 1), 1)])
+    for id_, (i, j), what in [("article_lit", (3, 4), "lit"), ("article_dark", (5, 1), "on the dark side"),
+                              ("article_miss", (0, 0), "a miss")]:
+        add(id_,
+            "The article's scene and its pixel (%d, %d) at w = 8, %s: no cancellation worth the name. The "
+            "baseline: every type and formula computes it to its own precision." % (i, j, what),
+            article, 8, i, j)
     return out
 
 
