@@ -29,7 +29,7 @@ struct LessonView {
     std::function<std::optional<std::string>(const PixelTrace& trace, const std::string& key, char component)> shown_value{};
     // The same pixels in the other numeric settings the lesson's qualifiers
     // name ({delta@float}, = t@geometric): looked up by pixel, real and formula.
-    std::vector<PixelTrace> others;
+    std::vector<PixelTrace> others{};
 };
 
 // The lesson's title, summary and setup (scene, pane, pixels).
