@@ -281,12 +281,12 @@ std::function<int()> setup_lesson(CLI::App& app) {
     add_w_option(*cmd, options->w)->description("Pane size: w × w pixels (default: the lesson's, usually 8)");
     add_lang_option(*cmd, options->lang);
     add_real_option(*cmd, options->real)
-        ->description("The type the lesson's numbers are computed in: float, double, long-double or quad "
+        ->description("The type the lesson's numbers are computed in: float, double, long-double or quad\n"
                       "(default: the lesson's real:, else double); a placeholder such as {delta@float} names another")
         ->default_str("");
     add_formula_option(*cmd, options->formula)
-        ->description("How the eye's rays meet a sphere: article, stable, fma or geometric "
-                      "(default: the lesson's formula:, else article); {t@geometric} names another")
+        ->description("How the eye's rays meet a sphere: article, stable, fma or geometric\n"
+                      "(default: the lesson's formula:, else article); {t_hit@geometric} names another")
         ->default_str("");
     cmd->add_option("--format", options->format, "text: for the terminal; markdown: with $…$ math and tables")
         ->check(CLI::IsMember({"text", "markdown"}))

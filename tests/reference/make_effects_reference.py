@@ -58,7 +58,6 @@ SCENE_FILES = [
     "phong.json",
     "colour.json",
     "everything.json",
-    "far_sphere.json",
 ]
 SIZES = {"floor.json": (16, 15), "floor_wall.json": (16, 15)}  # odd w: row 7 has y_E = 0, parallel to the floor
 DEFAULT_SIZES = (16,)
