@@ -55,7 +55,39 @@ struct LessonOptions {
     bool worksheet = false;
     bool key = false;
     std::string answers;
+    RealType real = RealType::double_;
+    Formula formula = Formula::article;
+    bool real_given = false, formula_given = false;
 };
+
+std::optional<RealType> real_type_named(const std::string& name) {
+    for (const RealType type : {RealType::float_, RealType::double_, RealType::long_double, RealType::quad_})
+        if (real_type_name(type) == name) return type;
+    return std::nullopt;
+}
+
+std::optional<Formula> formula_named(const std::string& name) {
+    for (const Formula formula : all_formulas)
+        if (formula_name(formula) == name) return formula;
+    return std::nullopt;
+}
+
+// The traces of the pixels in each other setting a qualifier names
+// ({delta@float}, delta@float = … in an answer file), added to view.others once a setting.
+void trace_settings(LessonView& view, const Scene& scene, const TraceHeader& header, const std::vector<std::string>& qualifiers) {
+    const TraceHeader& own = view.traces.front().header;
+    std::set<std::pair<std::string, std::string>> done;
+    for (const PixelTrace& other : view.others) done.emplace(other.header.real, other.header.formula);
+    for (const std::string& qualifier : qualifiers) {
+        const auto [real, formula] = resolve_settings(qualifier, own.real, own.formula);
+        if ((real == own.real && formula == own.formula) || !done.emplace(real, formula).second) continue;
+        const std::unique_ptr<Kernel> kernel = make_kernel(scene, *real_type_named(real), *formula_named(formula));
+        std::set<std::pair<int, int>> traced;
+        for (const PixelTrace& trace : view.traces)
+            if (traced.emplace(trace.header.i, trace.header.j).second)
+                view.others.push_back(kernel->trace(header, trace.header.i, trace.header.j));
+    }
+}
 
 // Flushed at once (step mode waits between steps); a failed write (a full
 // disk, a reader that quit) is an error here: once flushed, the failure
@@ -127,22 +159,29 @@ std::vector<std::string> lesson_names(const LessonLibrary& library, Language lan
 }
 
 // --answers FILE: the student's numbers against the traces; exit 1 when any is wrong.
-int run_answers(const LessonOptions& options, LessonView& view, const Kernel& kernel, const TraceHeader& header) {
+int run_answers(const LessonOptions& options, LessonView& view, const Kernel& kernel, const Scene& scene, const TraceHeader& header) {
     const std::string shown = options.answers == "-" ? "(stdin)" : options.answers;
     const LessonPixel first{view.traces.front().header.i, view.traces.front().header.j};
     const std::vector<PixelAnswers> answers = parse_answers(cli::read_input_file(options.answers, "--answers reads"), shown, view.vocabulary,
-                                                            view.lesson.language, first, view.w, header.scene_hash);
+                                                            view.lesson.language, first, view.w, header.scene_hash, true);
     // A heading may name a pixel the lesson did not choose: it is traced too.
     std::set<std::pair<int, int>> traced;
     for (const PixelTrace& trace : view.traces) traced.emplace(trace.header.i, trace.header.j);
     for (const PixelAnswers& pixel : answers)
         if (traced.emplace(pixel.pixel.i, pixel.pixel.j).second)
             view.traces.push_back(kernel.trace(header, pixel.pixel.i, pixel.pixel.j));
-    const std::vector<AnswerCheck> checks = check_answers(answers, view.traces);
+    // Every pixel in every setting the answers or the lesson name (delta@float = …).
+    std::vector<std::string> qualifiers;
+    for (const PixelAnswers& pixel : answers)
+        for (const Answer& answer : pixel.answers) qualifiers.push_back(split_settings(answer.key).second);
+    for (const SettingsUse& use : settings_used(view.lesson)) qualifiers.push_back(use.settings);
+    view.others.clear();
+    trace_settings(view, scene, header, qualifiers);
+    const std::vector<AnswerCheck> checks = check_answers(answers, view.traces, view.others);
     print(message(view.lesson.language, "answers_heading",
                   {{"file", shown}, {"lesson", view.lesson.header.name}, {"scene", view.scene_name}, {"w", std::to_string(view.w)},
                    {"pane", pane_phrase(view.w)}}) +
-          "\n\n" + answers_report(checks, view.traces, view.vocabulary, view.lesson.language));
+          "\n\n" + answers_report(checks, view.traces, view.vocabulary, view.lesson.language, view.others));
     return all_right(checks) ? 0 : 1;
 }
 
@@ -187,15 +226,28 @@ int run_lesson(const LessonOptions& options) {
         }
     }
 
-    LessonView view{lesson, builtin_vocabulary(), {}, scene.name, w};
+    LessonView view{lesson, builtin_vocabulary(), {}, scene.name, w, LessonFormat::text, false, {}, {}};
     view.format = options.format == "markdown" ? LessonFormat::markdown : LessonFormat::text;
     const char* no_color = std::getenv("NO_COLOR");
     view.color = view.format == LessonFormat::text && isatty(STDOUT_FILENO) == 1 && (no_color == nullptr || *no_color == '\0');
-    const std::unique_ptr<Kernel> kernel = make_kernel(scene);
+    // The numbers' type and formula: the command line's, else the lesson's header's (else double, article).
+    const RealType real = options.real_given ? options.real : real_type_named(lesson.header.real).value_or(RealType::double_);
+    const Formula formula =
+        options.formula_given ? options.formula : formula_named(lesson.header.formula).value_or(Formula::article);
+    // A qualifier that names no setting cannot be traced: the lesson is broken (exit 3, file and line).
+    std::vector<std::string> qualifiers;
+    for (const SettingsUse& use : settings_used(lesson)) {
+        if (!parse_settings(use.settings))
+            throw InputError(lesson.file, fmt::format("line {}", use.line),
+                             message(lesson.language, "error_unknown_setting", {{"key", use.qualified}, {"settings", use.settings}}));
+        qualifiers.push_back(use.settings);
+    }
+    const std::unique_ptr<Kernel> kernel = make_kernel(scene, real, formula);
     const TraceHeader header = trace_header(scene, w);
     view.traces.reserve(pixels.size());
     for (const LessonPixel& pixel : pixels) view.traces.push_back(kernel->trace(header, pixel.i, pixel.j));
-    if (!options.answers.empty()) return run_answers(options, view, *kernel, header);
+    trace_settings(view, scene, header, qualifiers);
+    if (!options.answers.empty()) return run_answers(options, view, *kernel, scene, header);
 
     // A worksheet shows blanks for the pixels' numbers and leaves the answers out (they are the teacher's).
     std::optional<Worksheet> worksheet;
@@ -228,6 +280,14 @@ std::function<int()> setup_lesson(CLI::App& app) {
     add_scene_option(*cmd, options->scene_file);
     add_w_option(*cmd, options->w)->description("Pane size: w × w pixels (default: the lesson's, usually 8)");
     add_lang_option(*cmd, options->lang);
+    add_real_option(*cmd, options->real)
+        ->description("The type the lesson's numbers are computed in: float, double, long-double or quad\n"
+                      "(default: the lesson's real:, else double); a placeholder such as {delta@float} names another")
+        ->default_str("");
+    add_formula_option(*cmd, options->formula)
+        ->description("How the eye's rays meet a sphere: article, stable, fma or geometric\n"
+                      "(default: the lesson's formula:, else article); {t_hit@geometric} names another")
+        ->default_str("");
     cmd->add_option("--format", options->format, "text: for the terminal; markdown: with $…$ math and tables")
         ->check(CLI::IsMember({"text", "markdown"}))
         ->option_text("text|markdown (default: text)");
@@ -255,9 +315,13 @@ std::function<int()> setup_lesson(CLI::App& app) {
         ->excludes(worksheet);
     cmd->footer("Examples: promyk lesson sphere --pixel 0,0 --pixel 3,4 --lang en\n"
                 "          promyk lesson sphere --worksheet --key > worksheet.txt\n"
-                "          promyk lesson sphere --pixel 3,4 --answers answers.txt");
+                "          promyk lesson sphere --pixel 3,4 --answers answers.txt\n"
+                "          promyk lesson sphere --real float --lang en     (the same lesson in float)\n"
+                "          promyk lesson precision --lang en");
     return [options, cmd] {
         options->w_given = cmd->get_option("--w")->count() > 0;
+        options->real_given = cmd->get_option("--real")->count() > 0;
+        options->formula_given = cmd->get_option("--formula")->count() > 0;
         return run_lesson(*options);
     };
 }

@@ -40,12 +40,11 @@ struct Rounded {
     std::optional<TypedNumber> other;  // the other neighbour, when the value is not exact at this scale
 };
 
-Rounded round_to(double value, int scale) {
-    const TypedNumber exact = exact_decimal(value);
+Rounded round_to(const TypedNumber& exact, int scale) {
     std::string digits = exact.digits;
     const int exact_scale = exact.scale;
     Rounded out;
-    out.nearest.negative = std::signbit(value);
+    out.nearest.negative = exact.negative;
     out.nearest.scale = scale;
     if (scale >= exact_scale) {
         out.nearest.digits = digits + std::string(static_cast<std::size_t>(scale - exact_scale), '0');
@@ -117,7 +116,11 @@ std::string keys_list(const Vocabulary& vocabulary) {
 // "P.x" -> ("P", 'x'), "sphere[1].t" -> ("sphere[1].t", 0): a path whose
 // groups can hold its key (lesson_check.hpp), a key of the vocabulary, a
 // component only of a point or vector.
-std::optional<std::pair<std::string, char>> split_key(const std::string& text, const Vocabulary& vocabulary) {
+std::optional<std::pair<std::string, char>> split_key(const std::string& qualified, const Vocabulary& vocabulary,
+                                                      bool settings_allowed) {
+    // A lesson's answers may name other settings: "delta@float", "P.x@quad,geometric".
+    const auto [text, settings] = split_settings(qualified);
+    if (qualified.find('@') != std::string::npos && (!settings_allowed || !parse_settings(settings))) return std::nullopt;
     std::string key = text;
     char component = 0;
     if (key.size() > 2 && key[key.size() - 2] == '.' && std::string_view("xyz").find(key.back()) != std::string_view::npos) {
@@ -127,7 +130,15 @@ std::optional<std::pair<std::string, char>> split_key(const std::string& text, c
     if (check_path(key, vocabulary).fault != PathFault::none) return std::nullopt;
     const VocabularyEntry* entry = vocabulary.find(path_key(key));
     if (entry == nullptr || (component != 0 && entry->kind != "point" && entry->kind != "vector")) return std::nullopt;
-    return std::make_pair(key, component);
+    return std::make_pair(qualified_path(key, 0, settings), component);
+}
+
+// The message for a key split_key refused: a bad settings qualifier, or an unknown key.
+std::string key_error(const std::string& key_text, const Vocabulary& vocabulary, Language language, bool settings_allowed) {
+    if (settings_allowed && key_text.find('@') != std::string::npos &&
+        !parse_settings(split_settings(key_text).second))
+        return message(language, "answers_error_settings", {{"key", key_text}});
+    return message(language, "answers_error_key", {{"key", key_text}, {"keys", keys_list(vocabulary)}});
 }
 
 // A word (what a test found, the nearest object) is shown filled in on a
@@ -161,7 +172,7 @@ std::optional<LessonPixel> parse_heading(const std::string& line) {
 }
 
 std::vector<PixelAnswers> parse_lines(std::string_view text, const std::string& file, const Vocabulary& vocabulary,
-                                      Language language, LessonPixel first, int w) {
+                                      Language language, LessonPixel first, int w, bool settings_allowed) {
     std::vector<PixelAnswers> sections;
     std::map<std::pair<int, int>, std::size_t> index;
     LessonPixel pixel = first;
@@ -189,10 +200,8 @@ std::vector<PixelAnswers> parse_lines(std::string_view text, const std::string& 
             continue;
         }
         const std::string key_text = trim(line.substr(0, equals));
-        const std::optional<std::pair<std::string, char>> key = split_key(key_text, vocabulary);
-        if (!key)
-            fail(file, language, line_number,
-                 message(language, "answers_error_key", {{"key", key_text}, {"keys", keys_list(vocabulary)}}));
+        const std::optional<std::pair<std::string, char>> key = split_key(key_text, vocabulary, settings_allowed);
+        if (!key) fail(file, language, line_number, key_error(key_text, vocabulary, language, settings_allowed));
         if (is_word(key->first, vocabulary))
             fail(file, language, line_number, message(language, "answers_error_word", {{"key", key_text}}));
         Answer answer;
@@ -342,8 +351,8 @@ AnswerFile parse_json(std::string_view text, const std::string& file, const Voca
     std::optional<TraceSummary> summary;
     const auto add = [&](const std::string& key_text, const json& value, const std::string& pointer,
                          const json& real_text = json()) {
-        const std::optional<std::pair<std::string, char>> key = split_key(key_text, vocabulary);
-        if (!key) fail_at(file, pointer, message(language, "answers_error_key", {{"key", key_text}, {"keys", keys_list(vocabulary)}}));
+        const std::optional<std::pair<std::string, char>> key = split_key(key_text, vocabulary, limits.settings);
+        if (!key) fail_at(file, pointer, key_error(key_text, vocabulary, language, limits.settings));
         if (is_word(key->first, vocabulary)) fail_at(file, pointer, message(language, "answers_error_word", {{"key", key_text}}));
         const std::optional<std::vector<TypedNumber>> numbers = json_value(value);
         if (!numbers) fail_at(file, pointer, message(language, "answers_error_number", {{"text", json_text_of(value)}}));
@@ -450,12 +459,10 @@ AnswerFile parse_json(std::string_view text, const std::string& file, const Voca
 
 std::string symbol_of(const Vocabulary& vocabulary, const Answer& answer, Language language) {
     const VocabularyEntry* entry = vocabulary.find(path_key(answer.key));
-    std::string symbol = entry ? optional_message(language, "symbol_" + entry->key).value_or(entry->symbol) : answer.key;
-    std::string key = answer.key;
-    if (answer.component != 0) {
-        symbol += std::string(".") + answer.component;
-        key += std::string(".") + answer.component;
-    }
+    const auto [path, settings] = split_settings(answer.key);
+    std::string symbol = entry ? optional_message(language, "symbol_" + entry->key).value_or(entry->symbol) : path;
+    if (answer.component != 0) symbol += std::string(".") + answer.component;
+    const std::string key = qualified_path(path, answer.component, settings);
     return symbol == key ? symbol : symbol + " (" + key + ")";
 }
 
@@ -537,7 +544,7 @@ std::optional<TypedNumber> parse_typed_number(std::string_view text) {
     return number;
 }
 
-TypedNumber round_exactly(double value, int scale) { return round_to(value, scale).nearest; }
+TypedNumber round_exactly(double value, int scale) { return round_to(exact_decimal(value), scale).nearest; }
 
 std::string typed_number_text(const TypedNumber& number, Language language) {
     std::string digits = strip_zeros(number.digits);
@@ -558,6 +565,10 @@ Verdict compare_number(double reference, const TypedNumber& typed, TypedNumber& 
         expected = TypedNumber{};
         return Verdict::wrong;
     }
+    return compare_number(exact_decimal(reference), typed, expected);
+}
+
+Verdict compare_number(const TypedNumber& reference, const TypedNumber& typed, TypedNumber& expected) {
     const Rounded rounded = round_to(reference, typed.scale);
     expected = rounded.nearest;
     if (same_number(typed, rounded.nearest)) return Verdict::right;
@@ -571,7 +582,7 @@ AnswerFile read_answers(std::string_view text, const std::string& file, const Vo
     const std::size_t start = text.find_first_not_of(" \t\r\n");
     AnswerFile answers = start != std::string_view::npos && text[start] == '{'
                              ? parse_json(text, file, vocabulary, language, first, limits)
-                             : AnswerFile{parse_lines(text, file, vocabulary, language, first, limits.w), std::nullopt};
+                             : AnswerFile{parse_lines(text, file, vocabulary, language, first, limits.w, limits.settings), std::nullopt};
     const bool any = std::any_of(answers.pixels.begin(), answers.pixels.end(), [](const PixelAnswers& pixel) {
         return std::any_of(pixel.answers.begin(), pixel.answers.end(), [](const Answer& a) { return !a.numbers.empty(); });
     });
@@ -580,11 +591,13 @@ AnswerFile read_answers(std::string_view text, const std::string& file, const Vo
 }
 
 std::vector<PixelAnswers> parse_answers(std::string_view text, const std::string& file, const Vocabulary& vocabulary,
-                                        Language language, LessonPixel first, int w, const std::string& scene_hash) {
-    return read_answers(text, file, vocabulary, language, first, AnswerLimits{w, scene_hash}).pixels;
+                                        Language language, LessonPixel first, int w, const std::string& scene_hash,
+                                        bool settings) {
+    return read_answers(text, file, vocabulary, language, first, AnswerLimits{w, scene_hash, settings}).pixels;
 }
 
-std::vector<AnswerCheck> check_answers(const std::vector<PixelAnswers>& answers, const std::vector<PixelTrace>& traces) {
+std::vector<AnswerCheck> check_answers(const std::vector<PixelAnswers>& answers, const std::vector<PixelTrace>& traces,
+                                       const std::vector<PixelTrace>& others) {
     const Vocabulary& vocabulary = builtin_vocabulary();
     std::vector<AnswerCheck> checks;
     const TraceIndex trace_of(traces);
@@ -597,7 +610,8 @@ std::vector<AnswerCheck> check_answers(const std::vector<PixelAnswers>& answers,
         for (const auto& [rank, answer_of] : sorted) {
             const Answer& answer = *answer_of;
             AnswerCheck check{pixel.pixel, answer, Verdict::right, {}};
-            const std::optional<StepValue> value = lesson_value(*trace, answer.key);
+            const std::optional<LessonNumber> number = lesson_number(*trace, answer.key, others);
+            const std::optional<StepValue> value = number ? std::optional<StepValue>(number->value) : std::nullopt;
             // Three numbers for a point, a vector or a colour; one for a number or a component.
             const bool vector_key = value && std::holds_alternative<Vec3d>(*value);
             const std::size_t wanted = vector_key && answer.component == 0 ? 3 : 1;
@@ -608,19 +622,28 @@ std::vector<AnswerCheck> check_answers(const std::vector<PixelAnswers>& answers,
             } else if (answer.numbers.size() != wanted || (answer.component != 0 && !vector_key)) {
                 check.verdict = Verdict::wrong_shape;
             } else {
-                std::vector<double> reference;
-                if (const Vec3d* v = std::get_if<Vec3d>(&*value)) {
-                    if (answer.component == 0)
-                        reference = {v->x, v->y, v->z};
-                    else
-                        reference = {answer.component == 'x' ? v->x : answer.component == 'y' ? v->y : v->z};
-                } else {
-                    reference = {std::get<double>(*value)};
-                }
+                // Each number's exact value in the trace's own type: a double's
+                // binary value, or a float's, long double's or quad's read back
+                // from its exact text.
+                std::vector<LessonNumber> reference;
+                if (vector_key && answer.component == 0)
+                    reference = {component_of(*number, 'x'), component_of(*number, 'y'), component_of(*number, 'z')};
+                else
+                    reference = {component_of(*number, answer.component)};
                 bool any_wrong = false, any_wrong_way = false;
                 for (std::size_t k = 0; k < reference.size(); ++k) {
                     TypedNumber expected;
-                    const Verdict verdict = compare_number(reference[k], answer.numbers[k], expected);
+                    const double approximate = std::get<double>(reference[k].value);
+                    std::optional<TypedNumber> exact;
+                    if (!reference[k].real_text.empty() && std::isfinite(approximate)) {
+                        const std::string& real = reference[k].real;
+                        const RealType type = real == "float" ? RealType::float_
+                                              : real == "long-double" ? RealType::long_double
+                                              : real == "quad" ? RealType::quad_ : RealType::double_;
+                        exact = exact_value_of(reference[k].real_text.front(), type);
+                    }
+                    const Verdict verdict = exact ? compare_number(*exact, answer.numbers[k], expected)
+                                                  : compare_number(approximate, answer.numbers[k], expected);
                     any_wrong = any_wrong || verdict == Verdict::wrong;
                     any_wrong_way = any_wrong_way || verdict == Verdict::wrong_way;
                     check.expected.push_back(expected);
@@ -639,7 +662,7 @@ bool all_right(const std::vector<AnswerCheck>& checks) {
 }
 
 std::string answers_report(const std::vector<AnswerCheck>& checks, const std::vector<PixelTrace>& traces,
-                           const Vocabulary& vocabulary, Language language) {
+                           const Vocabulary& vocabulary, Language language, const std::vector<PixelTrace>& others) {
     std::string out;
     int right = 0, wrong = 0, blank = 0;
     std::optional<LessonPixel> current;
@@ -656,7 +679,9 @@ std::string answers_report(const std::vector<AnswerCheck>& checks, const std::ve
                             {"branch", branch ? (language == Language::pl ? branch->pl : branch->en) : std::string(branch_name(trace->branch))}}) +
                    "\n";
         }
-        const std::string kind = kind_of(vocabulary, check.answer, lesson_value(*trace, check.answer.key));
+        const std::optional<LessonNumber> number = lesson_number(*trace, check.answer.key, others);
+        const std::string kind =
+            kind_of(vocabulary, check.answer, number ? std::optional<StepValue>(number->value) : std::nullopt);
         MessageArgs args = {{"symbol", symbol_of(vocabulary, check.answer, language)}, {"typed", check.answer.text}, {"pixel", pixel}};
         std::string id;
         switch (check.verdict) {
@@ -680,16 +705,12 @@ std::string answers_report(const std::vector<AnswerCheck>& checks, const std::ve
             case Verdict::wrong_way: {
                 id = check.verdict == Verdict::wrong ? "answers_wrong" : "answers_wrong_way";
                 ++wrong;
-                const std::optional<StepValue> value = lesson_value(*trace, check.answer.key);
-                StepValue exact = *value;
-                if (check.answer.component != 0) {
-                    const Vec3d& v = std::get<Vec3d>(*value);
-                    exact = check.answer.component == 'x' ? v.x : check.answer.component == 'y' ? v.y : v.z;
-                }
+                const LessonNumber exact = component_of(*number, check.answer.component);
                 const bool finite = std::all_of(check.expected.begin(), check.expected.end(),
                                                 [](const TypedNumber& n) { return !n.digits.empty(); });
-                args.emplace_back("expected", finite ? numbers_text(check.expected, kind, language) : value_text(exact, kind, language));
-                args.emplace_back("exact", value_text(exact, kind, language));
+                const std::string exact_text = lesson_number_text(exact, kind, language);
+                args.emplace_back("expected", finite ? numbers_text(check.expected, kind, language) : exact_text);
+                args.emplace_back("exact", exact_text);
                 break;
             }
         }

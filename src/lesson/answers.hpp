@@ -43,6 +43,8 @@ enum class Verdict {
 // `typed` against the exact value: right, wrong_way or wrong; `expected` is
 // the value at the student's precision.
 Verdict compare_number(double reference, const TypedNumber& typed, TypedNumber& expected);
+// The same against an exact value (a float's, long double's or quad's).
+Verdict compare_number(const TypedNumber& reference, const TypedNumber& typed, TypedNumber& expected);
 
 struct Answer {
     int line = 0;        // 0 in JSON
@@ -88,6 +90,9 @@ struct AnswerLimits {
     int w = 0;
     // Not empty: a whole trace of another scene (its "scene_hash" differs) is refused.
     std::string scene_hash;
+    // A lesson's answers may qualify a key with other settings ("delta@float",
+    // lesson.hpp); `promyk diff`'s may not.
+    bool settings = false;
 };
 
 // Reads an answer file: `key = value` lines, a flat JSON object or a whole
@@ -100,7 +105,8 @@ AnswerFile read_answers(std::string_view text, const std::string& file, const Vo
 // Reads an answer file for a lesson: read_answers in its w × w pane;
 // `scene_hash`, when not empty, is the lesson's scene's.
 std::vector<PixelAnswers> parse_answers(std::string_view text, const std::string& file, const Vocabulary& vocabulary,
-                                        Language language, LessonPixel first, int w, const std::string& scene_hash = "");
+                                        Language language, LessonPixel first, int w, const std::string& scene_hash = "",
+                                        bool settings = false);
 
 struct AnswerCheck {
     LessonPixel pixel;
@@ -111,11 +117,14 @@ struct AnswerCheck {
 
 // Checks each answer against the trace of its pixel (`traces` must hold one
 // for every pixel the answers name), in derivation order within each pixel.
-std::vector<AnswerCheck> check_answers(const std::vector<PixelAnswers>& answers, const std::vector<PixelTrace>& traces);
+// An answer's key may name other settings ("delta@float"): `others` holds
+// the traces of the pixels in those settings (lesson_render.hpp: lesson_number).
+std::vector<AnswerCheck> check_answers(const std::vector<PixelAnswers>& answers, const std::vector<PixelTrace>& traces,
+                                       const std::vector<PixelTrace>& others = {});
 
 // The report, step by step, in `language`; ends with a count.
 std::string answers_report(const std::vector<AnswerCheck>& checks, const std::vector<PixelTrace>& traces,
-                           const Vocabulary& vocabulary, Language language);
+                           const Vocabulary& vocabulary, Language language, const std::vector<PixelTrace>& others = {});
 
 // True when nothing checked is wrong (blank answers do not count).
 bool all_right(const std::vector<AnswerCheck>& checks);

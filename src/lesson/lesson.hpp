@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "trace/number_text.hpp"
@@ -22,6 +23,10 @@ struct LessonHeader {
     int w = 8;
     std::vector<LessonPixel> pixels = {{0, 0}, {5, 1}, {3, 4}};
     std::string columns = "double/article";
+    // The numbers' real type and formula (--real, --formula): the names
+    // real_type_name and formula_name give them.
+    std::string real = "double";
+    std::string formula = "article";
     int name_line = 1;   // the line of "name:", for messages about the name
     int scene_line = 1;  // the line of "scene:", for messages about the scene
 };
@@ -95,10 +100,33 @@ struct Placeholder {
     std::string name;                // the key, or i, j, w, branch
     std::string path;                // the groups and the key ("sphere[1].t"); the name when there are no groups
     char component = 0;              // 'x', 'y', 'z' or 0
+    std::string settings;            // "@float,geometric" without the @; empty: the lesson's
     int decimals = -1;               // -1: the shortest round-trip text
     bool symbol = false;             // {symbol:key}
     bool valid = true;               // false: malformed (text kept in `name`)
 };
+
+// The path with its component and settings qualifier, as lessons, worksheets
+// and answer files write it: "P.x@float", "delta@float,geometric", "t".
+std::string qualified_path(const Placeholder& placeholder);
+std::string qualified_path(const std::string& path, char component, const std::string& settings);
+
+// A settings qualifier ("float", "geometric", "float,geometric"): a real type
+// and/or a formula, each at most once, either order.
+struct SettingsQualifier {
+    std::string real;     // empty: the lesson's
+    std::string formula;  // empty: the lesson's
+};
+
+// Nothing when an item is not a real type or formula name, or names two of a kind.
+std::optional<SettingsQualifier> parse_settings(std::string_view text);
+
+// "delta@float" -> {"delta", "float"}; "P.x@quad" -> {"P.x", "quad"}; "t" -> {"t", ""}.
+std::pair<std::string, std::string> split_settings(const std::string& qualified);
+
+// The real types' and formulas' names, as --real and --formula take them.
+bool is_real_name(std::string_view name);
+bool is_formula_name(std::string_view name);
 
 // The placeholders of a text, in order. "{{" and "}}" stand for literal
 // braces, and a brace right after a letter, '\', '^', '_' or '}' is LaTeX's

@@ -121,10 +121,20 @@ void check_lesson(const Lesson& lesson, const Vocabulary& vocabulary, std::vecto
         }
         return false;
     };
+    // A settings qualifier (after @) names a real type and/or a formula, each once.
+    const auto settings_ok = [&](const std::string& qualified, const std::string& settings, int line) {
+        if (settings.empty() && qualified.find('@') == std::string::npos) return true;
+        if (parse_settings(settings)) return true;
+        problem(line, "error_unknown_setting", {{"key", qualified}, {"settings", settings}});
+        return false;
+    };
     for (const LessonStep& step : lesson.steps) {
         for (const LessonPart& part : step.parts) {
             if (part.kind == PartKind::values) {
-                for (const std::string& key : part.keys) path_ok(key, part.line);
+                for (const std::string& key : part.keys) {
+                    const auto [bare, settings] = split_settings(key);
+                    if (settings_ok(key, settings, part.line)) path_ok(bare, part.line);
+                }
                 continue;
             }
             for (const std::string& branch : part.branches)
@@ -143,12 +153,40 @@ void check_lesson(const Lesson& lesson, const Vocabulary& vocabulary, std::vecto
                 }
                 // {i}, {j}, {w}, {branch} are no keys; anything else is a path to check.
                 const bool special = placeholder.path == placeholder.name && is_special(placeholder.name);
+                if (special && !placeholder.settings.empty()) {
+                    problem(line, "error_bad_placeholder", {{"text", std::string(part.text.substr(placeholder.begin, placeholder.end - placeholder.begin))}});
+                    continue;
+                }
+                if (!settings_ok(qualified_path(placeholder), placeholder.settings, line)) continue;
                 if (!special && !path_ok(placeholder.path, line)) continue;
                 if (part.kind == PartKind::prose && !placeholder.symbol && depends_on_pixel(placeholder.path, vocabulary))
                     problem(line, "error_pixel_outside_block", {{"key", placeholder.path}});
             }
         }
     }
+}
+
+std::vector<SettingsUse> settings_used(const Lesson& lesson) {
+    std::vector<SettingsUse> out;
+    for (const LessonStep& step : lesson.steps) {
+        for (const LessonPart& part : step.parts) {
+            if (part.kind == PartKind::values) {
+                for (const std::string& key : part.keys)
+                    if (key.find('@') != std::string::npos) out.push_back({split_settings(key).second, key, part.line});
+                continue;
+            }
+            int line = part.text_line;
+            std::size_t counted = 0;
+            for (const Placeholder& placeholder : find_placeholders(part.text)) {
+                line += static_cast<int>(std::count(part.text.begin() + static_cast<long>(counted),
+                                                    part.text.begin() + static_cast<long>(placeholder.begin), '\n'));
+                counted = placeholder.begin;
+                if (placeholder.valid && !placeholder.settings.empty())
+                    out.push_back({placeholder.settings, qualified_path(placeholder), line});
+            }
+        }
+    }
+    return out;
 }
 
 void check_translations(const std::vector<Lesson>& lessons, std::vector<LessonProblem>& problems) {

@@ -39,6 +39,16 @@ PathCheck check_path(const std::string& path, const Vocabulary& vocabulary, cons
 void check_lesson(const Lesson& lesson, const Vocabulary& vocabulary, std::vector<LessonProblem>& problems,
                   const Scene* scene = nullptr);
 
+// A settings qualifier a lesson names ("float", "float,geometric"), where.
+struct SettingsUse {
+    std::string settings;
+    std::string qualified;  // the path as written, "delta@float"
+    int line = 0;
+};
+
+// Every settings qualifier in the lesson's value tables and placeholders, in order.
+std::vector<SettingsUse> settings_used(const Lesson& lesson);
+
 // Every lesson exists in every language, with the same steps in the same order.
 void check_translations(const std::vector<Lesson>& lessons, std::vector<LessonProblem>& problems);
 

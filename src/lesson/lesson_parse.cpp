@@ -14,7 +14,7 @@ namespace promyk {
 
 namespace {
 
-const std::vector<std::string_view> header_fields = {"name", "title", "summary", "scene", "w", "pixels", "columns"};
+const std::vector<std::string_view> header_fields = {"name", "title", "summary", "scene", "w", "pixels", "columns", "real", "formula"};
 
 std::vector<std::string> split_lines(std::string_view text) {
     if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // a UTF-8 byte order mark
@@ -167,7 +167,7 @@ private:
             problem(1, "error_header_missing");
             return 0;
         }
-        bool seen[7] = {};
+        bool seen[9] = {};
         std::size_t k = 1;
         for (; k < lines.size(); ++k) {
             const std::string line = trim(lines[k]);
@@ -237,6 +237,14 @@ private:
                 problem(line, "error_header_value",
                         {{"field", field}, {"problem", "REAL/FORMULA …, e.g. double/article float/article"}});
             header.columns = value;
+        } else if (field == "real") {
+            if (!is_real_name(value))
+                problem(line, "error_header_value", {{"field", field}, {"problem", "float, double, long-double, quad"}});
+            header.real = value;
+        } else if (field == "formula") {
+            if (!is_formula_name(value))
+                problem(line, "error_header_value", {{"field", field}, {"problem", "article, stable, fma, geometric"}});
+            header.formula = value;
         }
     }
 
@@ -383,14 +391,59 @@ std::optional<ValuePath> parse_value_path(std::string_view text) {
     }
 }
 
-std::string path_key(const std::string& path) {
+std::string path_key(const std::string& qualified) {
+    const std::string path = split_settings(qualified).first;
     const std::size_t group_end = path.rfind("].");
     return group_end == std::string::npos ? path : path.substr(group_end + 2);
 }
 
+bool is_real_name(std::string_view name) {
+    return name == "float" || name == "double" || name == "long-double" || name == "quad";
+}
+
+bool is_formula_name(std::string_view name) {
+    return name == "article" || name == "stable" || name == "fma" || name == "geometric";
+}
+
+std::optional<SettingsQualifier> parse_settings(std::string_view text) {
+    SettingsQualifier settings;
+    if (text.empty()) return std::nullopt;
+    std::size_t at = 0;
+    while (true) {
+        const std::size_t comma = text.find(',', at);
+        const std::string item(text.substr(at, comma == std::string_view::npos ? std::string_view::npos : comma - at));
+        if (is_real_name(item) && settings.real.empty()) {
+            settings.real = item;
+        } else if (is_formula_name(item) && settings.formula.empty()) {
+            settings.formula = item;
+        } else {
+            return std::nullopt;
+        }
+        if (comma == std::string_view::npos) return settings;
+        at = comma + 1;
+    }
+}
+
+std::pair<std::string, std::string> split_settings(const std::string& qualified) {
+    const std::size_t at = qualified.find('@');
+    if (at == std::string::npos) return {qualified, ""};
+    return {qualified.substr(0, at), qualified.substr(at + 1)};
+}
+
+std::string qualified_path(const std::string& path, char component, const std::string& settings) {
+    std::string out = path;
+    if (component != 0) out += std::string(".") + component;
+    if (!settings.empty()) out += "@" + settings;
+    return out;
+}
+
+std::string qualified_path(const Placeholder& placeholder) {
+    return qualified_path(placeholder.path, 0, placeholder.settings);
+}
+
 std::vector<Placeholder> find_placeholders(std::string_view text) {
     static const std::regex form(
-        R"((symbol:)?((?:[A-Za-z_]+\[[0-9]{1,6}\]\.)*([A-Za-z_][A-Za-z0-9_]*))(?:\.([xyz]))?(?::([0-9]|1[0-7]))?)");
+        R"((symbol:)?((?:[A-Za-z_]+\[[0-9]{1,6}\]\.)*([A-Za-z_][A-Za-z0-9_]*))(?:\.([xyz]))?(?:@([a-z-]+(?:,[a-z-]+)?))?(?::([0-9]|1[0-7]))?)");
     std::vector<Placeholder> found;
     for (std::size_t k = 0; k < text.size(); ++k) {
         if (text[k] != '{') continue;
@@ -408,7 +461,7 @@ std::vector<Placeholder> find_placeholders(std::string_view text) {
         // A key is a few letters: a longer "placeholder" is never matched
         // (std::regex recurses once a character and would overflow the stack).
         if (close == std::string_view::npos || inside.size() > 64 || !std::regex_match(inside, match, form) ||
-            (match[1].matched && (match[4].matched || match[5].matched))) {
+            (match[1].matched && (match[4].matched || match[5].matched || match[6].matched))) {
             placeholder.valid = false;
             placeholder.name = std::string(text.substr(k, placeholder.end - k));
             placeholder.path = placeholder.name;
@@ -417,7 +470,8 @@ std::vector<Placeholder> find_placeholders(std::string_view text) {
             placeholder.path = match[2];
             placeholder.name = match[3];
             if (match[4].matched) placeholder.component = match[4].str()[0];
-            if (match[5].matched) placeholder.decimals = std::stoi(match[5].str());
+            if (match[5].matched) placeholder.settings = match[5];
+            if (match[6].matched) placeholder.decimals = std::stoi(match[6].str());
         }
         found.push_back(placeholder);
         k = placeholder.end - 1;

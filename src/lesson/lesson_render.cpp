@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "math/decimal.hpp"
 #include "trace/messages.hpp"
 #include "trace/keys.hpp"
 #include "trace/trace_text.hpp"
@@ -50,7 +51,7 @@ std::string lesson_symbol(Language language, const VocabularyEntry& entry) {
 // not the sphere's root) or for the key in the lesson's language ("formula_KEY");
 // "…_latex" for Markdown.
 std::string lesson_formula(Language language, const std::string& path, const VocabularyEntry& entry, bool latex) {
-    const std::optional<ValuePath> parsed = parse_value_path(path);
+    const std::optional<ValuePath> parsed = parse_value_path(split_settings(path).first);
     const std::string suffix = latex ? "_latex" : "";
     if (parsed && !parsed->groups.empty())
         if (auto own = optional_message(language, "formula_" + parsed->groups.back().kind + "_" + entry.key + suffix)) return *own;
@@ -88,18 +89,18 @@ std::string fill(const LessonView& view, const std::string& text, const PixelTra
         } else {
             // Prose may name only the scene's values, the same in every trace.
             const PixelTrace& source = trace != nullptr ? *trace : view.traces.front();
-            const std::optional<StepValue> value = lesson_value(source, p.path);
+            const std::string qualified = qualified_path(p);
+            const std::optional<LessonNumber> number = lesson_number(view, source, qualified);
             std::optional<std::string> shown;
-            if (value && trace != nullptr && view.shown_value) shown = view.shown_value(*trace, p.path, p.component);
-            if (!value) {
+            if (number && trace != nullptr && view.shown_value) shown = view.shown_value(*trace, qualified, p.component);
+            if (!number) {
                 out += message(language, "not_reached");
             } else if (shown) {
                 out += *shown;
-            } else if (p.component != 0 && std::holds_alternative<Vec3d>(*value)) {
-                const Vec3d& v = std::get<Vec3d>(*value);
-                out += number_text(p.component == 'x' ? v.x : p.component == 'y' ? v.y : v.z, language, p.decimals);
+            } else if (p.component != 0 && std::holds_alternative<Vec3d>(number->value)) {
+                out += lesson_number_text(component_of(*number, p.component), "scalar", language, p.decimals);
             } else {
-                out += value_text(*value, shown_kind(view.vocabulary, p.path, *value), language, p.decimals);
+                out += lesson_number_text(*number, shown_kind(view.vocabulary, p.path, number->value), language, p.decimals);
             }
         }
     }
@@ -108,10 +109,10 @@ std::string fill(const LessonView& view, const std::string& text, const PixelTra
 }
 
 // A value table's cell: the value, or what a worksheet shows in its place.
-std::string cell_text(const LessonView& view, const PixelTrace& trace, const std::string& key, const StepValue& value) {
+std::string cell_text(const LessonView& view, const PixelTrace& trace, const std::string& key, const LessonNumber& number) {
     if (view.shown_value)
         if (std::optional<std::string> shown = view.shown_value(trace, key, 0)) return *shown;
-    return value_text(value, shown_kind(view.vocabulary, key, value), view.lesson.language);
+    return lesson_number_text(number, shown_kind(view.vocabulary, key, number.value), view.lesson.language);
 }
 
 std::string pixel_label(const LessonView& view, const PixelTrace& trace) {
@@ -119,15 +120,21 @@ std::string pixel_label(const LessonView& view, const PixelTrace& trace) {
                    {{"i", std::to_string(trace.header.i)}, {"j", std::to_string(trace.header.j)}});
 }
 
-// A table row's groups, in the lesson's language: " (light 0, sphere 1)",
-// or nothing for a top-level key.
-std::string group_suffix(const LessonView& view, const std::string& key) {
-    const std::optional<ValuePath> path = parse_value_path(key);
-    if (!path || path->groups.empty()) return "";
+// A table row's groups and settings, in the lesson's language:
+// " (light 0, sphere 1)", " (float)", " (sphere 0; quad, geometric)", or
+// nothing for a top-level key in the lesson's settings.
+std::string group_suffix(const LessonView& view, const std::string& qualified) {
+    const auto [bare, settings] = split_settings(qualified);
+    const std::optional<ValuePath> path = parse_value_path(bare);
     std::string out;
-    for (const PathGroup& group : path->groups)
-        out += (out.empty() ? "" : ", ") + group_text(view.lesson.language, group.kind, group.index);
-    return " (" + out + ")";
+    if (path)
+        for (const PathGroup& group : path->groups)
+            out += (out.empty() ? "" : ", ") + group_text(view.lesson.language, group.kind, group.index);
+    std::string named = settings;
+    for (std::size_t comma = named.find(','); comma != std::string::npos; comma = named.find(',', comma + 2))
+        named.replace(comma, 1, ", ");
+    if (!named.empty()) out += (out.empty() ? "" : "; ") + named;
+    return out.empty() ? "" : " (" + out + ")";
 }
 
 bool shown_for(const LessonPart& part, const PixelTrace& trace) {
@@ -245,9 +252,9 @@ std::string text_values(const LessonView& view, const LessonPart& part) {
         out += "  " + symbol + (formula.empty() ? "" : " = " + formula) + "\n";
         std::vector<std::string> cells;
         for (const PixelTrace& trace : view.traces) {
-            const std::optional<StepValue> value = lesson_value(trace, key);
+            const std::optional<LessonNumber> number = lesson_number(view, trace, key);
             cells.push_back(fmt::format("({}, {}): {}", trace.header.i, trace.header.j,
-                                        value ? cell_text(view, trace, key, *value) : message(language, "not_reached")));
+                                        number ? cell_text(view, trace, key, *number) : message(language, "not_reached")));
         }
         std::size_t total = 4;
         for (const std::string& cell : cells) total += display_width(cell) + 4;
@@ -294,7 +301,7 @@ std::string markdown_values(const LessonView& view, const LessonPart& part) {
     out += "\n";
     for (const std::string& key : part.keys) {
         const VocabularyEntry* entry = view.vocabulary.find(path_key(key));
-        std::string math = key;
+        std::string math = split_settings(key).first;
         if (entry != nullptr) {
             math = lesson_formula(language, key, *entry, true);
             if (math.empty()) math = entry->latex;
@@ -304,8 +311,8 @@ std::string markdown_values(const LessonView& view, const LessonPart& part) {
             math.replace(bar, 1, "\\vert ");
         out += "| $" + math + "$" + group_suffix(view, key) + " |";
         for (const PixelTrace& trace : view.traces) {
-            const std::optional<StepValue> value = lesson_value(trace, key);
-            out += " " + (value ? cell_text(view, trace, key, *value) : message(language, "not_reached")) + " |";
+            const std::optional<LessonNumber> number = lesson_number(view, trace, key);
+            out += " " + (number ? cell_text(view, trace, key, *number) : message(language, "not_reached")) + " |";
         }
         out += "\n";
     }
@@ -407,8 +414,8 @@ std::optional<StepValue> lesson_value(const PixelTrace& trace, const std::string
     return std::nullopt;
 }
 
-bool is_scene_value(const std::string& key) {
-    const std::optional<ValuePath> path = parse_value_path(key);
+bool is_scene_value(const std::string& qualified) {
+    const std::optional<ValuePath> path = parse_value_path(split_settings(qualified).first);
     if (!path) return false;
     if (path->groups.empty()) {
         const VocabularyEntry* entry = builtin_vocabulary().find(path->key);
@@ -434,7 +441,7 @@ std::size_t derivation_rank(const PixelTrace& trace, const Vocabulary& vocabular
     const std::size_t own = vocabulary_index(bare);
     const VocabularyEntry* entry = vocabulary.find(bare);
     if (entry != nullptr && entry->given) return own;
-    const std::optional<ValuePath> path = parse_value_path(key);
+    const std::optional<ValuePath> path = parse_value_path(split_settings(key).first);
     std::size_t after = 0;  // 1 + the last step whose key comes no later in the vocabulary
     for (std::size_t k = 0; k < trace.steps.size(); ++k) {
         const Step& step = trace.steps[k];
@@ -455,6 +462,129 @@ std::size_t derivation_rank(const PixelTrace& trace, const Vocabulary& vocabular
     return keys + 2 * after + 1;
 }
 
+std::pair<std::string, std::string> resolve_settings(const std::string& settings, const std::string& real,
+                                                     const std::string& formula) {
+    const std::optional<SettingsQualifier> parsed = parse_settings(settings);
+    if (!parsed) return {real, formula};
+    return {parsed->real.empty() ? real : parsed->real, parsed->formula.empty() ? formula : parsed->formula};
+}
+
+const PixelTrace* settings_trace(const PixelTrace& trace, const std::string& settings, const std::vector<PixelTrace>& others) {
+    if (settings.empty()) return &trace;
+    if (!parse_settings(settings)) return nullptr;
+    const auto [real, formula] = resolve_settings(settings, trace.header.real, trace.header.formula);
+    if (real == trace.header.real && formula == trace.header.formula) return &trace;
+    for (const PixelTrace& other : others)
+        if (other.header.i == trace.header.i && other.header.j == trace.header.j && other.header.real == real &&
+            other.header.formula == formula)
+            return &other;
+    return nullptr;
+}
+
+std::optional<LessonNumber> lesson_number(const PixelTrace& trace, const std::string& qualified,
+                                          const std::vector<PixelTrace>& others) {
+    const auto [path, settings] = split_settings(qualified);
+    const PixelTrace* source = settings_trace(trace, settings, others);
+    if (source == nullptr) return std::nullopt;
+    const std::optional<StepValue> value = lesson_value(*source, path);
+    if (!value) return std::nullopt;
+    LessonNumber number{*value, {}, source->header.real};
+    // The step's exact text in its own type, when the trace is not in double.
+    const std::optional<ValuePath> parsed = parse_value_path(path);
+    if (parsed && source->header.real != "double") {
+        if (parsed->groups.empty() && parsed->key == "I_P") {
+            number.real_text = source->result_real_text;
+        } else {
+            int group = -1;
+            bool found_groups = true;
+            for (const PathGroup& wanted : parsed->groups) {
+                int found = -1;
+                for (std::size_t g = 0; g < source->groups.size() && found < 0; ++g) {
+                    const TraceGroup& candidate = source->groups[g];
+                    if (candidate.parent == group && candidate.kind == wanted.kind && candidate.index == wanted.index)
+                        found = static_cast<int>(g);
+                }
+                if (found < 0) found_groups = false;
+                group = found;
+            }
+            if (found_groups)
+                for (const Step& step : source->steps)
+                    if (step.group == group && key_name(step.key) == parsed->key) {
+                        number.real_text = step.real_text;
+                        break;
+                    }
+        }
+    }
+    return number;
+}
+
+std::optional<LessonNumber> lesson_number(const LessonView& view, const PixelTrace& trace, const std::string& qualified) {
+    return lesson_number(trace, qualified, view.others);
+}
+
+LessonNumber component_of(const LessonNumber& number, char component) {
+    const Vec3d* v = std::get_if<Vec3d>(&number.value);
+    if (component == 0 || v == nullptr) return number;
+    const std::size_t k = static_cast<std::size_t>(component - 'x');
+    LessonNumber out{k == 0 ? v->x : k == 1 ? v->y : v->z, {}, number.real};
+    if (number.real_text.size() == 3) out.real_text = {number.real_text[k]};
+    return out;
+}
+
+namespace {
+
+// A real type's exact value, given as its shortest text, rounded to
+// `decimals` digits after the point as fmt rounds a double's exact value
+// (to nearest, ties to even), written the language's way.
+std::string rounded_real_text(const std::string& text, const std::string& real, Language language, int decimals) {
+    const RealType type = real == "float" ? RealType::float_ : real == "long-double" ? RealType::long_double : RealType::quad_;
+    const std::optional<TypedNumber> exact = exact_value_of(text, type);
+    if (!exact) return local_number_text(text, language);  // inf, nan
+    std::string digits = exact->digits;
+    int scale = exact->scale;
+    if (scale < decimals) {
+        digits += std::string(static_cast<std::size_t>(decimals - scale), '0');
+        scale = decimals;
+    }
+    const std::size_t drop = static_cast<std::size_t>(scale - decimals);
+    if (digits.size() < drop + 1) digits.insert(0, drop + 1 - digits.size(), '0');
+    std::string kept = digits.substr(0, digits.size() - drop);
+    const std::string rest = digits.substr(digits.size() - drop);
+    const bool above_half = !rest.empty() && (rest[0] > '5' || (rest[0] == '5' && rest.find_first_not_of('0', 1) != std::string::npos));
+    const bool half = !rest.empty() && rest[0] == '5' && rest.find_first_not_of('0', 1) == std::string::npos;
+    if (above_half || (half && (kept.back() - '0') % 2 == 1)) {
+        std::size_t k = kept.size();
+        while (k > 0 && kept[k - 1] == '9') kept[--k] = '0';
+        if (k == 0) kept.insert(0, "1");
+        else ++kept[k - 1];
+    }
+    if (kept.size() < static_cast<std::size_t>(decimals) + 1) kept.insert(0, static_cast<std::size_t>(decimals) + 1 - kept.size(), '0');
+    std::string out = kept.substr(0, kept.size() - static_cast<std::size_t>(decimals));
+    if (decimals > 0) out += "." + kept.substr(kept.size() - static_cast<std::size_t>(decimals));
+    if (exact->negative) out = "-" + out;  // fmt writes -0.000 for a small negative too
+    return local_number_text(out, language);
+}
+
+}  // namespace
+
+std::string lesson_number_text(const LessonNumber& number, const std::string& kind, Language language, int decimals) {
+    if (number.real_text.empty() || std::holds_alternative<std::string>(number.value))
+        return value_text(number.value, kind, language, decimals);
+    const auto one = [&](const std::string& text, double value) {
+        // A float is exactly a double: its double value rounds the same.
+        if (decimals >= 0 && (number.real == "float" || number.real == "double")) return number_text(value, language, decimals);
+        if (decimals >= 0) return rounded_real_text(text, number.real, language, decimals);
+        return local_number_text(text, language);
+    };
+    if (const double* value = std::get_if<double>(&number.value)) return one(number.real_text.front(), *value);
+    const Vec3d& v = std::get<Vec3d>(number.value);
+    if (number.real_text.size() != 3) return value_text(number.value, kind, language, decimals);
+    const bool vector = kind == "vector" || kind == "colour";
+    const char* separator = language == Language::pl ? "; " : ", ";
+    return std::string(vector ? "[" : "(") + one(number.real_text[0], v.x) + separator + one(number.real_text[1], v.y) +
+           separator + one(number.real_text[2], v.z) + (vector ? "]" : ")");
+}
+
 bool has_answers(const LessonStep& step) {
     return std::any_of(step.parts.begin(), step.parts.end(), [](const LessonPart& p) { return p.kind == PartKind::answer; });
 }
@@ -470,9 +600,15 @@ std::string render_lesson_title(const LessonView& view) {
                                        {"w", std::to_string(view.w)},
                                        {"pane", pane_phrase(view.w)},
                                        {"pixels", pixels}});
+    // The numbers' type and formula, when they are not the article's double.
+    const TraceHeader& numbers = view.traces.front().header;
+    std::string settings;
+    if (numbers.real != "double" || numbers.formula != "article")
+        settings = message(language, "lesson_numbers", {{"real", numbers.real}, {"formula", numbers.formula}});
     if (view.format == LessonFormat::markdown)
-        return "# " + heading + "\n\n*" + view.lesson.header.summary + "*\n\n" + setup + "\n";
-    return bold(view, heading) + "\n" + wrap(view.lesson.header.summary, 0) + "\n" + wrap(setup, 0) + "\n";
+        return "# " + heading + "\n\n*" + view.lesson.header.summary + "*\n\n" + setup + (settings.empty() ? "" : "\n\n" + settings) + "\n";
+    return bold(view, heading) + "\n" + wrap(view.lesson.header.summary, 0) + "\n" + wrap(setup, 0) + "\n" +
+           (settings.empty() ? "" : wrap(settings, 0) + "\n");
 }
 
 std::string render_step(const LessonView& view, std::size_t k) {
@@ -509,7 +645,8 @@ std::string render_answers(const LessonView& view, std::size_t k) {
         for (const PixelTrace& trace : view.traces) {
             const std::vector<Placeholder> placeholders = find_placeholders(part.text);
             if (std::all_of(placeholders.begin(), placeholders.end(), [&](const Placeholder& p) {
-                    return !p.valid || p.symbol || view.vocabulary.find(p.name) == nullptr || lesson_value(trace, p.path);
+                    return !p.valid || p.symbol || view.vocabulary.find(p.name) == nullptr ||
+                           lesson_number(view, trace, qualified_path(p));
                 })) {
                 pixel = &trace;
                 break;

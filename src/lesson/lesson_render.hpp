@@ -27,6 +27,9 @@ struct LessonView {
     // a table or a block shows is asked for here first; a text returned takes
     // the number's place (a blank), nothing keeps the number.
     std::function<std::optional<std::string>(const PixelTrace& trace, const std::string& key, char component)> shown_value{};
+    // The same pixels in the other numeric settings the lesson's qualifiers
+    // name ({delta@float}, = t@geometric): looked up by pixel, real and formula.
+    std::vector<PixelTrace> others{};
 };
 
 // The lesson's title, summary and setup (scene, pane, pixels).
@@ -47,6 +50,42 @@ bool has_answers(const LessonStep& step);
 // towards light 0 against sphere 1. A one-group path also names the scene's
 // values of that object: sphere[1].S, sphere[1].r, light[0].L, light[0].I.
 std::optional<StepValue> lesson_value(const PixelTrace& trace, const std::string& key);
+
+// A value with its exact text in its own real type: `real_text` holds one
+// text (or three, a point's or vector's) for a non-double trace, none for
+// double and for the scene's values.
+struct LessonNumber {
+    StepValue value;
+    std::vector<std::string> real_text;
+    std::string real = "double";
+};
+
+// The value a qualified path names ("delta@float", "t@geometric",
+// "sphere[0].delta@quad,geometric"; a component is the caller's): in the
+// trace of the same pixel in those settings, which `others` holds (a setting
+// the qualifier leaves out is `trace`'s own). Nothing where the pixel did not
+// reach it, or no trace of those settings is at hand.
+std::optional<LessonNumber> lesson_number(const PixelTrace& trace, const std::string& qualified,
+                                          const std::vector<PixelTrace>& others);
+
+// The same, through the view's traces.
+std::optional<LessonNumber> lesson_number(const LessonView& view, const PixelTrace& trace, const std::string& qualified);
+
+// The trace of `trace`'s pixel in the settings the qualifier names ("float",
+// "quad,geometric", "" for `trace` itself), or nullptr.
+const PixelTrace* settings_trace(const PixelTrace& trace, const std::string& settings, const std::vector<PixelTrace>& others);
+
+// The (real, formula) a qualifier means on top of the lesson's own.
+std::pair<std::string, std::string> resolve_settings(const std::string& settings, const std::string& real,
+                                                     const std::string& formula);
+
+// One component ('x', 'y', 'z') of a point's or vector's number; the number itself for 0.
+LessonNumber component_of(const LessonNumber& number, char component);
+
+// A number as a lesson shows it: in double (and for the scene's values) as
+// value_text does; in another real type its exact text in that type, or with
+// `decimals` >= 0 that exact value rounded to so many decimals. The Polish way in Polish.
+std::string lesson_number_text(const LessonNumber& number, const std::string& kind, Language language, int decimals = -1);
 
 // True for a value of the scene, the same for every pixel: a top-level given
 // key (S, r, L, I, z_E, background) and sphere[k].S, sphere[k].r, light[k].L,

@@ -28,8 +28,8 @@ Worksheet::Worksheet(LessonView& view) : view_(view) {
     view_.shown_value = [this](const PixelTrace& trace, const std::string& key, char component) -> std::optional<std::string> {
         if (is_scene_value(key)) return std::nullopt;  // the scene's values are given
         // A word (the nearest object, what a test found) is no number to compute: shown filled in.
-        const std::optional<StepValue> value = lesson_value(trace, key);
-        if (value && std::holds_alternative<std::string>(*value)) return std::nullopt;
+        const std::optional<LessonNumber> number = lesson_number(view_, trace, key);
+        if (number && std::holds_alternative<std::string>(number->value)) return std::nullopt;
         return blank_for(trace, key, component);
     };
 }
@@ -44,7 +44,9 @@ std::string Worksheet::blank_text(int number, const std::string& kind, Language 
 }
 
 std::string Worksheet::blank_for(const PixelTrace& trace, const std::string& key, char component) {
-    const std::string kind = component != 0 ? "scalar" : blank_kind(view_.vocabulary, key, lesson_value(trace, key));
+    const std::optional<LessonNumber> number = lesson_number(view_, trace, key);
+    const std::string kind =
+        component != 0 ? "scalar" : blank_kind(view_.vocabulary, key, number ? std::optional<StepValue>(number->value) : std::nullopt);
     const auto [found, added] = index_.emplace(std::make_tuple(trace.header.i, trace.header.j, key, component), blanks_.size());
     if (!added) return blank_text(blanks_[found->second].number, kind, view_.lesson.language);
     WorksheetBlank blank;
@@ -53,11 +55,10 @@ std::string Worksheet::blank_for(const PixelTrace& trace, const std::string& key
     blank.j = trace.header.j;
     blank.key = key;
     blank.component = component;
-    blank.value = lesson_value(trace, key).value_or(StepValue{0.0});
-    if (component != 0 && std::holds_alternative<Vec3d>(blank.value)) {
-        const Vec3d& v = std::get<Vec3d>(blank.value);
-        blank.value = component == 'x' ? v.x : component == 'y' ? v.y : v.z;
-    }
+    const LessonNumber own = component_of(number.value_or(LessonNumber{StepValue{0.0}, {}, "double"}), component);
+    blank.value = own.value;
+    blank.real_text = own.real_text;
+    blank.real = own.real;
     blanks_.push_back(blank);
     return blank_text(blank.number, kind, view_.lesson.language);
 }
@@ -66,6 +67,10 @@ std::string Worksheet::intro() const {
     const Language language = view_.lesson.language;
     std::string pixels;
     for (const PixelTrace& trace : view_.traces) pixels += fmt::format(" --pixel {},{}", trace.header.i, trace.header.j);
+    // Settings other than the lesson's own (given with --real, --formula) must be given again.
+    const TraceHeader& numbers = view_.traces.front().header;
+    if (numbers.real != view_.lesson.header.real) pixels += " --real " + numbers.real;
+    if (numbers.formula != view_.lesson.header.formula) pixels += " --formula " + numbers.formula;
     const std::string command =
         fmt::format("promyk lesson {}{} --lang {} --answers {}", view_.lesson.header.name, pixels,
                     language_code(language), message(language, "worksheet_file"));
@@ -95,9 +100,8 @@ std::string Worksheet::answer_template() const {
         if (mine.empty()) continue;
         lines.push_back(fmt::format("[{},{}]", i, j));
         for (const WorksheetBlank* blank : mine) {
-            std::string key = blank->key;
-            if (blank->component != 0) key += std::string(".") + blank->component;
-            lines.push_back(key + " = ");
+            const auto [path, settings] = split_settings(blank->key);
+            lines.push_back(qualified_path(path, blank->component, settings) + " = ");
             width = std::max(width, lines.back().size());
             lines.back() += "\t" + std::to_string(blank->number);
         }
@@ -122,12 +126,11 @@ std::string Worksheet::answer_key() const {
     std::string out = markdown ? "\n## " + heading + "\n\n" : "\n── " + heading + " ──\n\n";
     for (const WorksheetBlank& blank : blanks_) {
         const VocabularyEntry* entry = view_.vocabulary.find(path_key(blank.key));
-        std::string symbol = entry ? entry->symbol : blank.key;
-        std::string key = blank.key;
-        if (blank.component != 0) {
-            symbol += std::string(".") + blank.component;
-            key += std::string(".") + blank.component;
-        }
+        const auto [path, settings] = split_settings(blank.key);
+        std::string symbol = entry ? entry->symbol : path;
+        if (blank.component != 0) symbol += std::string(".") + blank.component;
+        if (!settings.empty()) symbol += " (" + settings + ")";
+        const std::string key = qualified_path(path, blank.component, settings);
         const std::string kind = blank.component != 0 ? "scalar" : blank_kind(view_.vocabulary, blank.key, blank.value);
         const std::string line = message(
             language, "worksheet_key_line",
@@ -135,7 +138,7 @@ std::string Worksheet::answer_key() const {
              {"pixel", message(language, "pixel_label", {{"i", std::to_string(blank.i)}, {"j", std::to_string(blank.j)}})},
              {"symbol", symbol},
              {"key", key},
-             {"value", value_text(blank.value, kind, language)}});
+             {"value", lesson_number_text(LessonNumber{blank.value, blank.real_text, blank.real}, kind, language)}});
         out += (markdown ? "- " : "  ") + line + "\n";
     }
     return out;

@@ -17,9 +17,11 @@ namespace promyk {
 struct WorksheetBlank {
     int number = 0;  // 1, 2, ... in the order the worksheet first shows them
     int i = 0, j = 0;
-    std::string key;
+    std::string key;     // a path, with its settings qualifier when it has one ("delta@float")
     char component = 0;  // 'x', 'y', 'z' or 0
     StepValue value;
+    std::vector<std::string> real_text;  // the value's exact text in a non-double type (lesson_render.hpp)
+    std::string real = "double";
 };
 
 class Worksheet {

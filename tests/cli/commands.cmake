@@ -55,7 +55,7 @@ promyk_cli_test(trace_bad_lang ARGS trace --lang de EXIT 2 STDERR "--lang")
 # Lessons
 promyk_cli_test(lesson_list ARGS lesson --lang en EXIT 0 STDOUT "^Lessons \\(promyk lesson NAME\\):\n +vectors .*pane .*sphere .*lambert .*program ")
 promyk_cli_test(lesson_list_polish ARGS lesson --list --lang pl EXIT 0 STDOUT "^Lekcje \\(promyk lesson NAZWA\\):")
-promyk_cli_test(lesson_check ARGS lesson --check --lang en EXIT 0 STDOUT "lessons checked: 20; all is well")
+promyk_cli_test(lesson_check ARGS lesson --check --lang en EXIT 0 STDOUT "lessons checked: 22; all is well")
 promyk_cli_test(lesson_unknown ARGS lesson nosuch EXIT 2 STDERR "no lesson 'nosuch'; the lessons are vectors, pane, sphere, lambert, program")
 promyk_cli_test(lesson_sphere ARGS lesson sphere --lang en --pixel 3,4 --pixel 0,0 EXIT 0
                 STDOUT "^Lesson: .*pixels: \\(3, 4\\), \\(0, 0\\).*Step 1 of 8: .*Step 8 of 8")
