@@ -67,6 +67,11 @@ public:
         const double I_P = static_cast<double>(pixel.I_P);
         return {I_P, I_P, I_P};
     }
+    double digits_lost(int w, int i, int j) const override {
+        DigitsRecorder digits;
+        trace_pixel_ray<F>(world_, w, i, j, digits);
+        return digits.max_digits_lost;
+    }
     PixelTrace trace(const TraceHeader& header, int i, int j) const override {
         if constexpr (literal) {
             return trace_pixel(world_, header, i, j);
@@ -134,6 +139,13 @@ public:
             const double I_P = static_cast<double>(pixel.I_P);
             return {I_P, I_P, I_P};
         }
+    }
+
+    double digits_lost(int w, int i, int j) const override {
+        DigitsRecorder digits;
+        WorkCounts work;
+        trace_general<Sw, F>(world_, pane_point(i, j, w, world_.z_E), work, digits);
+        return digits.max_digits_lost;
     }
 
     PixelTrace trace(const TraceHeader& header, int i, int j) const override {
