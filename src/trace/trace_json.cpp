@@ -149,6 +149,9 @@ void append_steps(std::string& out, const PixelTrace& trace) {
         out += ',';
         std::visit([&out](const auto& value) { append_value(out, value); }, step.value);
         append_real_text(out, step.real_text);
+        // The digits its subtraction cancels, to one decimal (trace/digits_lost.hpp).
+        if (!std::isnan(step.digits_lost))
+            fmt::format_to(std::back_inserter(out), ",\"digits_lost\":{:.1f}", rounded_digits(step.digits_lost));
         out += '}';
     }
     for (std::size_t k = 0; k < open.size(); ++k) out += "]}";
