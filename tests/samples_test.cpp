@@ -237,3 +237,21 @@ TEST_CASE("a sample's steps are named by their path for diff and answer files", 
     CHECK(check_path("sample[0].sample[1].t", vocabulary).fault != PathFault::none);
     CHECK(check_path("sphere[0].sample[1].t", vocabulary).fault != PathFault::none);
 }
+
+TEST_CASE("a pixel's digits lost with samples is the most any step of any sample loses", "[samples]") {
+    for (const Scene& scene : example_scenes()) {
+        for (const Formula formula : {Formula::article, Formula::geometric}) {
+            const auto kernel = make_kernel(scene, RealType::float_, formula, 4);
+            for (int i = 0; i < 6; ++i) {
+                for (int j = 0; j < 6; ++j) {
+                    const PixelTrace trace = trace_pixel(scene, 6, i, j, RealType::float_, formula, 4);
+                    double most = 0;
+                    for (const Step& step : trace.steps)
+                        if (step.digits_lost > most) most = step.digits_lost;  // NaN: no estimate
+                    INFO("scene " << scene.name << ", pixel (" << i << ", " << j << ")");
+                    CHECK(kernel->digits_lost(6, i, j) == most);
+                }
+            }
+        }
+    }
+}

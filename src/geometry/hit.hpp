@@ -22,6 +22,7 @@ template <class Real, class Recorder>
 Vec3<Real> sphere_normal(const Vec3<Real>& P, const Vec3<Real>& S, Real r, Recorder& record) {
     const Vec3<Real> N = P - S;
     record(Key::N, N);
+    record.lost(Key::N, P, S, N);
     // The unit normal N_P = N / r of section 4, for the lessons.
     if constexpr (Recorder::records) record(Key::N_P, N / r);
     return N;

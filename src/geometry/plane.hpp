@@ -30,6 +30,7 @@ std::optional<PlaneRoot<Real>> intersect_plane(const Vec3<Real>& E, const Vec3<R
     }
     const Real NE = dot(n_hat, E);
     record(Key::NE, NE);
+    record.lost_in_dot(Key::NE, n_hat, E, NE);
     if (NE == 0) {
         if constexpr (Recorder::records) record(Key::found, "parallel");
         return std::nullopt;

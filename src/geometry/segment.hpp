@@ -23,17 +23,22 @@ Blocks sphere_blocks(const Vec3<Real>& P, const Vec3<Real>& K, Real KK, const Ve
     const Vec3<Real> SP = S - P;
     const Real b_s = dot(K, SP);
     record(Key::b_s, b_s);
+    record.lost_in_dot(Key::b_s, K, SP, b_s);
     const Real c_s = length_squared(SP) - r * r;
     record(Key::c_s, c_s);
+    if constexpr (Recorder::estimates) record.lost(Key::c_s, length_squared(SP), r * r, c_s);
     const Real delta_s = b_s * b_s - KK * c_s;
     record(Key::delta_s, delta_s);
+    if constexpr (Recorder::estimates) record.lost(Key::delta_s, b_s * b_s, KK * c_s, delta_s);
     if (!(delta_s * Real(0) == Real(0))) return Blocks::undecided;
     if (delta_s <= 0) return Blocks::no;
     const Real q = square_root(delta_s);
     const Real s_1 = (b_s - q) / KK;
     record(Key::s_1, s_1);
+    if constexpr (Recorder::estimates) record.lost(Key::s_1, b_s, q, b_s - q);
     const Real s_2 = (b_s + q) / KK;
     record(Key::s_2, s_2);
+    if constexpr (Recorder::estimates) record.lost(Key::s_2, b_s, q, b_s + q);
     return (s_1 > 0 && s_1 < 1) || (s_2 > 0 && s_2 < 1) ? Blocks::yes : Blocks::no;
 }
 
@@ -43,9 +48,12 @@ template <class Real, class Recorder>
 Blocks plane_blocks(const Vec3<Real>& P, const Vec3<Real>& K, const Vec3<Real>& n_hat, Real NQ, Recorder& record) {
     const Real NK = dot(n_hat, K);
     record(Key::NK, NK);
+    record.lost_in_dot(Key::NK, n_hat, K, NK);
     if (NK == 0) return Blocks::no;
     const Real s = (NQ - dot(n_hat, P)) / NK;
     record(Key::s, s);
+    // Digits lost by the numerator NQ - n_hat.P.
+    if constexpr (Recorder::estimates) record.lost(Key::s, NQ, dot(n_hat, P), NQ - dot(n_hat, P));
     if (!(s * Real(0) == Real(0))) return Blocks::undecided;
     return s > 0 && s < 1 ? Blocks::yes : Blocks::no;
 }

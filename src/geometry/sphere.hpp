@@ -52,8 +52,10 @@ SphereCoefficients<Real> sphere_coefficients(const Vec3<Real>& E, const Vec3<Rea
     record(Key::SS, k.SS);
     k.C = dot(E, S);
     record(Key::C, k.C);
+    record.lost_in_dot(Key::C, E, S, k.C);
     k.c_0 = k.SS - r * r;
     record(Key::c_0, k.c_0);
+    if constexpr (Recorder::estimates) record.lost(Key::c_0, k.SS, r * r, k.c_0);
     return k;
 }
 
@@ -98,6 +100,8 @@ std::optional<SphereRoot<Real>> intersect_sphere(const Vec3<Real>& E, const Vec3
     const Real delta = C * C - EE * (length_squared(S) - r * r);
     const Real t_far = (C + square_root(delta)) / EE;
     record(Key::t_far, t_far);
+    // Its numerator cancels when C < 0 (the sphere's centre behind the eye).
+    if constexpr (Recorder::estimates) record.lost(Key::t_far, C, square_root(delta), C + square_root(delta));
     if (t_far > 0) {
         if constexpr (Recorder::records) record(Key::found, "far");
         return SphereRoot<Real>{t_far, true};

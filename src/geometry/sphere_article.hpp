@@ -30,10 +30,13 @@ std::optional<Real> intersect_sphere_article(const Vec3<Real>& E, const Vec3<Rea
     record(Key::SS, SS);
     const Real C = dot(E, S);
     record(Key::C, C);
+    record.lost_in_dot(Key::C, E, S, C);
 
     // Compute the program's delta: a quarter of formula (2)'s discriminant.
     const Real delta = C * C - EE * (SS - r * r);
     record(Key::delta, delta);
+    // Digits lost: C^2 against |E|^2 (|S|^2 - r^2), the outer subtraction.
+    if constexpr (Recorder::estimates) record.lost(Key::delta, C * C, EE * (SS - r * r), delta);
     if constexpr (Recorder::records) {
         // Formula (2)'s own discriminant, for the lessons: Delta = 4 delta, and
         // sqrt(Delta) = 2 sqrt(delta) (both exact: 4 and 2 are powers of two).
@@ -45,6 +48,8 @@ std::optional<Real> intersect_sphere_article(const Vec3<Real>& E, const Vec3<Rea
     // Compute the nearer root: the minus sign, since |E|^2 > 0.
     const Real t = (C - square_root(delta)) / EE;
     record(Key::t, t);
+    // Digits lost by the numerator C - sqrt(delta) (the division loses none).
+    if constexpr (Recorder::estimates) record.lost(Key::t, C, square_root(delta), C - square_root(delta));
     return t;
 }
 

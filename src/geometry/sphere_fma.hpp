@@ -40,12 +40,18 @@ std::optional<SphereRoot<Real>> intersect_sphere_fma(const Vec3<Real>& E, const 
     record(Key::e_fma, e);
     const Real delta = fused_multiply_add(C, C, -w) + e;
     record(Key::delta_fma, delta);
+    // Digits lost: C^2 against w = |E|^2 c_0, as in the article's delta. (e is
+    // w - |E|^2 c_0 exactly, a rounding error made visible by design: it has
+    // no estimate.)
+    if constexpr (Recorder::estimates) record.lost(Key::delta_fma, C * C, w, delta);
     if (records_miss(delta, record)) return std::nullopt;
     const Real root = square_root(delta);
     const Real t = (C - root) / EE;
     record(Key::t, t);
+    if constexpr (Recorder::estimates) record.lost(Key::t, C, root, C - root);
     const Real t_far = (C + root) / EE;
     record(Key::t_far, t_far);
+    if constexpr (Recorder::estimates) record.lost(Key::t_far, C, root, C + root);
     return nearest_root_ahead(t, t_far, record);
 }
 

@@ -39,10 +39,12 @@ std::optional<SphereRoot<Real>> intersect_sphere_geometric(const Vec3<Real>& E, 
     record(Key::t_mid, t_mid);
     const Vec3<Real> l = t_mid * E - S;
     record(Key::l, l);
+    if constexpr (Recorder::estimates) record.lost(Key::l, t_mid * E, S, l);
     const Real ll = length_squared(l);
     record(Key::ll, ll);
     const Real delta_g = r * r - ll;
     record(Key::delta_g, delta_g);
+    if constexpr (Recorder::estimates) record.lost(Key::delta_g, r * r, ll, delta_g);
     if (records_miss(delta_g, record)) return std::nullopt;
     return cancellation_free_roots(C, square_root(EE * delta_g), c_0, EE, record);
 }

@@ -26,6 +26,8 @@ template <class Real, class Recorder>
 std::optional<SphereRoot<Real>> cancellation_free_roots(Real C, Real root_term, Real c_0, Real EE, Recorder& record) {
     const Real q = C >= 0 ? C + root_term : C - root_term;
     record(Key::q, q);
+    // Two numbers of one sign: never cancels (its estimate is 0, shown for that).
+    record.lost(Key::q, C, root_term, q);
     const Real t_q = q / EE;
     record(Key::t_q, t_q);
     const Real t_c = c_0 / q;
@@ -43,6 +45,7 @@ std::optional<SphereRoot<Real>> intersect_sphere_stable(const Vec3<Real>& E, con
     const auto [EE, SS, C, c_0] = sphere_coefficients(E, S, r, record);
     const Real delta = C * C - EE * c_0;
     record(Key::delta, delta);
+    if constexpr (Recorder::estimates) record.lost(Key::delta, C * C, EE * c_0, delta);
     if (records_miss(delta, record)) return std::nullopt;
     return cancellation_free_roots(C, square_root(delta), c_0, EE, record);
 }

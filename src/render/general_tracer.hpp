@@ -155,6 +155,9 @@ GeneralResult<typename World<Real, Rgb>::Intensity> trace_general(const World<Re
     }
     if (kind == 1) {
         record(Key::N, N);
+        // N = P - S (or its opposite: the same magnitudes).
+        if constexpr (Recorder::estimates)
+            record.lost(Key::N, P, world.spheres[static_cast<std::size_t>(index)].S, N);
         if constexpr (Recorder::records) record(Key::N_P, N / r);
     } else {
         record(Key::N_plane, N);  // already of length 1
@@ -173,6 +176,7 @@ GeneralResult<typename World<Real, Rgb>::Intensity> trace_general(const World<Re
         record.begin_group("light", static_cast<int>(l));
         const Vec3<Real> K = light.L - P;
         record(Key::K, K);
+        record.lost(Key::K, light.L, P, K);
         const Real KK = length_squared(K);
         record(Key::KK, KK);
         if constexpr (Recorder::records) {
@@ -182,6 +186,7 @@ GeneralResult<typename World<Real, Rgb>::Intensity> trace_general(const World<Re
         }
         const Real D = dot(N, K);
         record(Key::D, D);
+        record.lost_in_dot(Key::D, N, K, D);
         if constexpr (Recorder::records) {
             const Real K_len = square_root(KK);
             if (K_len > 0) record(Key::cos_alpha, dot(N / r, K / K_len));

@@ -41,6 +41,10 @@ public:
     virtual Vec3d intensity(int w, int i, int j, Branch* branch = nullptr) const = 0;
     // Traces pixel (i, j) of the header's pane (header.w).
     virtual PixelTrace trace(const TraceHeader& header, int i, int j) const = 0;
+    // The most digits any step of pixel (i, j) loses to cancellation (the
+    // largest of the trace's digits_lost (of all its samples), unrounded; 0 when no step has an
+    // estimate), computed without building a trace: for a map of digits lost.
+    virtual double digits_lost(int w, int i, int j) const = 0;
     const Stages& stages() const { return stages_; }
     // Samples per pixel (render/samples.hpp): 1 is the pixel's centre.
     int spp() const { return spp_; }

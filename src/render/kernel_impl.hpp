@@ -122,6 +122,14 @@ public:
         }
         return {I_P, I_P, I_P};
     }
+    double digits_lost(int w, int i, int j) const override {
+        DigitsRecorder digits;  // the most any step of any sample lost
+        if (spp() > 1)
+            sampled(w, i, j, digits, IgnoreSample{});
+        else
+            trace_pixel_ray<F>(world_, w, i, j, digits);
+        return digits.max_digits_lost;
+    }
     PixelTrace trace(const TraceHeader& header, int i, int j) const override {
         if (spp() > 1) return sampled_trace(header, i, j);
         if constexpr (literal) {
@@ -234,6 +242,16 @@ public:
         const Result pixel = trace_general<Sw, F>(world_, pane_point(i, j, w, world_.z_E), work, none);
         if (branch) *branch = pixel.branch;
         return as_rgb(pixel.I_P);
+    }
+
+    double digits_lost(int w, int i, int j) const override {
+        DigitsRecorder digits;  // the most any step of any sample lost
+        WorkCounts work;
+        if (spp() > 1)
+            sampled(w, i, j, work, digits, IgnoreSample{});
+        else
+            trace_general<Sw, F>(world_, pane_point(i, j, w, world_.z_E), work, digits);
+        return digits.max_digits_lost;
     }
 
     PixelTrace trace(const TraceHeader& header, int i, int j) const override {

@@ -23,6 +23,7 @@ Shade<Real> shade_lambert(const Vec3<Real>& P, const Vec3<Real>& N, Real r, cons
     // Compute the direction to the light, K = L - P, and its squared length.
     const Vec3<Real> K = L - P;
     record(Key::K, K);
+    record.lost(Key::K, L, P, K);
     const Real KK = length_squared(K);  // the program's K = |K|^2
     record(Key::KK, KK);
     if constexpr (Recorder::records) {
@@ -35,6 +36,7 @@ Shade<Real> shade_lambert(const Vec3<Real>& P, const Vec3<Real>& N, Real r, cons
     // Compute D = N.K: |N||K| cos(alpha), negative on the dark side.
     const Real D = dot(N, K);
     record(Key::D, D);
+    record.lost_in_dot(Key::D, N, K, D);
     if constexpr (Recorder::records) {
         // cos(alpha) = N_P.K_P, as formula (1) gives it for unit vectors.
         const Real K_len = square_root(KK);

@@ -23,8 +23,10 @@ Real phong_specular(const Vec3<Real>& N, Real r, const Vec3<Real>& K, Real KK, c
     // already when a recorder asks; here they are needed for the value.
     const Vec3<Real> R_hat = (Real(2) * cos_alpha) * N_P - K_P;
     record(Key::R_hat, R_hat);
+    if constexpr (Recorder::estimates) record.lost(Key::R_hat, (Real(2) * cos_alpha) * N_P, K_P, R_hat);
     const Real RV = dot(R_hat, V_hat);
     record(Key::RV, RV);
+    record.lost_in_dot(Key::RV, R_hat, V_hat, RV);
     if (!(RV > 0)) return Real(0);
     const Real RV_n = power(RV, n);
     record(Key::RV_n, RV_n);

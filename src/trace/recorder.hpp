@@ -4,6 +4,8 @@
 // tracing and traced and untraced results are identical bit for bit.
 #pragma once
 
+#include <cmath>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -12,6 +14,7 @@
 
 #include "math/real.hpp"
 #include "math/vec3.hpp"
+#include "trace/digits_lost.hpp"
 #include "trace/keys.hpp"
 
 namespace promyk {
@@ -20,11 +23,50 @@ struct NullRecorder {
     // Stages that exist only to explain (never needed for the pixel's value)
     // are guarded by `if constexpr (Recorder::records)`.
     static constexpr bool records = false;
+    // Estimates of the digits a step's subtraction loses
+    // (trace/digits_lost.hpp) are computed only when this is true: the
+    // calls that need operands recomputed are guarded by
+    // `if constexpr (Recorder::estimates)`.
+    static constexpr bool estimates = false;
 
     template <class Value>
     constexpr void operator()(Key, const Value&) const noexcept {}
     constexpr void begin_group(std::string_view, int) const noexcept {}
     constexpr void end_group() const noexcept {}
+    // The digits lost by the step `key` just recorded: a sum or difference
+    // of a and b (numbers or vectors), or a dot product of P and Q.
+    template <class A, class R>
+    constexpr void lost(Key, const A&, const A&, const R&) const noexcept {}
+    template <class V, class R>
+    constexpr void lost_in_dot(Key, const V&, const V&, const R&) const noexcept {}
+};
+
+// Only the largest estimate of digits lost over a pixel's computation, with
+// no trace (for a map of digits lost: cheap, no step is stored). Stages
+// that exist only to explain do not run (records is false).
+struct DigitsRecorder {
+    static constexpr bool records = false;
+    static constexpr bool estimates = true;
+
+    template <class Value>
+    constexpr void operator()(Key, const Value&) const noexcept {}
+    constexpr void begin_group(std::string_view, int) const noexcept {}
+    constexpr void end_group() const noexcept {}
+    template <class A, class R>
+    void lost(Key, const A& a, const A& b, const R& result) {
+        take(sum_digits_lost(a, b, result));
+    }
+    template <class V, class R>
+    void lost_in_dot(Key, const V& P, const V& Q, const R& sum) {
+        take(dot_digits_lost(P, Q, sum));
+    }
+
+    double max_digits_lost = 0;  // 0 when no step had an estimate
+
+private:
+    void take(double digits) {
+        if (digits > max_digits_lost) max_digits_lost = digits;  // false for NaN
+    }
 };
 
 // A step's value: a number, a point or vector (or an RGB colour), or a word
@@ -42,6 +84,10 @@ struct Step {
     // For a non-double real type, the value as its own type's shortest
     // round-trip text (one per component of a vector); empty for double.
     std::vector<std::string> real_text;
+    // The significant digits the step's subtraction (or sum of terms of
+    // opposite signs) cancels, trace/digits_lost.hpp; NaN for a step that
+    // has no estimate (no such operation, or a non-finite operand).
+    double digits_lost = std::numeric_limits<double>::quiet_NaN();
 };
 
 // A group of steps: one object tested, one light, one object a shadow ray is
@@ -60,6 +106,7 @@ inline constexpr bool is_other_real =
 class RecordingRecorder {
 public:
     static constexpr bool records = true;
+    static constexpr bool estimates = true;
 
     void operator()(Key key, double value) { add(key).value.emplace<double>(value); }
     void operator()(Key key, const Vec3d& value) { add(key).value.emplace<Vec3d>(value); }
@@ -82,6 +129,17 @@ public:
         step.real_text = {promyk::real_text(v.x), promyk::real_text(v.y), promyk::real_text(v.z)};
     }
 
+    // The digits lost by the step just recorded, which must be `key` in the
+    // current group (else nothing is attached).
+    template <class A, class R>
+    void lost(Key key, const A& a, const A& b, const R& result) {
+        attach(key, sum_digits_lost(a, b, result));
+    }
+    template <class V, class R>
+    void lost_in_dot(Key key, const V& P, const V& Q, const R& sum) {
+        attach(key, dot_digits_lost(P, Q, sum));
+    }
+
     void begin_group(std::string_view kind, int index) {
         groups_.push_back({std::string(kind), index, current_});
         current_ = static_cast<int>(groups_.size()) - 1;
@@ -92,6 +150,12 @@ public:
     std::vector<TraceGroup> take_groups() { return std::move(groups_); }
 
 private:
+    void attach(Key key, double digits) {
+        if (steps_.empty() || std::isnan(digits)) return;
+        Step& step = steps_.back();
+        if (step.key == key && step.group == current_) step.digits_lost = digits;
+    }
+
     // A new step, its value set in place by the caller: GCC 12 warns (wrongly)
     // of an uninitialised string when a Step holding a number is moved into
     // the vector from a temporary.

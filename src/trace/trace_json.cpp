@@ -17,6 +17,12 @@ using json_text::non_finite_text;
 
 bool finite(const Vec3d& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
+bool finite_value(const StepValue& value) {
+    if (const double* number = std::get_if<double>(&value)) return std::isfinite(*number);
+    if (const Vec3d* vector = std::get_if<Vec3d>(&value)) return finite(*vector);
+    return true;
+}
+
 void append_value(std::string& out, double value) {
     out += "\"value\":";
     append_number(out, value);
@@ -149,6 +155,10 @@ void append_steps(std::string& out, const PixelTrace& trace) {
         out += ',';
         std::visit([&out](const auto& value) { append_value(out, value); }, step.value);
         append_real_text(out, step.real_text);
+        // The digits its subtraction cancels, to one decimal (trace/digits_lost.hpp);
+        // a value that is not finite has no estimate.
+        if (!std::isnan(step.digits_lost) && finite_value(step.value))
+            fmt::format_to(std::back_inserter(out), ",\"digits_lost\":{:.1f}", rounded_digits(step.digits_lost));
         out += '}';
     }
     for (std::size_t k = 0; k < open.size(); ++k) out += "]}";

@@ -1,11 +1,13 @@
 #include "trace/trace_text.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include "trace/digits_lost.hpp"
 #include "trace/messages.hpp"
 #include "util/text.hpp"
 
@@ -48,6 +50,13 @@ std::string wrap(const std::string& first, const std::string& text, std::size_t 
 }
 
 std::string value_of(const StepValue& value, const Vocabulary& vocabulary, const std::string& key, Language language);
+
+// "⚠ 4.1 digits lost" for a step that loses many digits, else empty.
+std::string digits_lost_mark(const Step& step, Language language) {
+    if (std::isnan(step.digits_lost) || !loses_many_digits(step.digits_lost)) return "";
+    return message(language, "trace_digits_lost",
+                   {{"digits", number_text(rounded_digits(step.digits_lost), language, 1)}});
+}
 
 std::string kind_of(const Vocabulary& vocabulary, const std::string& key);
 
@@ -161,6 +170,8 @@ std::string narrow_steps(const PixelTrace& trace, const Vocabulary& vocabulary, 
             out += wrap(std::string(indent, ' '), options.language == Language::pl ? entry->pl : entry->en, indent);
         out += wrap(std::string(indent, ' ') + "= ", step_value_text(step, vocabulary, key, options.language),
                     indent + 2, options.language == Language::pl ? "; " : " ");
+        const std::string mark = digits_lost_mark(step, options.language);
+        if (!mark.empty()) out += std::string(indent, ' ') + mark + "\n";
     }
     return out;
 }
@@ -183,8 +194,9 @@ std::string wide_steps(const PixelTrace& trace, const Vocabulary& vocabulary, co
             key = group_text(language, group.kind, group.index) + " / " + key;
         }
         const VocabularyEntry* entry = vocabulary.find(bare);
+        const std::string mark = digits_lost_mark(step, language);
         rows.push_back({std::to_string(k + 1), key, entry ? entry->symbol : key, entry ? entry->formula : "",
-                        step_value_text(step, vocabulary, bare, language)});
+                        step_value_text(step, vocabulary, bare, language) + (mark.empty() ? "" : "  " + mark)});
     }
     std::size_t widths[4] = {0, 0, 0, 0};
     for (const Row& row : rows) {
@@ -216,6 +228,39 @@ std::string samples_text(const SampleSummary& samples, int spp, Language languag
                 message(language, "trace_samples_disagree",
                         {{"counts", counts}, {"centre", std::to_string(samples.centre)}, {"spp", std::to_string(spp)}}),
                 2);
+}
+
+// The steps whose cancellation --formula geometric avoids: the discriminant
+// and the roots' numerators of the eye's rays (shadow rays keep their test
+// whatever the formula).
+bool geometric_avoids(Key key) {
+    return key == Key::delta || key == Key::delta_fma || key == Key::t || key == Key::t_far;
+}
+
+// When a step loses many digits: what the mark means, and, when the
+// discriminant or a root's numerator lost them and the formula is not
+// already the geometric one, the suggestion to try it.
+std::string digits_lost_notes(const PixelTrace& trace, const Vocabulary& vocabulary, Language language) {
+    bool marked = false;
+    const Step* worst = nullptr;
+    for (const Step& step : trace.steps) {
+        if (std::isnan(step.digits_lost) || !loses_many_digits(step.digits_lost)) continue;
+        marked = true;
+        if (geometric_avoids(step.key) && (!worst || step.digits_lost > worst->digits_lost)) worst = &step;
+    }
+    if (!marked) return "";
+    std::string out = "\n" + wrap("", message(language, "trace_digits_lost_about",
+                                       {{"threshold", number_text(many_digits_lost, language)}}),
+                           2);
+    if (worst && trace.header.formula != "geometric") {
+        const std::string key(key_name(worst->key));
+        out += wrap("", message(language, "trace_suggest_geometric",
+                                {{"symbol", symbol_of(vocabulary, key)},
+                                 {"digits", number_text(rounded_digits(worst->digits_lost), language, 1)},
+                                 {"formula", trace.header.formula}}),
+                    2);
+    }
+    return out;
 }
 
 std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, Language language) {
@@ -267,7 +312,7 @@ std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, L
                 message(language, "trace_grey_rule", {{"grey", levels}, {"I_P", I_P}}) +
                     (trace.result != trace.result ? message(language, "trace_grey_nan") : ""),
                 2);
-    return out + "\n" + message(language, "trace_note") + "\n";
+    return out + digits_lost_notes(trace, vocabulary, language) + "\n" + message(language, "trace_note") + "\n";
 }
 
 std::string value_of(const StepValue& value, const Vocabulary& vocabulary, const std::string& key, Language language) {
