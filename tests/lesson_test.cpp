@@ -496,3 +496,26 @@ TEST_CASE("the keys a lesson may name in a group are the keys the tracer records
             }
     }
 }
+
+TEST_CASE("a lesson's spp: header is a square, and its numbers come from the centre sample", "[lesson]") {
+    const std::string text(good_lesson);
+    const auto with_spp = [&](const std::string& spp) {
+        return std::regex_replace(text, std::regex("w: 8\n"), "w: 8\nspp: " + spp + "\n");
+    };
+    std::vector<LessonProblem> problems;
+    CHECK(parse_lesson(with_spp("16"), "x.md", Language::en, problems).header.spp == 16);
+    CHECK(problems.empty());
+    for (const std::string bad : {"3", "0", "2048", "-4", "4.0", "x"}) {
+        INFO("spp: " << bad);
+        CHECK(first_line(with_spp(bad)) == 6);
+    }
+    // {delta} reads the centre sample's delta, {I_mean} the top level's mean.
+    const PixelTrace trace = trace_pixel(article_scene(), 8, 1, 4, RealType::double_, Formula::article, 4);
+    REQUIRE(trace.samples);
+    const std::string centre = "sample[" + std::to_string(trace.samples->centre) + "].";
+    const auto number = [&](const std::string& path) { return std::get<double>(lesson_value(trace, path).value()); };
+    CHECK(number("delta") == number(centre + "delta"));
+    CHECK(number("delta") != number("sample[" + std::to_string((trace.samples->centre + 1) % 4) + "].delta"));
+    REQUIRE(lesson_value(trace, "I_mean"));
+    CHECK(std::get<double>(*lesson_value(trace, "I_mean")) == trace.result);
+}

@@ -57,7 +57,8 @@ struct LessonOptions {
     std::string answers;
     RealType real = RealType::double_;
     Formula formula = Formula::article;
-    bool real_given = false, formula_given = false;
+    int spp = 1;
+    bool real_given = false, formula_given = false, spp_given = false;
 };
 
 std::optional<RealType> real_type_named(const std::string& name) {
@@ -74,14 +75,15 @@ std::optional<Formula> formula_named(const std::string& name) {
 
 // The traces of the pixels in each other setting a qualifier names
 // ({delta@float}, delta@float = … in an answer file), added to view.others once a setting.
-void trace_settings(LessonView& view, const Scene& scene, const TraceHeader& header, const std::vector<std::string>& qualifiers) {
+void trace_settings(LessonView& view, const Scene& scene, const TraceHeader& header, const std::vector<std::string>& qualifiers,
+                    int spp) {
     const TraceHeader& own = view.traces.front().header;
     std::set<std::pair<std::string, std::string>> done;
     for (const PixelTrace& other : view.others) done.emplace(other.header.real, other.header.formula);
     for (const std::string& qualifier : qualifiers) {
         const auto [real, formula] = resolve_settings(qualifier, own.real, own.formula);
         if ((real == own.real && formula == own.formula) || !done.emplace(real, formula).second) continue;
-        const std::unique_ptr<Kernel> kernel = make_kernel(scene, *real_type_named(real), *formula_named(formula));
+        const std::unique_ptr<Kernel> kernel = make_kernel(scene, *real_type_named(real), *formula_named(formula), spp);
         std::set<std::pair<int, int>> traced;
         for (const PixelTrace& trace : view.traces)
             if (traced.emplace(trace.header.i, trace.header.j).second)
@@ -176,7 +178,7 @@ int run_answers(const LessonOptions& options, LessonView& view, const Kernel& ke
         for (const Answer& answer : pixel.answers) qualifiers.push_back(split_settings(answer.key).second);
     for (const SettingsUse& use : settings_used(view.lesson)) qualifiers.push_back(use.settings);
     view.others.clear();
-    trace_settings(view, scene, header, qualifiers);
+    trace_settings(view, scene, header, qualifiers, kernel.spp());
     const std::vector<AnswerCheck> checks = check_answers(answers, view.traces, view.others);
     print(message(view.lesson.language, "answers_heading",
                   {{"file", shown}, {"lesson", view.lesson.header.name}, {"scene", view.scene_name}, {"w", std::to_string(view.w)},
@@ -242,11 +244,12 @@ int run_lesson(const LessonOptions& options) {
                              message(lesson.language, "error_unknown_setting", {{"key", use.qualified}, {"settings", use.settings}}));
         qualifiers.push_back(use.settings);
     }
-    const std::unique_ptr<Kernel> kernel = make_kernel(scene, real, formula);
+    const int spp = options.spp_given ? options.spp : lesson.header.spp;
+    const std::unique_ptr<Kernel> kernel = make_kernel(scene, real, formula, spp);
     const TraceHeader header = trace_header(scene, w);
     view.traces.reserve(pixels.size());
     for (const LessonPixel& pixel : pixels) view.traces.push_back(kernel->trace(header, pixel.i, pixel.j));
-    trace_settings(view, scene, header, qualifiers);
+    trace_settings(view, scene, header, qualifiers, spp);
     if (!options.answers.empty()) return run_answers(options, view, *kernel, scene, header);
 
     // A worksheet shows blanks for the pixels' numbers and leaves the answers out (they are the teacher's).
@@ -288,6 +291,11 @@ std::function<int()> setup_lesson(CLI::App& app) {
         ->description("How the eye's rays meet a sphere: article, stable, fma or geometric\n"
                       "(default: the lesson's formula:, else article); {t_hit@geometric} names another")
         ->default_str("");
+    add_spp_option(*cmd, options->spp)
+        ->description("Samples per pixel, a square (default: the lesson's spp:, else 1): the lesson follows the\n"
+                      "sample nearest the pixel's centre, whose branch is the pixel's; {I_mean} is the pixel's value,\n"
+                      "{sample[2].delta} another sample's step")
+        ->default_str("");
     cmd->add_option("--format", options->format, "text: for the terminal; markdown: with $…$ math and tables")
         ->check(CLI::IsMember({"text", "markdown"}))
         ->option_text("text|markdown (default: text)");
@@ -322,6 +330,7 @@ std::function<int()> setup_lesson(CLI::App& app) {
         options->w_given = cmd->get_option("--w")->count() > 0;
         options->real_given = cmd->get_option("--real")->count() > 0;
         options->formula_given = cmd->get_option("--formula")->count() > 0;
+        options->spp_given = cmd->get_option("--spp")->count() > 0;
         return run_lesson(*options);
     };
 }

@@ -27,6 +27,7 @@ struct LessonHeader {
     // real_type_name and formula_name give them.
     std::string real = "double";
     std::string formula = "article";
+    int spp = 1;  // samples per pixel (spp:, --spp): the centre sample tells the story
     int name_line = 1;   // the line of "name:", for messages about the name
     int scene_line = 1;  // the line of "scene:", for messages about the scene
 };

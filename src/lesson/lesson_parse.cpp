@@ -5,6 +5,7 @@
 #include <regex>
 #include <set>
 
+#include "render/samples.hpp"
 #include "lesson/lesson.hpp"
 #include "util/text.hpp"
 #include "trace/messages.hpp"
@@ -14,7 +15,7 @@ namespace promyk {
 
 namespace {
 
-const std::vector<std::string_view> header_fields = {"name", "title", "summary", "scene", "w", "pixels", "columns", "real", "formula"};
+const std::vector<std::string_view> header_fields = {"name", "title", "summary", "scene", "w", "pixels", "columns", "real", "formula", "spp"};
 
 std::vector<std::string> split_lines(std::string_view text) {
     if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // a UTF-8 byte order mark
@@ -245,6 +246,12 @@ private:
             if (!is_formula_name(value))
                 problem(line, "error_header_value", {{"field", field}, {"problem", "article, stable, fma, geometric"}});
             header.formula = value;
+        } else if (field == "spp") {
+            const bool digits = !value.empty() && value.size() <= 4 && value.find_first_not_of("0123456789") == std::string::npos;
+            if (!digits || !valid_spp(std::stoi(value)))
+                problem(line, "error_header_value", {{"field", field}, {"problem", "1, 4, 9, 16, … 1024 (a square)"}});
+            else
+                header.spp = std::stoi(value);
         }
     }
 

@@ -392,6 +392,12 @@ std::optional<StepValue> scene_value(const PixelTrace& trace, const PathGroup& g
 std::optional<StepValue> lesson_value(const PixelTrace& trace, const std::string& key) {
     const std::optional<ValuePath> path = parse_value_path(key);
     if (!path) return std::nullopt;
+    // With samples (--spp), a path that names no sample is read in the centre
+    // sample, whose branch is the pixel's, and then at the top level (I_mean).
+    if (trace.samples && (path->groups.empty() || path->groups.front().kind != "sample")) {
+        const std::string centre = "sample[" + std::to_string(trace.samples->centre) + "]." + key;
+        if (std::optional<StepValue> value = lesson_value(trace, centre)) return value;
+    }
     // The group the path names: each one's parent is the one before it.
     int group = -1;
     for (const PathGroup& wanted : path->groups) {
@@ -605,6 +611,9 @@ std::string render_lesson_title(const LessonView& view) {
     std::string settings;
     if (numbers.real != "double" || numbers.formula != "article")
         settings = message(language, "lesson_numbers", {{"real", numbers.real}, {"formula", numbers.formula}});
+    if (numbers.spp > 1)
+        settings += (settings.empty() ? "" : " ") +
+                    message(language, "lesson_samples", {{"spp", std::to_string(numbers.spp)}});
     if (view.format == LessonFormat::markdown)
         return "# " + heading + "\n\n*" + view.lesson.header.summary + "*\n\n" + setup + (settings.empty() ? "" : "\n\n" + settings) + "\n";
     return bold(view, heading) + "\n" + wrap(view.lesson.header.summary, 0) + "\n" + wrap(setup, 0) + "\n" +
