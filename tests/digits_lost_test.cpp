@@ -83,8 +83,11 @@ TEST_CASE("digits lost: the definition, by hand", "[digits-lost]") {
     // A quad far beyond the range of a double: the logs are taken in quad.
     const quad huge = ldexpq(quad(1), 5000), tiny = ldexpq(quad(1), 4900);
     CHECK(sum_digits_lost(huge, huge - tiny, tiny) == Approx(100 * std::log10(2.0)).margin(1e-9));
-    // Vectors: the worst component; dot products: the largest term.
-    CHECK(sum_digits_lost(Vec3d{1, 100, 5}, Vec3d{0, 99.9, 1}, Vec3d{1, 0.1, 4}) == Approx(3.0).margin(1e-9));
+    // Vectors: the operands' largest component against the result's (100
+    // against 4: the y component's cancellation costs the vector only what
+    // its length says); dot products: the largest term.
+    CHECK(sum_digits_lost(Vec3d{1, 100, 5}, Vec3d{0, 99.9, 1}, Vec3d{1, 0.1, 4}) == Approx(std::log10(25.0)).margin(1e-12));
+    CHECK(sum_digits_lost(Vec3d{1, 100, 5}, Vec3d{1, 100, 5}, Vec3d{0, 0, 0}) == Approx(53 * std::log10(2.0)));
     CHECK(dot_digits_lost(Vec3d{1, 1, 0}, Vec3d{1000, -999, 0}, 1.0) == Approx(3.0).margin(1e-12));
     CHECK(dot_digits_lost(Vec3d{1, 2, 3}, Vec3d{1, 1, 1}, 6.0) == 0);
 }
@@ -99,11 +102,13 @@ TEST_CASE("digits lost: the article's pixel (3, 4), by hand", "[digits-lost]") {
     CHECK(step_of(trace.steps, Key::t).digits_lost == Approx(std::log10(6.4 / (6.4 - root))).epsilon(1e-9));
     // C = 0.125*0 + 0.125*0 + 2*3.2: nothing cancels.
     CHECK(step_of(trace.steps, Key::C).digits_lost == 0);
-    // N = P - S: the z component, P.z against P.z - 3.2.
+    // N = P - S: the largest operand 3.2 (S.z) against N's largest
+    // component, its z, P.z - 3.2.
     const Vec3d P = std::get<Vec3d>(step_of(trace.steps, Key::P).value);
     CHECK(step_of(trace.steps, Key::N).digits_lost == Approx(std::log10(3.2 / (3.2 - P.z))).epsilon(1e-9));
-    // K = L - P: the z component, 1 - P.z, is the worst.
-    CHECK(step_of(trace.steps, Key::K).digits_lost == Approx(std::log10(P.z / (P.z - 1))).epsilon(1e-9));
+    // K = L - P: the largest operand P.z (about 2.1) against K's largest
+    // component, its x, 1.5 - P.x.
+    CHECK(step_of(trace.steps, Key::K).digits_lost == Approx(std::log10(P.z / (1.5 - P.x))).epsilon(1e-9));
     // D: three positive terms, nothing cancels.
     CHECK(step_of(trace.steps, Key::D).digits_lost == 0);
     // No estimate where nothing is subtracted.

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <memory>
 #include <optional>
+#include <iterator>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -22,6 +23,7 @@
 #include "app/common_options.hpp"
 #include "app/progress.hpp"
 #include "render/image_writer.hpp"
+#include "render/maps.hpp"
 #include "render/renderer.hpp"
 #include "render/stages.hpp"
 #include "render/trace_size.hpp"
@@ -53,6 +55,7 @@ struct RenderOptions {
     std::vector<std::string> trace_pixels;
     std::vector<std::string> trace_regions;
     bool force = false;
+    std::string map;  // empty: the shading; else a map_name (render/maps.hpp)
 };
 
 // Streams rows into the image and trace lines into the traces file; regular
@@ -156,12 +159,36 @@ void check_scale(const RenderOptions& options) {
                                      options.scale));
 }
 
-std::string image_description(const RenderOptions& options, const Scene& scene) {
+std::string image_description(const RenderOptions& options, const Scene& scene, const MapKernel* map) {
+    const std::string what = map ? fmt::format("{}, ", map->description()) : std::string();
     if (options.scale == 1 && !options.grid)
-        return fmt::format("{} × {} pixels, scene \"{}\"", options.w, options.w, scene.name);
+        return fmt::format("{}{} × {} pixels, scene \"{}\"", what, options.w, options.w, scene.name);
     const long side = scaled_side(options.w, options.scale, options.grid);
-    return fmt::format("{} × {} pixels: the {} × {} pane at scale {}{}, scene \"{}\"", side, side, options.w,
-                       options.w, options.scale, options.grid ? " with a grid" : "", scene.name);
+    return fmt::format("{}{} × {} pixels: the {} × {} pane at scale {}{}, scene \"{}\"", what, side, side,
+                       options.w, options.w, options.scale, options.grid ? " with a grid" : "", scene.name);
+}
+
+// A map's categories on stderr, each with its count and its first pixel in
+// row order, to trace: the legend a teacher reads beside the image.
+void print_map_stats(const MapKernel& map, const RenderOptions& options) {
+    const MapTally tally = map.tally();
+    fmt::print(stderr, "statistics ({}; the first pixel of each, in row order, to look at with promyk trace --pixel "
+                       "I,J --w {}{}{}{}{}):\n",
+               map.description(), options.w, options.scene_file.empty() ? "" : " --scene " + printable(options.scene_file),
+               options.real == RealType::double_ ? "" : fmt::format(" --real {}", real_type_name(options.real)),
+               options.formula == Formula::article ? "" : fmt::format(" --formula {}", formula_name(options.formula)),
+               options.spp == 1 ? "" : fmt::format(" --spp {}", options.spp));
+    for (const MapTally::Category& category : tally.categories) {
+        if (category.count == 0 && !category.listed_if_empty) continue;
+        if (category.count == 0) {
+            fmt::print(stderr, "  {}: 0 pixels\n", category.name);
+        } else {
+            fmt::print(stderr, "  {}: {} {}, e.g. ({}, {})\n", category.name, category.count,
+                       category.count == 1 ? "pixel" : "pixels", category.first_i, category.first_j);
+        }
+    }
+    if (tally.has_largest)
+        fmt::print(stderr, "  largest: {:.3g} at ({}, {})\n", tally.largest, tally.largest_i, tally.largest_j);
 }
 
 // What the engine did, on stderr: the stages it ran, rays by kind,
@@ -198,8 +225,16 @@ int run_render(const RenderOptions& options) {
     }
 
     const Scene scene = cli::load_scene_option(options.scene_file);
-    // A coloured scene needs an RGB format: refused before any file is created.
-    const int channels = image_channels(scene);
+    // A coloured scene and a map need an RGB format: refused before any file is created.
+    std::optional<MapKind> map_kind;
+    if (!options.map.empty()) {
+        map_kind = parse_map_name(options.map);
+        if (format == ImageFormat::pgm || format == ImageFormat::pgm_plain)
+            throw UsageError(fmt::format("{}: PGM holds grey levels only and a --map image is in colour; write .png "
+                                         "or .ppm",
+                                         options.output));
+    }
+    const int channels = map_kind ? 3 : image_channels(scene);
     check_image_format(format, channels, options.output);
 
     // The size guard protects disks: it applies where the traces land in a
@@ -227,10 +262,16 @@ int run_render(const RenderOptions& options) {
 
     std::int64_t trace_count = 0;
     RenderStats stats;
+    std::unique_ptr<MapKernel> map;
+    if (map_kind) map = make_map_kernel(*map_kind, scene, options.real, options.formula, options.spp, options.w);
     {
         Progress progress("promyk render", "rows");
         FileSink sink(*image, traces ? &*traces : nullptr, progress);
-        render(scene, {options.w, options.threads, options.real, options.formula, options.spp}, traced.selection, sink, &stats);
+        const RenderSettings settings{options.w, options.threads, options.real, options.formula, options.spp};
+        if (map)
+            render(*map, scene, settings, traced.selection, sink, &stats);
+        else
+            render(scene, settings, traced.selection, sink, &stats);
         trace_count = sink.trace_count();
     }
     image->finish();
@@ -239,7 +280,7 @@ int run_render(const RenderOptions& options) {
     // Status on stderr: standard output carries only the product (-o -, --traces -).
     const std::string image_name =
         image_target.kind == OutputKind::standard_output ? "PNG to standard output" : options.output;
-    fmt::print(stderr, "wrote {} ({})\n", printable(image_name), printable(image_description(options, scene)));
+    fmt::print(stderr, "wrote {} ({})\n", printable(image_name), printable(image_description(options, scene, map.get())));
     if (traces) {
         fmt::print(stderr, "wrote {} ({} {}, {})\n",
                    traces->target().kind == OutputKind::standard_output ? "traces to standard output"
@@ -257,7 +298,12 @@ int run_render(const RenderOptions& options) {
                    stats.first_non_finite_i, stats.first_non_finite_j, options.w,
                    options.scene_file.empty() ? "" : " --scene " + printable(options.scene_file));
     }
-    if (options.stats) print_stats(stats, scene, options.spp);
+    if (options.stats) {
+        if (map)
+            print_map_stats(*map, options);
+        else
+            print_stats(stats, scene, options.spp);
+    }
     return 0;
 }
 
@@ -304,6 +350,28 @@ std::function<int()> setup_render(CLI::App& app) {
         ->type_name("I0,J0,I1,J1")
         ->allow_extra_args(false);
     cmd->add_flag("--force", options->force, "Write a trace file even if it would be larger than about 1 GB");
+    const CLI::Validator map_names(
+        [](std::string& text) {
+            std::string names;
+            const std::size_t count = std::size(map_kinds);
+            for (std::size_t k = 0; k < count; ++k) {
+                if (text == map_name(map_kinds[k])) return std::string();
+                names += (k == 0 ? "" : k + 1 == count ? " or " : ", ") + std::string(map_name(map_kinds[k]));
+            }
+            return "expects " + names + ", got " + text;
+        },
+        "", "");
+    cmd->add_option("--map", options->map,
+                    "Draw a per-pixel quantity instead of the shading, in colour (.png or .ppm; README: Maps):\n"
+                    "branch: the branch taken (miss, dark, lit, shadowed, non-finite) and the notes tangent\n"
+                    "and behind the eye, in Okabe-Ito colours; error: |I - I_ref| against quad with the\n"
+                    "geometric formula on a log scale 1e-20 .. 1, white where exact, vermillion where the\n"
+                    "branch differs; digits-lost: the most significant digits any step loses to\n"
+                    "cancellation (as trace marks them), one colour step a digit, white where none.\n"
+                    "--real, --formula and --spp choose what is mapped; --stats counts each category and\n"
+                    "names its first pixel")
+        ->type_name("branch|error|digits-lost")
+        ->check(map_names);
     cmd->footer("Intensity maps to 8-bit grey as round(clamp(v, 0, 1) * 255).");
     return [options] { return run_render(*options); };
 }

@@ -96,4 +96,10 @@ std::string real_text(double x);
 std::string real_text(long double x);
 std::string real_text(quad x);
 
+// |x| in any real type, quad included (std::fabs does not take one).
+template <class Real>
+Real magnitude(Real x) {
+    return x < 0 ? -x : x;
+}
+
 }  // namespace promyk

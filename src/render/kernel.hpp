@@ -10,6 +10,7 @@
 
 #include "geometry/formula.hpp"
 #include "math/real.hpp"
+#include "render/notes.hpp"
 #include "render/stages.hpp"
 #include "scene/scene.hpp"
 #include "trace/keys.hpp"
@@ -39,12 +40,18 @@ public:
     // grey level in all three channels, or r, g, b; and its branch. For
     // tests and benchmarks: traced and untraced must agree bit for bit.
     virtual Vec3d intensity(int w, int i, int j, Branch* branch = nullptr) const = 0;
+    // The same intensity converted exactly to quad (every real type's values
+    // are quads), for comparisons finer than a double's ulp (render --map error).
+    virtual Vec3<quad> exact_intensity(int w, int i, int j, Branch* branch = nullptr) const = 0;
     // Traces pixel (i, j) of the header's pane (header.w).
     virtual PixelTrace trace(const TraceHeader& header, int i, int j) const = 0;
     // The most digits any step of pixel (i, j) loses to cancellation (the
     // largest of the trace's digits_lost (of all its samples), unrounded; 0 when no step has an
     // estimate), computed without building a trace: for a map of digits lost.
     virtual double digits_lost(int w, int i, int j) const = 0;
+    // Pixel (i, j)'s branch (as intensity gives it) and its notes, tangent
+    // and behind the eye (render/notes.hpp: the centre sample's when spp > 1).
+    virtual PixelNotes notes(int w, int i, int j) const = 0;
     const Stages& stages() const { return stages_; }
     // Samples per pixel (render/samples.hpp): 1 is the pixel's centre.
     int spp() const { return spp_; }

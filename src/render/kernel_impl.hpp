@@ -13,6 +13,7 @@
 #include "math/real.hpp"
 #include "render/general_tracer.hpp"
 #include "render/kernel.hpp"
+#include "render/notes.hpp"
 #include "render/pane.hpp"
 #include "render/quantize.hpp"
 #include "render/renderer.hpp"
@@ -75,6 +76,14 @@ inline void begin_sample(RecordingRecorder& recorder, int i, int j, int s, int s
     recorder(Key::sample_v, o.v);
 }
 
+// The ray whose notes are the pixel's: its centre with one sample, else the
+// sample nearest the centre (whose branch is the pixel's).
+template <class Real>
+Vec3<Real> notes_ray(int w, int i, int j, int spp, Real z_E) {
+    if (spp == 1) return pane_point(i, j, w, z_E);
+    return sample_point<Real>(i, j, w, z_E, sample_offset(i, j, centre_sample(i, j, spp), spp));
+}
+
 // Ignores each sample's result (rendering).
 struct IgnoreSample {
     template <class Result>
@@ -109,18 +118,18 @@ public:
         }
     }
     Vec3d intensity(int w, int i, int j, Branch* branch) const override {
-        NullRecorder none;
-        double I_P;
-        if (spp() > 1) {
-            const auto pixel = sampled(w, i, j, none, IgnoreSample{});
-            if (branch) *branch = pixel.branch;
-            I_P = static_cast<double>(pixel.I_P);
-        } else {
-            const PixelResult<Real> pixel = trace_pixel_ray<F>(world_, w, i, j, none);
-            if (branch) *branch = pixel.branch;
-            I_P = static_cast<double>(pixel.I_P);
-        }
-        return {I_P, I_P, I_P};
+        return intensity_as<double>(w, i, j, branch);
+    }
+    Vec3<quad> exact_intensity(int w, int i, int j, Branch* branch) const override {
+        return intensity_as<quad>(w, i, j, branch);
+    }
+    PixelNotes notes(int w, int i, int j) const override {
+        NotesRecorder<Real> record;
+        const PixelResult<Real> ray = trace_ray<F>(world_, notes_ray(w, i, j, spp(), world_.z_E), record);
+        Branch branch = ray.branch;
+        if (spp() > 1) intensity(w, i, j, &branch);
+        // One sphere: a ray that is not a miss shows it (a non-finite one too).
+        return record.notes(branch, ray.branch == Branch::miss, ray.branch == Branch::miss ? -1 : 0);
     }
     double digits_lost(int w, int i, int j) const override {
         DigitsRecorder digits;  // the most any step of any sample lost
@@ -149,6 +158,23 @@ public:
     }
 
 private:
+    // The pixel's intensity in Real, converted to Out.
+    template <class Out>
+    Vec3<Out> intensity_as(int w, int i, int j, Branch* branch) const {
+        NullRecorder none;
+        Out I_P;
+        if (spp() > 1) {
+            const auto pixel = sampled(w, i, j, none, IgnoreSample{});
+            if (branch) *branch = pixel.branch;
+            I_P = static_cast<Out>(pixel.I_P);
+        } else {
+            const PixelResult<Real> pixel = trace_pixel_ray<F>(world_, w, i, j, none);
+            if (branch) *branch = pixel.branch;
+            I_P = static_cast<Out>(pixel.I_P);
+        }
+        return {I_P, I_P, I_P};
+    }
+
     // Pixel (i, j) from its samples; on_result sees each sample's result.
     template <class Recorder, class OnResult>
     SampledPixel<Real> sampled(int w, int i, int j, Recorder& record, OnResult&& on_result) const {
@@ -232,16 +258,20 @@ public:
     }
 
     Vec3d intensity(int w, int i, int j, Branch* branch) const override {
-        NullRecorder none;
+        return intensity_as<double>(w, i, j, branch);
+    }
+    Vec3<quad> exact_intensity(int w, int i, int j, Branch* branch) const override {
+        return intensity_as<quad>(w, i, j, branch);
+    }
+
+    PixelNotes notes(int w, int i, int j) const override {
+        NotesRecorder<Real> record;
         WorkCounts work;
-        if (spp() > 1) {
-            const Pixel pixel = sampled(w, i, j, work, none, IgnoreSample{});
-            if (branch) *branch = pixel.branch;
-            return as_rgb(pixel.I_P);
-        }
-        const Result pixel = trace_general<Sw, F>(world_, pane_point(i, j, w, world_.z_E), work, none);
-        if (branch) *branch = pixel.branch;
-        return as_rgb(pixel.I_P);
+        const Result ray =
+            trace_general<Sw, F>(world_, notes_ray(w, i, j, spp(), world_.z_E), work, record);
+        Branch branch = ray.branch;
+        if (spp() > 1) intensity(w, i, j, &branch);
+        return record.notes(branch, ray.hit_kind == 0, ray.hit_kind == 1 ? ray.hit_index : -1);
     }
 
     double digits_lost(int w, int i, int j) const override {
@@ -293,11 +323,26 @@ private:
             on_result);
     }
 
-    static Vec3d as_rgb(const typename World<Real, Rgb>::Intensity& I_P) {
+    template <class Out>
+    Vec3<Out> intensity_as(int w, int i, int j, Branch* branch) const {
+        NullRecorder none;
+        WorkCounts work;
+        if (spp() > 1) {
+            const Pixel pixel = sampled(w, i, j, work, none, IgnoreSample{});
+            if (branch) *branch = pixel.branch;
+            return as_rgb<Out>(pixel.I_P);
+        }
+        const Result pixel = trace_general<Sw, F>(world_, pane_point(i, j, w, world_.z_E), work, none);
+        if (branch) *branch = pixel.branch;
+        return as_rgb<Out>(pixel.I_P);
+    }
+
+    template <class Out>
+    static Vec3<Out> as_rgb(const typename World<Real, Rgb>::Intensity& I_P) {
         if constexpr (Rgb) {
-            return to_double(I_P);
+            return {static_cast<Out>(I_P.x), static_cast<Out>(I_P.y), static_cast<Out>(I_P.z)};
         } else {
-            const double grey = static_cast<double>(I_P);
+            const Out grey = static_cast<Out>(I_P);
             return {grey, grey, grey};
         }
     }

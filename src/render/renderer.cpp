@@ -209,25 +209,30 @@ int image_channels(const Scene& scene) { return is_coloured(scene) ? 3 : 1; }
 
 void render(const Scene& scene, const RenderSettings& settings, const PixelSelection& traced, RenderSink& sink,
             RenderStats* stats) {
+    const std::unique_ptr<Kernel> kernel = make_kernel(scene, settings.real, settings.formula, settings.spp);
+    render(*kernel, scene, settings, traced, sink, stats);
+}
+
+void render(const Kernel& kernel, const Scene& scene, const RenderSettings& settings, const PixelSelection& traced,
+            RenderSink& sink, RenderStats* stats) {
     RenderStats local_stats;
     RenderStats& out_stats = stats != nullptr ? *stats : local_stats;
     out_stats = RenderStats{};
-    const std::unique_ptr<Kernel> kernel = make_kernel(scene, settings.real, settings.formula, settings.spp);
     const int w = settings.w;
     const int threads = std::min(resolve_threads(settings.threads), w);
     const int rows_per_band = band_rows(w, threads, !traced.empty());
     TraceHeader header = trace_header(scene, w);
-    header.spp = settings.spp;
+    header.spp = kernel.spp();
 
     // Two bands: while the helpers compute one, the calling thread hands the
     // other to the sink (PNG compression, trace writing), then joins them.
     Band bands[2];
     for (Band& band : bands) {
-        band.pixels.resize(static_cast<std::size_t>(rows_per_band) * w * kernel->channels());
+        band.pixels.resize(static_cast<std::size_t>(rows_per_band) * w * kernel.channels());
         band.traces.resize(static_cast<std::size_t>(rows_per_band));
         band.counts.resize(static_cast<std::size_t>(rows_per_band));
     }
-    BandWork work(*kernel, header, traced);
+    BandWork work(kernel, header, traced);
     const RowsComputed rows_computed{work, out_stats};
     Helpers helpers(work);
 
@@ -244,7 +249,7 @@ void render(const Scene& scene, const RenderSettings& settings, const PixelSelec
             next.start(done.first_row + done.count, rows_per_band, w);
             helpers.start(threads - 1, next);
         }
-        deliver(done, w, settings.spp, sink, out_stats);
+        deliver(done, w, kernel.spp(), sink, out_stats);
         if (!more) break;
         work(next);
         helpers.join();

@@ -64,4 +64,10 @@ RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8
 void render(const Scene& scene, const RenderSettings& settings, const PixelSelection& traced, RenderSink& sink,
             RenderStats* stats = nullptr);
 
+// The same with a kernel made by the caller (a map, render/maps.hpp, made
+// for this scene): its rows are what the sink receives; settings.real,
+// formula and spp are the kernel's, only w and threads are read.
+void render(const Kernel& kernel, const Scene& scene, const RenderSettings& settings, const PixelSelection& traced,
+            RenderSink& sink, RenderStats* stats = nullptr);
+
 }  // namespace promyk

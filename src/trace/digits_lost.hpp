@@ -10,7 +10,8 @@
 // operands are 0, nothing is lost (0). A non-finite operand or result gives
 // no estimate (NaN here; no `digits_lost` in the trace).
 //
-// A vector difference (N = P - S, K = L - P) takes its worst component; a dot
+// A vector difference (N = P - S, K = L - P) takes the largest component of
+// its operands against the result's largest (max-norms); a dot
 // product x_P x_Q + y_P y_Q + z_P z_Q takes its largest term as the operand
 // (max |term| / |sum|). Everything is computed from the values of the actual
 // type: each magnitude's log10 in its own type (a quad's magnitude may lie
@@ -68,11 +69,6 @@ bool finite(Real x) {
     return x * Real(0) == Real(0);
 }
 
-template <class Real>
-Real magnitude(Real x) {
-    return x < 0 ? -x : x;
-}
-
 }  // namespace digits_detail
 
 // The digits lost by a result whose largest operand has magnitude
@@ -96,14 +92,21 @@ double sum_digits_lost(Real a, Real b, Real c) {
     return digits_lost(std::max(magnitude(a), magnitude(b)), c);
 }
 
-// C = A - B or A + B, component by component: the worst component (NaN when
-// any component has no estimate).
+// C = A - B or A + B, component by component: the vector's error, about
+// the operands' largest component times the type's epsilon, against the
+// result's largest component (max-norms). Not the worst component: one that
+// cancels to nothing in a vector that is long in another direction costs
+// the vector no digits (NaN when a component is not finite).
 template <class Real>
 double sum_digits_lost(const Vec3<Real>& A, const Vec3<Real>& B, const Vec3<Real>& C) {
-    const double x = sum_digits_lost(A.x, B.x, C.x), y = sum_digits_lost(A.y, B.y, C.y),
-                 z = sum_digits_lost(A.z, B.z, C.z);
-    if (std::isnan(x) || std::isnan(y) || std::isnan(z)) return std::numeric_limits<double>::quiet_NaN();
-    return std::max({x, y, z});
+    using namespace digits_detail;
+    Real largest = 0, result = 0;
+    for (const Real x : {A.x, A.y, A.z, B.x, B.y, B.z}) {
+        if (!finite(x)) return std::numeric_limits<double>::quiet_NaN();
+        largest = std::max(largest, magnitude(x));
+    }
+    for (const Real x : {C.x, C.y, C.z}) result = std::max(result, magnitude(x));
+    return digits_lost(largest, result);
 }
 
 // sum = P.Q: the largest term against the sum.

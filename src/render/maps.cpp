@@ -1,0 +1,414 @@
+#include "render/maps.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "math/real.hpp"
+
+namespace promyk {
+
+namespace {
+
+// Okabe & Ito, "Color Universal Design" (2008): eight colours told apart
+// with every common colour-vision deficiency.
+constexpr Rgb8 rgb(std::uint32_t hex) {
+    return {static_cast<std::uint8_t>(hex >> 16), static_cast<std::uint8_t>(hex >> 8), static_cast<std::uint8_t>(hex)};
+}
+
+// Indexed by BranchCategory. Miss is the light sky blue of a background,
+// dark the black of the article's 0, lit the warm orange, shadowed the deep
+// blue; the notes take the two colours that stand out most against these.
+const std::array<LegendColour, branch_category_count> branch_colours = {{
+    {"miss", "sky blue", "#56B4E9", rgb(0x56B4E9)},
+    {"dark", "black", "#000000", rgb(0x000000)},
+    {"lit", "orange", "#E69F00", rgb(0xE69F00)},
+    {"shadowed", "blue", "#0072B2", rgb(0x0072B2)},
+    {"non-finite", "reddish purple", "#CC79A7", rgb(0xCC79A7)},
+    {"tangent", "yellow", "#F0E442", rgb(0xF0E442)},
+    {"behind the eye", "bluish green", "#009E73", rgb(0x009E73)},
+}};
+
+const LegendColour exact{"exact", "white", "#FFFFFF", rgb(0xFFFFFF)};
+const LegendColour none_lost{"none lost", "white", "#FFFFFF", rgb(0xFFFFFF)};
+const LegendColour differs{"branch differs", "vermillion", "#D55E00", rgb(0xD55E00)};
+const LegendColour non_finite_error{"non-finite", "reddish purple", "#CC79A7", rgb(0xCC79A7)};
+
+// Viridis (matplotlib), at t = 0, 1/8, ..., 1.
+constexpr std::array<Rgb8, 9> viridis = {rgb(0x440154), rgb(0x472D7B), rgb(0x3B528B), rgb(0x2C728E), rgb(0x21918C),
+                                         rgb(0x28AE80), rgb(0x5EC962), rgb(0xADDC30), rgb(0xFDE725)};
+
+void put(std::uint8_t* out, int j, Rgb8 colour) {
+    out[3 * j] = colour.r;
+    out[3 * j + 1] = colour.g;
+    out[3 * j + 2] = colour.b;
+}
+
+// One row's counts per category: written by the thread that computes the
+// row, read after render() has joined its threads.
+struct RowTally {
+    std::vector<int> counts;
+    std::vector<int> first_j;
+    double largest = -1;
+    int largest_j = -1;
+
+    void reset(int categories) {
+        counts.assign(static_cast<std::size_t>(categories), 0);
+        first_j.assign(static_cast<std::size_t>(categories), -1);
+        largest = -1;
+        largest_j = -1;
+    }
+    void add(int category, int j) {
+        const auto k = static_cast<std::size_t>(category);
+        if (counts[k]++ == 0) first_j[k] = j;
+    }
+};
+
+// Sums the rows in order, so each category's first pixel is its first in row order.
+MapTally sum_rows(const std::vector<RowTally>& rows, std::vector<std::string> names, int first_step = 0,
+                  int steps = 0) {
+    MapTally tally;
+    for (std::string& name : names) tally.categories.push_back({std::move(name), 0, -1, -1});
+    for (int k = first_step; k < first_step + steps; ++k)
+        tally.categories[static_cast<std::size_t>(k)].listed_if_empty = false;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const RowTally& row = rows[i];
+        if (row.counts.empty()) continue;  // not computed (interrupted)
+        for (std::size_t k = 0; k < tally.categories.size(); ++k) {
+            MapTally::Category& category = tally.categories[k];
+            if (row.counts[k] > 0 && category.count == 0) {
+                category.first_i = static_cast<int>(i);
+                category.first_j = row.first_j[k];
+            }
+            category.count += row.counts[k];
+        }
+        if (row.largest_j >= 0 && (!tally.has_largest || row.largest > tally.largest)) {
+            tally.has_largest = true;
+            tally.largest = row.largest;
+            tally.largest_i = static_cast<int>(i);
+            tally.largest_j = row.largest_j;
+        }
+    }
+    return tally;
+}
+
+// A map drawn from a kernel's pixels: the traces, intensities and notes are
+// the computed kernel's, so --traces beside a map traces what it shows.
+class MapOf : public MapKernel {
+public:
+    MapOf(std::unique_ptr<Kernel> kernel, int w)
+        : MapKernel(kernel->stages(), kernel->spp()), kernel_(std::move(kernel)), rows_(static_cast<std::size_t>(w)) {}
+    int channels() const override { return 3; }
+    Vec3d intensity(int w, int i, int j, Branch* branch) const override { return kernel_->intensity(w, i, j, branch); }
+    Vec3<quad> exact_intensity(int w, int i, int j, Branch* branch) const override {
+        return kernel_->exact_intensity(w, i, j, branch);
+    }
+    PixelTrace trace(const TraceHeader& header, int i, int j) const override { return kernel_->trace(header, i, j); }
+    PixelNotes notes(int w, int i, int j) const override { return kernel_->notes(w, i, j); }
+    double digits_lost(int w, int i, int j) const override { return kernel_->digits_lost(w, i, j); }
+
+protected:
+    const Kernel& kernel() const { return *kernel_; }
+    RowTally& row_tally(int i) const { return rows_[static_cast<std::size_t>(i)]; }
+    const std::vector<RowTally>& rows() const { return rows_; }
+
+    static void count_branch(RowCounts& counts, Branch branch, int j) {
+        ++counts.branches[static_cast<int>(branch)];
+        if (branch == Branch::non_finite && counts.first_non_finite_j < 0) counts.first_non_finite_j = j;
+    }
+
+private:
+    std::unique_ptr<Kernel> kernel_;
+    mutable std::vector<RowTally> rows_;  // one per row, each written by one thread
+};
+
+class BranchMap final : public MapOf {
+public:
+    using MapOf::MapOf;
+
+    RowCounts row(int w, int i, std::uint8_t* out) const override {
+        RowCounts counts;
+        RowTally& tally = row_tally(i);
+        tally.reset(branch_category_count);
+        for (int j = 0; j < w; ++j) {
+            const PixelNotes notes = kernel().notes(w, i, j);
+            count_branch(counts, notes.branch, j);
+            const BranchCategory category = branch_category(notes);
+            tally.add(static_cast<int>(category), j);
+            put(out, j, branch_colour(category).rgb);
+        }
+        return counts;
+    }
+
+    MapTally tally() const override {
+        std::vector<std::string> names;
+        for (const LegendColour& colour : branch_colours) names.emplace_back(colour.category);
+        return sum_rows(rows(), std::move(names));
+    }
+
+    std::string description() const override { return "branch map"; }
+};
+
+// A pixel of a map of one number: the number, or one of the cases that have
+// a colour of their own.
+struct ScalarPixel {
+    enum class Kind { value, zero, branch_differs, non_finite };
+    Kind kind = Kind::value;
+    Branch branch = Branch::miss;  // the computed pixel's
+    double value = 0;              // for Kind::value: finite, > 0
+};
+
+// A map of one number a pixel on a ColourScale, with its categories: the
+// zero case, one per decade (a log scale) or tenth (a linear one) of the
+// scale, below and above it, branch differs and non-finite. The error map is
+// one; a digits-lost map would be another, with its own value and scale.
+class ScalarMap : public MapOf {
+public:
+    // `zero` names the value 0's colour; `compares`: whether pixels are
+    // compared with a reference (a branch can differ from its branch).
+    ScalarMap(std::unique_ptr<Kernel> kernel, int w, const ColourScale& scale, const LegendColour& zero, bool compares)
+        : MapOf(std::move(kernel), w), scale_(scale), zero_(zero), compares_(compares) {}
+
+    RowCounts row(int w, int i, std::uint8_t* out) const override {
+        RowCounts counts;
+        RowTally& tally = row_tally(i);
+        tally.reset(category_count());
+        for (int j = 0; j < w; ++j) {
+            const ScalarPixel pixel = value(w, i, j);
+            count_branch(counts, pixel.branch, j);
+            Rgb8 colour;
+            int category;
+            switch (pixel.kind) {
+                case ScalarPixel::Kind::zero:
+                    colour = zero_.rgb, category = 0;
+                    break;
+                case ScalarPixel::Kind::branch_differs:
+                    colour = branch_differs_colour().rgb, category = category_count() - 2;
+                    break;
+                case ScalarPixel::Kind::non_finite:
+                    colour = non_finite_error_colour().rgb, category = category_count() - 1;
+                    break;
+                case ScalarPixel::Kind::value:
+                default:
+                    colour = scale_(pixel.value), category = 1 + bin(pixel.value);
+                    if (pixel.value > tally.largest) tally.largest = pixel.value, tally.largest_j = j;
+                    break;
+            }
+            tally.add(category, j);
+            put(out, j, colour);
+        }
+        return counts;
+    }
+
+    MapTally tally() const override {
+        std::vector<std::string> names;
+        names.emplace_back(zero_.category);
+        for (int b = 0; b < bins(); ++b) names.push_back(bin_name(b));
+        names.emplace_back(branch_differs_colour().category);
+        names.emplace_back(non_finite_error_colour().category);
+        MapTally tally = sum_rows(rows(), std::move(names), 1, bins());
+        // Without a reference no branch can differ: not listed.
+        if (!compares_) tally.categories[static_cast<std::size_t>(category_count() - 2)].listed_if_empty = false;
+        return tally;
+    }
+
+protected:
+    virtual ScalarPixel value(int w, int i, int j) const = 0;
+
+private:
+    // Steps of the scale: decades on a log axis, tenths on a linear one;
+    // plus one below and one at or above its ends.
+    int steps() const {
+        return scale_.logarithmic() ? static_cast<int>(std::lround(std::log10(scale_.high() / scale_.low())))
+                                    : scale_.linear_steps();
+    }
+    int bins() const { return steps() + 2; }
+    int category_count() const { return bins() + 3; }
+    double edge(int k) const {  // the lower end of step k
+        return scale_.logarithmic() ? scale_.low() * std::pow(10.0, k)
+                                    : scale_.low() + (scale_.high() - scale_.low()) * k / steps();
+    }
+    int bin(double value) const {
+        if (value < scale_.low()) return 0;
+        if (value >= scale_.high()) return bins() - 1;
+        int k = scale_.logarithmic() ? static_cast<int>(std::floor(std::log10(value / scale_.low())))
+                                     : static_cast<int>(std::floor((value - scale_.low()) / (scale_.high() - scale_.low()) * steps()));
+        k = std::clamp(k, 0, steps() - 1);
+        // log10 may round across a decade's edge: settle it by comparing.
+        if (value < edge(k) && k > 0) --k;
+        if (k + 1 < steps() && value >= edge(k + 1)) ++k;
+        return 1 + k;
+    }
+    std::string bin_name(int b) const {
+        if (b == 0) return fmt::format("below {:g}", scale_.low());
+        if (b == bins() - 1) return fmt::format("{:g} or more", scale_.high());
+        return fmt::format("{:g} to {:g}", edge(b - 1), edge(b));
+    }
+
+    ColourScale scale_;
+    const LegendColour& zero_;
+    bool compares_;
+};
+
+// |I - I_ref|, the largest over r, g, b, against the same pixel in quad with
+// the geometric formula at the same samples per pixel. The intensities are
+// compared as Kernel::intensity gives them, rounded to double.
+class ErrorMap final : public ScalarMap {
+public:
+    ErrorMap(std::unique_ptr<Kernel> kernel, std::unique_ptr<Kernel> reference, int w)
+        : ScalarMap(std::move(kernel), w, error_scale(), exact_colour(), true), reference_(std::move(reference)) {}
+
+    std::string description() const override { return "error map against quad with the geometric formula"; }
+
+protected:
+    ScalarPixel value(int w, int i, int j) const override {
+        ScalarPixel pixel;
+        Branch reference_branch;
+        const Vec3<quad> I = kernel().exact_intensity(w, i, j, &pixel.branch);
+        const Vec3<quad> I_ref = reference_->exact_intensity(w, i, j, &reference_branch);
+        if (pixel.branch != reference_branch) {
+            pixel.kind = ScalarPixel::Kind::branch_differs;
+            return pixel;
+        }
+        // In quad, where both sides are exact: a float's or a long double's
+        // error is not blurred by rounding each side to double first.
+        quad error = 0;
+        bool finite = true;
+        for (const quad difference : {I.x - I_ref.x, I.y - I_ref.y, I.z - I_ref.z}) {
+            // NaN fails every comparison: a NaN or an infinity on either side is non-finite.
+            if (!(fabsq(difference) <= RealTraits<quad>::max())) finite = false;
+            else if (fabsq(difference) > error) error = fabsq(difference);
+        }
+        if (!finite)
+            pixel.kind = ScalarPixel::Kind::non_finite;
+        else if (error == 0)
+            pixel.kind = ScalarPixel::Kind::zero;
+        else
+            pixel.value = std::max(static_cast<double>(error), std::numeric_limits<double>::denorm_min());
+        return pixel;
+    }
+
+private:
+    std::unique_ptr<Kernel> reference_;
+};
+
+// The most digits any traced step of the pixel loses to cancellation
+// (Kernel::digits_lost: the trace's largest digits_lost, of any sample).
+class DigitsLostMap final : public ScalarMap {
+public:
+    DigitsLostMap(std::unique_ptr<Kernel> kernel, int w, RealType real)
+        : ScalarMap(std::move(kernel), w, digits_lost_scale(real), none_lost_colour(), false) {}
+
+    std::string description() const override { return "digits-lost map"; }
+
+protected:
+    ScalarPixel value(int w, int i, int j) const override {
+        ScalarPixel pixel;
+        kernel().intensity(w, i, j, &pixel.branch);
+        const double digits = kernel().digits_lost(w, i, j);
+        if (pixel.branch == Branch::non_finite)
+            pixel.kind = ScalarPixel::Kind::non_finite;
+        else if (!(digits > 0))
+            pixel.kind = ScalarPixel::Kind::zero;
+        else
+            pixel.value = digits;
+        return pixel;
+    }
+};
+
+}  // namespace
+
+std::string_view map_name(MapKind kind) {
+    switch (kind) {
+        case MapKind::error:
+            return "error";
+        case MapKind::digits_lost:
+            return "digits-lost";
+        case MapKind::branch:
+            break;
+    }
+    return "branch";
+}
+
+std::optional<MapKind> parse_map_name(std::string_view name) {
+    for (const MapKind kind : map_kinds)
+        if (map_name(kind) == name) return kind;
+    return std::nullopt;
+}
+
+const LegendColour& branch_colour(BranchCategory category) {
+    return branch_colours[static_cast<std::size_t>(category)];
+}
+
+BranchCategory branch_category(const PixelNotes& notes) {
+    if (notes.branch == Branch::non_finite) return BranchCategory::non_finite;
+    if (notes.tangent) return BranchCategory::tangent;
+    if (notes.behind) return BranchCategory::behind;
+    switch (notes.branch) {
+        case Branch::dark:
+            return BranchCategory::dark;
+        case Branch::lit:
+            return BranchCategory::lit;
+        case Branch::shadowed:
+            return BranchCategory::shadowed;
+        case Branch::non_finite:
+            return BranchCategory::non_finite;
+        case Branch::miss:
+            break;
+    }
+    return BranchCategory::miss;
+}
+
+Rgb8 ColourScale::ramp(double t) {
+    if (!(t > 0)) return viridis.front();
+    if (t >= 1) return viridis.back();
+    const double x = t * (viridis.size() - 1);
+    const auto k = static_cast<std::size_t>(x);
+    const double f = x - static_cast<double>(k);
+    const Rgb8 a = viridis[k], b = viridis[k + 1];
+    auto mix = [f](std::uint8_t p, std::uint8_t q) {
+        return static_cast<std::uint8_t>(std::lround(p + f * (static_cast<double>(q) - p)));
+    };
+    return {mix(a.r, b.r), mix(a.g, b.g), mix(a.b, b.b)};
+}
+
+Rgb8 ColourScale::operator()(double value) const {
+    const double t = log_ ? std::log10(value / low_) / std::log10(high_ / low_) : (value - low_) / (high_ - low_);
+    return ramp(t);
+}
+
+const ColourScale& error_scale() {
+    static const ColourScale scale(1e-20, 1, true);
+    return scale;
+}
+ColourScale digits_lost_scale(RealType real) {
+    const int digits = real == RealType::float_         ? 8
+                       : real == RealType::long_double ? 20
+                       : real == RealType::quad_       ? 35
+                                                       : 16;
+    return ColourScale(0, digits, false, digits);
+}
+const LegendColour& none_lost_colour() { return none_lost; }
+const LegendColour& exact_colour() { return exact; }
+const LegendColour& branch_differs_colour() { return differs; }
+const LegendColour& non_finite_error_colour() { return non_finite_error; }
+
+std::unique_ptr<MapKernel> make_map_kernel(MapKind kind, const Scene& scene, RealType real, Formula formula, int spp,
+                                           int w) {
+    std::unique_ptr<Kernel> kernel = make_kernel(scene, real, formula, spp);
+    switch (kind) {
+        case MapKind::error:
+            return std::make_unique<ErrorMap>(std::move(kernel), make_kernel(scene, RealType::quad_, Formula::geometric, spp),
+                                              w);
+        case MapKind::digits_lost:
+            return std::make_unique<DigitsLostMap>(std::move(kernel), w, real);
+        case MapKind::branch:
+            break;
+    }
+    return std::make_unique<BranchMap>(std::move(kernel), w);
+}
+
+}  // namespace promyk

@@ -1,0 +1,317 @@
+// render --map: the branch atlas and the error map. The expected colours are
+// the README's legend written out here, and the expected categories come
+// from the article's literal program (tests/article_literal.hpp), exact
+// constructions, or the plain kernels, never from the map code itself.
+#include <catch2/catch.hpp>
+
+#include <png.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "article_literal.hpp"
+#include "render/kernel.hpp"
+#include "render/maps.hpp"
+#include "render/renderer.hpp"
+#include "render/trace_pixel.hpp"
+#include "scene/scene_json.hpp"
+#include "temp_dir.hpp"
+
+using namespace promyk;
+
+namespace {
+
+// The README's legend.
+const Rgb8 miss{0x56, 0xB4, 0xE9};      // sky blue
+const Rgb8 dark{0x00, 0x00, 0x00};      // black
+const Rgb8 lit{0xE6, 0x9F, 0x00};       // orange
+const Rgb8 tangent{0xF0, 0xE4, 0x42};   // yellow
+const Rgb8 behind{0x00, 0x9E, 0x73};    // bluish green
+const Rgb8 exact{0xFF, 0xFF, 0xFF};     // white
+const Rgb8 differs{0xD5, 0x5E, 0x00};   // vermillion
+
+struct Image {
+    int w = 0;
+    std::vector<std::uint8_t> rgb;
+    Rgb8 at(int i, int j) const {
+        const std::size_t k = 3 * (static_cast<std::size_t>(i) * w + j);
+        return {rgb[k], rgb[k + 1], rgb[k + 2]};
+    }
+};
+
+struct Collect final : RenderSink {
+    std::vector<std::uint8_t> bytes;
+    void image_rows(const std::uint8_t* rows, int count) override {
+        bytes.insert(bytes.end(), rows, rows + static_cast<std::size_t>(count) * row_bytes);
+    }
+    std::size_t row_bytes = 0;
+};
+
+// The map rendered as `promyk render --map` renders it (two threads).
+Image map_of(MapKind kind, const Scene& scene, int w, RealType real = RealType::double_,
+             Formula formula = Formula::article, int spp = 1, MapTally* tally = nullptr) {
+    const std::unique_ptr<MapKernel> map = make_map_kernel(kind, scene, real, formula, spp, w);
+    REQUIRE(map->channels() == 3);
+    Collect sink;
+    sink.row_bytes = static_cast<std::size_t>(w) * 3;
+    render(*map, scene, {w, 2}, PixelSelection{}, sink);
+    if (tally) *tally = map->tally();
+    return {w, sink.bytes};
+}
+
+std::string hex(Rgb8 c) {
+    char text[8];
+    std::snprintf(text, sizeof text, "#%02X%02X%02X", c.r, c.g, c.b);
+    return text;
+}
+
+Scene sphere_scene(Vec3d S, double r) {
+    Scene scene = article_scene();
+    scene.spheres.front().S = S;
+    scene.spheres.front().r = r;
+    return scene;
+}
+
+const MapTally::Category& category(const MapTally& tally, const std::string& name) {
+    for (const MapTally::Category& c : tally.categories)
+        if (c.name == name) return c;
+    FAIL("no category " << name);
+    throw;
+}
+
+}  // namespace
+
+TEST_CASE("the branch map of the article's scene is the literal program's branches in the legend's colours",
+          "[maps]") {
+    for (const int w : {8, 64}) {
+        MapTally tally;
+        const Image image = map_of(MapKind::branch, article_scene(), w, RealType::double_, Formula::article, 1, &tally);
+        std::vector<promyk_literal::LiteralLocals> locals;
+        promyk_literal::literal_program(w, {}, &locals);
+        long long counts[3] = {};
+        int first_dark_i = -1, first_dark_j = -1;
+        for (int i = 0; i < w; ++i) {
+            for (int j = 0; j < w; ++j) {
+                const auto returned = locals[static_cast<std::size_t>(i * w + j)].returned;
+                const Rgb8 expected = returned == promyk_literal::LiteralReturn::half   ? miss
+                                      : returned == promyk_literal::LiteralReturn::zero ? dark
+                                                                                        : lit;
+                ++counts[static_cast<int>(returned)];
+                if (returned == promyk_literal::LiteralReturn::zero && first_dark_i < 0) first_dark_i = i, first_dark_j = j;
+                INFO("w = " << w << ", pixel (" << i << ", " << j << ")");
+                CHECK(hex(image.at(i, j)) == hex(expected));
+            }
+        }
+        if (w == 8) {
+            CHECK(counts[0] == 32);
+            CHECK(counts[1] == 10);
+            CHECK(counts[2] == 22);
+        }
+        CHECK(category(tally, "miss").count == counts[0]);
+        CHECK(category(tally, "miss").first_i == 0);
+        CHECK(category(tally, "miss").first_j == 0);
+        CHECK(category(tally, "dark").count == counts[1]);
+        CHECK(category(tally, "dark").first_i == first_dark_i);
+        CHECK(category(tally, "dark").first_j == first_dark_j);
+        CHECK(category(tally, "lit").count == counts[2]);
+        CHECK(category(tally, "tangent").count == 0);
+        CHECK(category(tally, "behind the eye").count == 0);
+    }
+}
+
+TEST_CASE("a sphere behind the eye is mapped where the literal program would draw it", "[maps]") {
+    // The article's scene with S = (0, 0, -3.2): the program never checks
+    // t > 0, so it draws the sphere where the line meets it behind the eye.
+    const int w = 16;
+    promyk_literal::LiteralScene literal;
+    literal.z_S = -3.2;
+    std::vector<promyk_literal::LiteralLocals> locals;
+    promyk_literal::literal_program(w, literal, &locals);
+    const Scene scene = sphere_scene({0, 0, -3.2}, 1.1);
+    for (const Formula formula : {Formula::article, Formula::stable, Formula::fma, Formula::geometric}) {
+        const Image image = map_of(MapKind::branch, scene, w, RealType::double_, formula);
+        int behind_pixels = 0;
+        for (int i = 0; i < w; ++i) {
+            for (int j = 0; j < w; ++j) {
+                const bool drawn = locals[static_cast<std::size_t>(i * w + j)].returned !=
+                                   promyk_literal::LiteralReturn::half;
+                behind_pixels += drawn;
+                INFO("formula " << formula_name(formula) << ", pixel (" << i << ", " << j << ")");
+                CHECK(hex(image.at(i, j)) == hex(drawn ? behind : miss));
+            }
+        }
+        CHECK(behind_pixels > 20);
+    }
+}
+
+TEST_CASE("a tangent ray gets the tangent colour in every type and formula", "[maps]") {
+    // w = 1: the one pixel's ray is the axis, E = (0, 0, 2). S = (r, 0, z)
+    // lies at distance exactly r from it. With r = 1, z = 10 every quantity
+    // is exact (delta = 0, delta_g = 0); with r = 0.1, z = 3.3
+    // (tests/data/hard_cases.json, tangent_axis_tenth) the ray is tangent to
+    // the sphere of the rounded inputs only within rounding: the computed
+    // discriminant is a residue of the roundings of r^2 and |S|^2.
+    struct Case {
+        Vec3d S;
+        double r;
+    };
+    for (const Case c : {Case{{1, 0, 10}, 1}, Case{{0.1, 0, 3.3}, 0.1}}) {
+        const Scene scene = sphere_scene(c.S, c.r);
+        for (const RealType real : {RealType::float_, RealType::double_, RealType::long_double, RealType::quad_}) {
+            for (const Formula formula : {Formula::article, Formula::stable, Formula::fma, Formula::geometric}) {
+                INFO("r = " << c.r << ", " << real_type_name(real) << ", " << formula_name(formula));
+                CHECK(hex(map_of(MapKind::branch, scene, 1, real, formula).at(0, 0)) == hex(tangent));
+            }
+        }
+    }
+    // Moved off by a thousandth of r, the same ray is no longer tangent.
+    const Scene off = sphere_scene({1.001, 0, 10}, 1);
+    CHECK(hex(map_of(MapKind::branch, off, 1).at(0, 0)) == hex(miss));
+    const Scene in = sphere_scene({0.999, 0, 10}, 1);
+    CHECK(hex(map_of(MapKind::branch, in, 1).at(0, 0)) != hex(tangent));
+}
+
+TEST_CASE("the error map of the reference against itself is exact everywhere", "[maps]") {
+    for (const Scene& scene : {article_scene(), sphere_scene({0, 0, 1e4}, 1)}) {
+        const int w = 16;
+        MapTally tally;
+        const Image image = map_of(MapKind::error, scene, w, RealType::quad_, Formula::geometric, 1, &tally);
+        for (int i = 0; i < w; ++i)
+            for (int j = 0; j < w; ++j) CHECK(hex(image.at(i, j)) == hex(exact));
+        CHECK(category(tally, "exact").count == w * w);
+        CHECK(!tally.has_largest);
+    }
+}
+
+TEST_CASE("the error map marks the pixels whose branch differs from the reference's", "[maps]") {
+    // tests/data/hard_cases.json, far_1e4: a unit sphere at distance 10^4 on
+    // the axis. The axis ray hits it; float with the article's formula
+    // loses delta to cancellation and misses; double keeps it.
+    const Scene far = sphere_scene({0, 0, 1e4}, 1);
+    MapTally tally;
+    CHECK(hex(map_of(MapKind::error, far, 1, RealType::float_, Formula::article, 1, &tally).at(0, 0)) == hex(differs));
+    CHECK(category(tally, "branch differs").count == 1);
+    CHECK(category(tally, "branch differs").first_i == 0);
+    const Rgb8 in_double = map_of(MapKind::error, far, 1, RealType::double_, Formula::article).at(0, 0);
+    CHECK(hex(in_double) != hex(differs));
+
+    // The same sphere seen through a pane at z_E = 10^4, where it fills the
+    // inscribed disc: delta = |E|^2 (1 - x^2 - y^2) is at most 10^8 against
+    // C^2 = 10^16, whose float ulp is 2^30. The marked pixels are exactly
+    // those where the plain kernels' branches differ, and there are many.
+    const int w = 64;
+    Scene wide = far;
+    wide.z_E = 1e4;
+    const Image image = map_of(MapKind::error, wide, w, RealType::float_, Formula::article);
+    const auto computed = make_kernel(wide, RealType::float_, Formula::article);
+    const auto reference = make_kernel(wide, RealType::quad_, Formula::geometric);
+    int marked = 0;
+    for (int i = 0; i < w; ++i) {
+        for (int j = 0; j < w; ++j) {
+            Branch a, b;
+            computed->intensity(w, i, j, &a);
+            reference->intensity(w, i, j, &b);
+            marked += a != b;
+            INFO("pixel (" << i << ", " << j << ")");
+            CHECK((hex(image.at(i, j)) == hex(differs)) == (a != b));
+        }
+    }
+    CHECK(marked > w * w / 10);
+}
+
+TEST_CASE("the error map's scale runs from 1e-20 to 1 on viridis", "[maps]") {
+    const ColourScale& scale = error_scale();
+    CHECK(hex(scale(1e-20)) == "#440154");
+    CHECK(hex(scale(1e-30)) == "#440154");
+    CHECK(hex(scale(1)) == "#FDE725");
+    CHECK(hex(scale(5)) == "#FDE725");
+    CHECK(hex(scale(1e-10)) == "#21918C");  // the middle stop
+    // double against quad on the article's scene: errors of a few ulps, in
+    // the scale's lower third, and no branch differs.
+    MapTally tally;
+    map_of(MapKind::error, article_scene(), 32, RealType::double_, Formula::article, 1, &tally);
+    REQUIRE(tally.has_largest);
+    CHECK(tally.largest > 0);
+    CHECK(tally.largest < 1e-14);
+    CHECK(category(tally, "branch differs").count == 0);
+}
+
+namespace {
+
+struct RgbImage {
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> pixels;
+};
+
+RgbImage read_rgb_png(const std::string& path) {
+    png_image image{};
+    image.version = PNG_IMAGE_VERSION;
+    REQUIRE(png_image_begin_read_from_file(&image, path.c_str()) != 0);
+    CHECK((image.format & PNG_FORMAT_FLAG_COLOR) != 0);
+    image.format = PNG_FORMAT_RGB;
+    RgbImage rgb{static_cast<int>(image.width), static_cast<int>(image.height), {}};
+    rgb.pixels.resize(PNG_IMAGE_SIZE(image));
+    REQUIRE(png_image_finish_read(&image, nullptr, rgb.pixels.data(), 0, nullptr) != 0);
+    return rgb;
+}
+
+}  // namespace
+
+TEST_CASE("promyk render --map branch writes the atlas as an RGB PNG", "[maps][cli]") {
+    promyk::testing::TempDir dir("promyk-maps");
+    const std::string out = dir.file("m.png");
+    REQUIRE(std::system((std::string(PROMYK_BINARY) + " render --map branch --w 8 --scale 3 -o " + out +
+                         " 2> /dev/null")
+                            .c_str()) == 0);
+    const RgbImage image = read_rgb_png(out);
+    REQUIRE(image.width == 24);
+    REQUIRE(image.height == 24);
+    std::vector<promyk_literal::LiteralLocals> locals;
+    promyk_literal::literal_program(8, {}, &locals);
+    for (int y = 0; y < 24; ++y) {
+        for (int x = 0; x < 24; ++x) {
+            const auto returned = locals[static_cast<std::size_t>((y / 3) * 8 + x / 3)].returned;
+            const Rgb8 expected = returned == promyk_literal::LiteralReturn::half   ? miss
+                                  : returned == promyk_literal::LiteralReturn::zero ? dark
+                                                                                    : lit;
+            const std::size_t k = 3 * (static_cast<std::size_t>(y) * 24 + x);
+            INFO("image pixel (" << y << ", " << x << ")");
+            CHECK(hex({image.pixels[k], image.pixels[k + 1], image.pixels[k + 2]}) == hex(expected));
+        }
+    }
+}
+
+TEST_CASE("the digits-lost map colours each pixel by the most digits its trace loses", "[maps]") {
+    // The lesson's far sphere in float with the article's formula: C² and
+    // |E|²(|S|² − r²) round to the same float, so delta cancels completely
+    // in every pixel: all of float's 24·log10(2) = 7.22 digits.
+    const Scene far = load_scene_file(PROMYK_SOURCE_DIR "/lessons/scenes/far_sphere.json");
+    MapTally tally;
+    const Image lost = map_of(MapKind::digits_lost, far, 8, RealType::float_, Formula::article, 1, &tally);
+    const double float_digits = 24 * std::log10(2.0);
+    for (int i = 0; i < 8; ++i)
+        for (int j = 0; j < 8; ++j) CHECK(hex(lost.at(i, j)) == hex(ColourScale::ramp(float_digits / 8)));
+    CHECK(category(tally, "7 to 8").count == 64);
+    CHECK(tally.largest == Approx(float_digits).epsilon(1e-12));
+    // The article's scene in double: each pixel as its trace says (the
+    // largest digits_lost of its steps), white where no step cancels.
+    const int w = 16;
+    const Image image = map_of(MapKind::digits_lost, article_scene(), w, RealType::double_, Formula::article, 1, &tally);
+    const ColourScale scale = digits_lost_scale(RealType::double_);
+    CHECK(scale.high() == 16);
+    long long total = 0;
+    for (const MapTally::Category& c : tally.categories) total += c.count;
+    CHECK(total == w * w);
+    for (int i = 0; i < w; ++i) {
+        for (int j = 0; j < w; ++j) {
+            double most = 0;
+            for (const Step& step : trace_pixel(article_scene(), w, i, j).steps)
+                if (step.digits_lost > most) most = step.digits_lost;
+            INFO("pixel (" << i << ", " << j << "): " << most);
+            CHECK(hex(image.at(i, j)) == hex(most > 0 ? scale(most) : none_lost_colour().rgb));
+        }
+    }
+}
