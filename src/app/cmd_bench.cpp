@@ -203,11 +203,13 @@ std::function<int()> setup_bench(CLI::App& app) {
         ->check(non_empty());
     accuracy_cmd->footer(
         "Scenes: the article's (z_E = 2, S = (0, 0, 3.2), r = 1.1, L = (1.5, 1, 1)) and a far sphere\n"
-        "(z_E = 8000, S = (0, 0, 10000), r = 1, L = (5000, 5000, 0)): the article's formula loses it in\n"
-        "float. The reference is quad with the geometric formula at the same spp, on the same pixels,\n"
-        "computed in the same run. Error: |I - I_ref| of each pixel's intensity (absolute: I is in [0, 1]);\n"
-        "max over every pixel, median over the sphere's pixels (where the reference does not miss); branch ≠:\n"
-        "pixels whose branch (the centre sample's) differs from the reference's.\n"
+        "(z_E = 8000, S = (0, 0, 10000), r = 1, L = (5000, 5000, 0)), which the article's formula loses\n"
+        "in float. The reference is quad with the geometric formula at the same spp, on the same pixels,\n"
+        "computed in the same run.\n"
+        "Error: |I - I_ref| of each pixel's intensity (absolute: I is in [0, 1]), both rounded to double\n"
+        "(an error under about 1e-16 does not show); max over every pixel, median over the sphere's\n"
+        "pixels (where the reference does not miss); branch ≠: pixels whose branch (the centre sample's)\n"
+        "differs from the reference's.\n"
         "Timing: every combination renders rows of the same pane (evenly spread, as many as take about\n"
         "40 ms × (w/128)²), all combinations side by side, round after round; ns/pixel is the median\n"
         "wall-clock time per pixel with --threads threads, × base its ratio to double/article at spp 1 on\n"

@@ -295,10 +295,11 @@ std::string accuracy_table(const AccuracyReport& report) {
     std::string out = fmt::format(
         "promyk bench accuracy: w = {} ({} pixels a pane), {} thread{}, {} alternating round{}, medians\n"
         "  error: |I - I_ref| of each pixel's intensity (absolute: I is in [0, 1]) against quad/geometric\n"
-        "  at the same spp on the same pixels, computed in this run; max over every pixel, median over the\n"
-        "  sphere's pixels (reference branch not miss); branch ≠: pixels whose branch differs from the\n"
-        "  reference's. ns/pixel: wall-clock time rendering rows with {} thread{}; × base: over double/article\n"
-        "  at spp 1 on the same scene.\n",
+        "  at the same spp on the same pixels, computed in this run, both rounded to double (an error under\n"
+        "  an ulp of I, about 1e-16, does not show); max over every pixel, median over the sphere's pixels\n"
+        "  (reference branch not miss); branch ≠: pixels whose branch differs from the reference's.\n"
+        "  ns/pixel: wall-clock time rendering rows with {} thread{}; × base: over double/article at spp 1\n"
+        "  on the same scene.\n",
         report.w, static_cast<long long>(report.w) * report.w, report.threads, report.threads == 1 ? "" : "s",
         report.rounds, report.rounds == 1 ? "" : "s", report.threads, report.threads == 1 ? "" : "s");
     for (std::size_t s = 0; s < report.scenes.size(); ++s) {

@@ -54,7 +54,8 @@ struct ErrorStats {
 };
 
 // The error of `run` against `reference` (same w): the absolute difference of
-// the intensities, since I lies in [0, 1]. The median is taken over the
+// the intensities, since I lies in [0, 1]. Both are doubles (Kernel::intensity),
+// so an error under an ulp of I (about 1e-16) does not show. The median is taken over the
 // pixels where the reference meets the sphere: a miss is exactly 1/2 in every
 // type and formula, so over the whole pane the median would say more about
 // the scene's framing than about the arithmetic.
