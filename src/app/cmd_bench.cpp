@@ -173,8 +173,8 @@ std::function<int()> setup_bench(CLI::App& app) {
         "formula × spp on the article's scene and a far sphere, time per pixel and error against quad");
     accuracy_cmd
         ->add_option("--w", accuracy->bench.w,
-                     "Pane size for the errors (every pixel of every combination); the timed work grows\n"
-                     "with w² too, so the run's length does")
+                     "Pane size for the errors (every pixel of every combination); each timed run's length\n"
+                     "grows with w² too, so the whole run's does")
         ->type_name("N")
         ->check(whole_number(1, 4096))
         ->capture_default_str();
@@ -210,10 +210,10 @@ std::function<int()> setup_bench(CLI::App& app) {
         "(an error under about 1e-16 does not show); max over every pixel, median over the sphere's\n"
         "pixels (where the reference does not miss); branch ≠: pixels whose branch (the centre sample's)\n"
         "differs from the reference's.\n"
-        "Timing: every combination renders rows of the same pane (evenly spread, as many as take about\n"
-        "40 ms × (w/128)²), all combinations side by side, round after round; ns/pixel is the median\n"
-        "wall-clock time per pixel with --threads threads, × base its ratio to double/article at spp 1 on\n"
-        "the same scene (printed only when every timed run takes at least 20 ms).\n"
+        "Timing: every combination renders the whole scene on a pane of its own size, chosen so that a\n"
+        "run takes about 40 ms × (w/128)², all combinations side by side, round after round; ns/pixel is\n"
+        "the median wall-clock time per pixel with --threads threads, × base its ratio to double/article\n"
+        "at spp 1 on the same scene (printed only when every timed run takes at least 20 ms).\n"
         "Example: promyk bench accuracy --w 32 --spp 1,4 --real float,double --json accuracy.json");
     return [speed_cmd, effects_cmd, speed, effects, accuracy] {
         if (speed_cmd->parsed()) return bench::run_speed_bench(*speed);

@@ -60,36 +60,36 @@ void parallel_for(int count, int threads, Work&& work) {
     if (failure) std::rethrow_exception(failure);
 }
 
-// A rendering job timed round after round: `rows` rows of the w × w pane,
-// spread evenly over it (whole passes when there are more rows than the pane has).
+// A rendering job timed round after round: the whole pane at its own size
+// (side × side pixels, rows handed out to the threads as the renderer does),
+// chosen so that a run takes about the target time. Every combination thus
+// renders the scene's whole framing: the same share of misses, dark and lit
+// pixels, whatever the pane's size (rows of a pane would not be: a few rows
+// across a sphere's middle hit it more often than the pane does).
 struct TimedJob {
     const Kernel* kernel = nullptr;
-    int w = 0;
-    long long rows = 0;
+    int side = 0;
     std::vector<double> seconds;
 
-    int row_index(long long k) const {
-        if (rows <= w) return static_cast<int>((2 * k + 1) * w / (2 * rows));
-        return static_cast<int>(k % w);
-    }
     double run(int threads) const {
         std::vector<std::vector<std::uint8_t>> buffers(static_cast<std::size_t>(std::max(1, threads)),
-                                                       std::vector<std::uint8_t>(static_cast<std::size_t>(w)));
+                                                       std::vector<std::uint8_t>(static_cast<std::size_t>(side)));
         const auto start = Clock::now();
-        parallel_for(static_cast<int>(rows), threads, [&](int k, int thread) {
-            kernel->row(w, row_index(k), buffers[static_cast<std::size_t>(thread)].data());
+        parallel_for(side, threads, [&](int i, int thread) {
+            kernel->row(side, i, buffers[static_cast<std::size_t>(thread)].data());
         });
         const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
         throw_if_interrupted();
         return elapsed;
     }
-    double pixels() const { return static_cast<double>(rows) * w; }
+    double pixels() const { return static_cast<double>(side) * side; }
 };
 
-// Rows for a run of about `seconds`, from a cost per pixel.
-long long rows_for(double seconds, double seconds_per_pixel, int w) {
-    const double rows = seconds / std::max(seconds_per_pixel, 1e-12) / w;
-    return std::max(1LL, std::min(static_cast<long long>(std::llround(rows)), 1LL << 30));
+// The smallest pane whose rendering would take about `seconds` at a cost per
+// pixel (at least 4 × 4, so the framing still shows; at most the largest pane).
+int side_for(double seconds, double seconds_per_pixel) {
+    const double side = std::sqrt(seconds / std::max(seconds_per_pixel, 1e-12));
+    return static_cast<int>(std::clamp(std::lround(side), 4L, 32768L));
 }
 
 std::string number_text(double value) {
@@ -201,7 +201,7 @@ AccuracyReport run_accuracy_bench(const AccuracyOptions& options) {
     std::vector<std::size_t> row_job;
     std::vector<std::size_t> base_job(report.scenes.size());
     auto add_job = [&](std::unique_ptr<Kernel> kernel, double seconds_per_pixel) {
-        jobs.push_back({kernel.get(), w, 0, {}});
+        jobs.push_back({kernel.get(), 0, {}});
         kernels.push_back(std::move(kernel));
         estimates.push_back(seconds_per_pixel);
         return jobs.size() - 1;
@@ -259,13 +259,16 @@ AccuracyReport run_accuracy_bench(const AccuracyOptions& options) {
     report_progress("timing", 0, static_cast<long>(jobs.size()) * (options.repetitions + 1));
     for (std::size_t k = 0; k < jobs.size(); ++k) {
         TimedJob& job = jobs[k];
-        job.rows = rows_for(target / 4, estimates[k], w);
+        job.side = side_for(target / 4, estimates[k]);
         double seconds = job.run(report.threads);
-        for (int again = 0; again < 6 && seconds < target / 8; ++again) {
-            job.rows = std::max(job.rows + 1, rows_for(target / 4, seconds / job.pixels(), w));
+        for (int again = 0; again < 6 && seconds < target / 8 && job.side < 32768; ++again) {
+            job.side = std::max(job.side + 1, side_for(target / 4, seconds / job.pixels()));
             seconds = job.run(report.threads);
         }
-        job.rows = rows_for(target, seconds / job.pixels(), w);
+        // Once more at that size: on a busy machine a thread can wait for a
+        // core for milliseconds, and the faster run is the less disturbed one.
+        seconds = std::min(seconds, job.run(report.threads));
+        job.side = side_for(target, seconds / job.pixels());
         report_progress("timing", static_cast<long>(k + 1), static_cast<long>(jobs.size()) * (options.repetitions + 1));
     }
     // The rounds: every job once a round, forwards and backwards in turn, so
@@ -291,7 +294,7 @@ AccuracyReport run_accuracy_bench(const AccuracyOptions& options) {
         const TimedJob& job = jobs[row_job[r]];
         row.ns_per_pixel = ns_per_pixel(job);
         row.ratio = row.ns_per_pixel / report.scenes[row.scene].base_ns_per_pixel;
-        row.timed_pixels = static_cast<long long>(job.pixels());
+        row.timed_w = job.side;
     }
     report.seconds = std::chrono::duration<double>(Clock::now() - started).count();
     return report;
@@ -304,10 +307,11 @@ std::string accuracy_table(const AccuracyReport& report) {
         "  at the same spp on the same pixels, computed in this run, both rounded to double (an error under\n"
         "  an ulp of I, about 1e-16, does not show); max over every pixel, median over the sphere's pixels\n"
         "  (reference branch not miss); branch ≠: pixels whose branch differs from the reference's.\n"
-        "  ns/pixel: wall-clock time rendering rows with {} thread{}; × base: over double/article at spp 1\n"
-        "  on the same scene.\n",
+        "  ns/pixel: wall-clock time rendering the scene with {} thread{} (each combination at its own pane\n"
+        "  size, so that a run takes about {:.0f} ms); × base: over double/article at spp 1 on the same scene.\n",
         report.w, static_cast<long long>(report.w) * report.w, report.threads, report.threads == 1 ? "" : "s",
-        report.rounds, report.rounds == 1 ? "" : "s", report.threads, report.threads == 1 ? "" : "s");
+        report.rounds, report.rounds == 1 ? "" : "s", report.threads, report.threads == 1 ? "" : "s",
+        report.target_ms);
     for (std::size_t s = 0; s < report.scenes.size(); ++s) {
         const AccuracyScene& scene = report.scenes[s];
         out += fmt::format("\nscene {}: {}\n  base (double/article, spp 1): {:.2f} ns/pixel\n", scene.name,
@@ -372,7 +376,7 @@ std::string accuracy_json(const AccuracyReport& report) {
         append_number(out, row.ns_per_pixel);
         out += ",\"ratio\":";
         append_number(out, report.timeable ? row.ratio : NAN);
-        out += fmt::format(",\"timed_pixels\":{},\"pixels\":{},\"sphere_pixels\":{},\"max_error\":", row.timed_pixels,
+        out += fmt::format(",\"timed_w\":{},\"pixels\":{},\"sphere_pixels\":{},\"max_error\":", row.timed_w,
                            e.pixels, e.sphere_pixels);
         append_error(out, e.max_error);
         out += ",\"median_error\":";

@@ -1,8 +1,8 @@
 // promyk bench accuracy: what precision, formulas and samples cost in time
 // against what they buy in accuracy (PRODUCT.md §8). For every real type ×
 // formula × samples per pixel, on the article's scene and on a far sphere, in
-// one run: the time per pixel (rendering's rows, all combinations side by
-// side, round after round) as a ratio to double/article at spp 1, and the
+// one run: the time per pixel (rendering the scene, all combinations side
+// by side, round after round) as a ratio to double/article at spp 1, and the
 // error of every pixel's intensity against a reference computed in the same
 // run in quad with the geometric formula at the same spp (largest, median,
 // pixels whose branch differs). Printed as a table; as JSON for a web page
@@ -62,7 +62,7 @@ struct ErrorStats {
 ErrorStats compare_to_reference(const PaneValues& run, const PaneValues& reference);
 
 struct AccuracyOptions {
-    int w = 128;                         // pane side for the errors; the timed work scales with w² too
+    int w = 128;                         // pane side for the errors; the time of each timed run scales with w² too
     int threads = 0;                     // 0: all cores
     int repetitions = 5;                 // alternating timing rounds; medians are reported
     std::vector<int> spps = {1, 4, 16, 64};
@@ -86,9 +86,9 @@ struct AccuracyRow {
     int spp = 1;
     RealType real = RealType::double_;
     Formula formula = Formula::article;
-    double ns_per_pixel = 0;   // wall-clock time per pixel rendering rows with the run's threads (median of the rounds)
+    double ns_per_pixel = 0;   // wall-clock time per pixel rendering with the run's threads (median of the rounds)
     double ratio = 0;          // ns_per_pixel / the scene's base_ns_per_pixel
-    long long timed_pixels = 0;  // pixels rendered in each timed run
+    int timed_w = 0;           // each timed run renders the scene on a timed_w × timed_w pane
     ErrorStats errors;
 };
 
