@@ -5,6 +5,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <fstream>
+#include <memory>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -201,4 +203,28 @@ TEST_CASE("a tiny run: one row per scene x spp x type x formula, the baseline ti
     REQUIRE(json["results"].size() == 16);
     CHECK(json["results"][0]["ratio"].is_null());
     CHECK(json["scenes"][1]["scene_content"]["spheres"][0]["r"] == 1);
+}
+
+TEST_CASE("the bench's reference, quad/geometric, agrees with the mpmath reference to the last bit of a double",
+          "[bench][accuracy]") {
+    // tests/reference/article_reference.json: the article's scene at 200 bits
+    // (make_reference.py). Panes whose side is a power of two only: there
+    // x_E and y_E are exact in double and quad alike, as the reference takes them.
+    std::ifstream file(PROMYK_SOURCE_DIR "/tests/reference/article_reference.json");
+    REQUIRE(file);
+    const nlohmann::json reference = nlohmann::json::parse(file);
+    const std::unique_ptr<Kernel> bench_reference = make_kernel(article_scene(), RealType::quad_, Formula::geometric, 1);
+    int checked = 0;
+    for (const nlohmann::json& pixel : reference["pixels"]) {
+        const int w = pixel["w"], i = pixel["i"], j = pixel["j"];
+        if ((w & (w - 1)) != 0) continue;
+        Branch branch{};
+        const double I = bench_reference->intensity(w, i, j, &branch).x;
+        const double exact = std::stod(pixel["result"]["exact"].get<std::string>());  // the double nearest it
+        CAPTURE(w, i, j, I, exact);
+        CHECK(branch_name(branch) == pixel["branch"].get<std::string>());
+        CHECK(I == exact);
+        ++checked;
+    }
+    CHECK(checked == 1 + 64 + 274);
 }
