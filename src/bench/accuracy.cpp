@@ -1,0 +1,398 @@
+#include "bench/accuracy.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <memory>
+#include <thread>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "render/renderer.hpp"
+#include "scene/scene_json.hpp"
+#include "trace/json_text.hpp"
+#include "util/interrupt.hpp"
+
+namespace promyk::bench {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// A timed run shorter than this says more about the clock and the scheduler
+// than about the work (as in bench speed and bench effects).
+constexpr double min_timed_seconds = 0.020;
+
+// The length aimed at for each timed run at the default pane; it grows with
+// w², so --w scales the timing as it scales the errors' work.
+constexpr double target_seconds_at_default_w = 0.040;
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0;
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
+}
+
+// Runs work(k, thread) for k = 0 .. count-1 on `threads` threads, the k
+// handed out one at a time (as the renderer hands out rows). Stops early
+// when a signal asks to; the caller checks throw_if_interrupted().
+template <class Work>
+void parallel_for(int count, int threads, Work&& work) {
+    std::atomic<int> next{0};
+    std::exception_ptr failure;
+    std::atomic<bool> failed{false};
+    auto worker = [&](int thread) {
+        try {
+            for (int k = next++; k < count && !failed && interrupt_signal() == 0; k = next++) work(k, thread);
+        } catch (...) {
+            if (!failed.exchange(true)) failure = std::current_exception();
+        }
+    };
+    const int n = std::max(1, std::min(threads, count));
+    std::vector<std::thread> pool;
+    for (int t = 1; t < n; ++t) pool.emplace_back(worker, t);
+    worker(0);
+    for (std::thread& thread : pool) thread.join();
+    if (failure) std::rethrow_exception(failure);
+}
+
+// A rendering job timed round after round: the whole pane at its own size
+// (side × side pixels, rows handed out to the threads as the renderer does),
+// chosen so that a run takes about the target time. Every combination thus
+// renders the scene's whole framing: the same share of misses, dark and lit
+// pixels, whatever the pane's size (rows of a pane would not be: a few rows
+// across a sphere's middle hit it more often than the pane does).
+struct TimedJob {
+    const Kernel* kernel = nullptr;
+    int side = 0;
+    std::vector<double> seconds;
+
+    double run(int threads) const {
+        std::vector<std::vector<std::uint8_t>> buffers(static_cast<std::size_t>(std::max(1, threads)),
+                                                       std::vector<std::uint8_t>(static_cast<std::size_t>(side)));
+        const auto start = Clock::now();
+        parallel_for(side, threads, [&](int i, int thread) {
+            kernel->row(side, i, buffers[static_cast<std::size_t>(thread)].data());
+        });
+        const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+        throw_if_interrupted();
+        return elapsed;
+    }
+    double pixels() const { return static_cast<double>(side) * side; }
+};
+
+// The smallest pane whose rendering would take about `seconds` at a cost per
+// pixel (at least 4 × 4, so the framing still shows; at most the largest pane).
+int side_for(double seconds, double seconds_per_pixel) {
+    const double side = std::sqrt(seconds / std::max(seconds_per_pixel, 1e-12));
+    return static_cast<int>(std::clamp(std::lround(side), 4L, 32768L));
+}
+
+std::string number_text(double value) {
+    std::string out;
+    json_text::append_number(out, value);
+    return out;
+}
+
+std::string vector_text(const Vec3d& v) {
+    return fmt::format("({}, {}, {})", number_text(v.x), number_text(v.y), number_text(v.z));
+}
+
+// "z_E = 2, S = (0, 0, 3.2), r = 1.1, L = (1.5, 1, 1), I = 1" (one sphere, one light).
+std::string scene_parameters(const Scene& scene) {
+    std::string text = "z_E = " + number_text(scene.z_E);
+    for (const Sphere& s : scene.spheres) text += ", S = " + vector_text(s.S) + ", r = " + number_text(s.r);
+    for (const Light& l : scene.lights) text += ", L = " + vector_text(l.L) + ", I = " + number_text(l.I);
+    return text;
+}
+
+// An error in the table: three significant digits, 0 as "0", infinity as "inf".
+std::string error_text(double e) {
+    if (e == 0) return "0";
+    if (!std::isfinite(e)) return "inf";
+    return fmt::format("{:.2e}", e);
+}
+
+void append_error(std::string& out, double e) {
+    json_text::append_number(out, std::isfinite(e) ? e : NAN);  // infinity: null
+}
+
+}  // namespace
+
+Scene far_sphere_scene() {
+    Scene scene;
+    scene.name = "far_sphere";
+    scene.z_E = 8000;
+    scene.spheres.push_back({{0, 0, 1e4}, 1.0});
+    scene.lights.push_back({{5000, 5000, 0}, 1.0});
+    scene.source = "built-in (promyk bench accuracy)";
+    return scene;
+}
+
+PaneValues pane_values(const Kernel& kernel, int w, int threads) {
+    PaneValues values;
+    values.w = w;
+    const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(w);
+    values.I.assign(n, 0);
+    values.exact.assign(n, 0);
+    values.branch.assign(n, Branch::miss);
+    parallel_for(w, resolve_threads(threads), [&](int i, int) {
+        for (int j = 0; j < w; ++j) {
+            const std::size_t k = static_cast<std::size_t>(i) * static_cast<std::size_t>(w) + static_cast<std::size_t>(j);
+            values.exact[k] = kernel.exact_intensity(w, i, j, &values.branch[k]).x;
+            values.I[k] = static_cast<double>(values.exact[k]);
+        }
+    });
+    throw_if_interrupted();
+    return values;
+}
+
+ErrorStats compare_to_reference(const PaneValues& run, const PaneValues& reference) {
+    ErrorStats stats;
+    stats.pixels = static_cast<long long>(reference.I.size());
+    std::vector<double> sphere_errors;
+    for (std::size_t k = 0; k < reference.I.size(); ++k) {
+        const bool finite = std::isfinite(run.I[k]) && std::isfinite(reference.I[k]);
+        const bool exact = run.exact.size() == run.I.size() && reference.exact.size() == reference.I.size();
+        const double error = !finite ? INFINITY
+                             : exact ? static_cast<double>(fabsq(run.exact[k] - reference.exact[k]))
+                                     : std::fabs(run.I[k] - reference.I[k]);
+        if (!finite) ++stats.non_finite;
+        stats.max_error = std::max(stats.max_error, error);
+        if (run.branch[k] != reference.branch[k]) ++stats.branch_differs;
+        if (reference.branch[k] != Branch::miss) sphere_errors.push_back(error);
+    }
+    stats.sphere_pixels = static_cast<long long>(sphere_errors.size());
+    stats.median_error = median(std::move(sphere_errors));
+    return stats;
+}
+
+AccuracyReport run_accuracy_bench(const AccuracyOptions& options) {
+    const auto started = Clock::now();
+    AccuracyReport report;
+    report.w = options.w;
+    report.threads = resolve_threads(options.threads);
+    report.rounds = options.repetitions;
+    const int w = options.w;
+    const double pixels = static_cast<double>(w) * w;
+    const AccuracyOptions defaults;
+    const double target = target_seconds_at_default_w * pixels / (static_cast<double>(defaults.w) * defaults.w);
+    report.target_ms = target * 1e3;
+
+    Scene article = article_scene();
+    article.name = "article";
+    report.scenes.push_back({"article", article, 0});
+    report.scenes.push_back({"far_sphere", far_sphere_scene(), 0});
+
+    // The errors' work, in pixel-samples, for the progress: every selected
+    // combination and the reference, at every spp, on both scenes.
+    const long combinations = static_cast<long>(options.reals.size() * options.formulas.size());
+    long total_work = 0;
+    for (const int spp : options.spps) total_work += 2 * (combinations + 1) * spp;
+    long work_done = 0;
+    auto report_progress = [&](std::string_view phase, long done, long total) {
+        if (options.progress) options.progress(phase, done, total);
+    };
+
+    // The errors, scene by scene and spp by spp, against quad/geometric at the
+    // same spp; each pass's time gives a first estimate of the combination's cost.
+    std::vector<std::unique_ptr<Kernel>> kernels;  // kept for the timing
+    std::vector<TimedJob> jobs;
+    std::vector<double> estimates;  // seconds per pixel, from the errors' pass
+    std::vector<std::size_t> row_job;
+    std::vector<std::size_t> base_job(report.scenes.size());
+    auto add_job = [&](std::unique_ptr<Kernel> kernel, double seconds_per_pixel) {
+        jobs.push_back({kernel.get(), 0, {}});
+        kernels.push_back(std::move(kernel));
+        estimates.push_back(seconds_per_pixel);
+        return jobs.size() - 1;
+    };
+    auto timed_values = [&](const Kernel& kernel, double* seconds_per_pixel) {
+        const auto start = Clock::now();
+        PaneValues values = pane_values(kernel, w, report.threads);
+        *seconds_per_pixel = std::chrono::duration<double>(Clock::now() - start).count() / pixels;
+        return values;
+    };
+    report_progress("errors", 0, total_work * static_cast<long>(pixels));
+    for (std::size_t s = 0; s < report.scenes.size(); ++s) {
+        const Scene& scene = report.scenes[s].scene;
+        bool base_found = false;
+        for (const int spp : options.spps) {
+            double reference_cost = 0;
+            const PaneValues reference =
+                timed_values(*make_kernel(scene, RealType::quad_, Formula::geometric, spp), &reference_cost);
+            work_done += spp;
+            report_progress("errors", work_done * static_cast<long>(pixels), total_work * static_cast<long>(pixels));
+            for (const RealType real : options.reals) {
+                for (const Formula formula : options.formulas) {
+                    std::unique_ptr<Kernel> kernel = make_kernel(scene, real, formula, spp);
+                    // The reference's own combination is not computed twice:
+                    // its values are the reference's (errors 0 by construction).
+                    const bool is_reference = real == RealType::quad_ && formula == Formula::geometric;
+                    double cost = reference_cost;
+                    const PaneValues values = is_reference ? reference : timed_values(*kernel, &cost);
+                    AccuracyRow row;
+                    row.scene = s;
+                    row.spp = spp;
+                    row.real = real;
+                    row.formula = formula;
+                    row.errors = compare_to_reference(values, reference);
+                    report.rows.push_back(row);
+                    const bool is_base = spp == 1 && real == RealType::double_ && formula == Formula::article;
+                    row_job.push_back(add_job(std::move(kernel), cost));
+                    if (is_base) base_job[s] = row_job.back(), base_found = true;
+                    work_done += spp;
+                    report_progress("errors", work_done * static_cast<long>(pixels),
+                                    total_work * static_cast<long>(pixels));
+                }
+            }
+        }
+        if (!base_found) {
+            // The baseline is timed even when the run leaves it out of its rows.
+            std::unique_ptr<Kernel> kernel = make_kernel(scene, RealType::double_, Formula::article, 1);
+            double cost = 0;
+            timed_values(*kernel, &cost);
+            base_job[s] = add_job(std::move(kernel), cost);
+        }
+    }
+
+    // Calibration (also a warm-up): each job runs at a quarter of the target
+    // from the first estimate (again, on a larger pane, while a run is too
+    // short to say much: the errors' pass of a fast combination takes well
+    // under a millisecond), and its pane is then sized from what it took.
+    report_progress("timing", 0, static_cast<long>(jobs.size()) * (options.repetitions + 1));
+    for (std::size_t k = 0; k < jobs.size(); ++k) {
+        TimedJob& job = jobs[k];
+        job.side = side_for(target / 4, estimates[k]);
+        double seconds = job.run(report.threads);
+        for (int again = 0; again < 6 && seconds < target / 8 && job.side < 32768; ++again) {
+            job.side = std::max(job.side + 1, side_for(target / 4, seconds / job.pixels()));
+            seconds = job.run(report.threads);
+        }
+        // Once more at that size: on a busy machine a thread can wait for a
+        // core for milliseconds, and the faster run is the less disturbed one.
+        seconds = std::min(seconds, job.run(report.threads));
+        job.side = side_for(target, seconds / job.pixels());
+        report_progress("timing", static_cast<long>(k + 1), static_cast<long>(jobs.size()) * (options.repetitions + 1));
+    }
+    // The rounds: every job once a round, forwards and backwards in turn, so
+    // a drift of the machine's speed weighs on all of them alike.
+    long runs = static_cast<long>(jobs.size());
+    for (int round = 0; round < options.repetitions; ++round) {
+        for (std::size_t n = 0; n < jobs.size(); ++n) {
+            TimedJob& job = jobs[round % 2 ? jobs.size() - 1 - n : n];
+            job.seconds.push_back(job.run(report.threads));
+            report_progress("timing", ++runs, static_cast<long>(jobs.size()) * (options.repetitions + 1));
+        }
+    }
+
+    auto ns_per_pixel = [&](const TimedJob& job) { return median(job.seconds) / job.pixels() * 1e9; };
+    double shortest = INFINITY;
+    for (const TimedJob& job : jobs) shortest = std::min(shortest, median(job.seconds));
+    report.shortest_ms = shortest * 1e3;
+    report.timeable = shortest >= min_timed_seconds;
+    for (std::size_t s = 0; s < report.scenes.size(); ++s)
+        report.scenes[s].base_ns_per_pixel = ns_per_pixel(jobs[base_job[s]]);
+    for (std::size_t r = 0; r < report.rows.size(); ++r) {
+        AccuracyRow& row = report.rows[r];
+        const TimedJob& job = jobs[row_job[r]];
+        row.ns_per_pixel = ns_per_pixel(job);
+        row.ratio = row.ns_per_pixel / report.scenes[row.scene].base_ns_per_pixel;
+        row.timed_w = job.side;
+    }
+    report.seconds = std::chrono::duration<double>(Clock::now() - started).count();
+    return report;
+}
+
+std::string accuracy_table(const AccuracyReport& report) {
+    std::string out = fmt::format(
+        "promyk bench accuracy: w = {} ({} pixels a pane), {} thread{}, {} alternating round{}, medians\n"
+        "  error: |I - I_ref| of each pixel's intensity (absolute: I is in [0, 1]) against quad/geometric\n"
+        "  at the same spp on the same pixels, computed in this run, the difference taken in quad between\n"
+        "  the exact values (a long double's 1e-20 shows); max over every pixel, median over the sphere's pixels\n"
+        "  (reference branch not miss); branch ≠: pixels whose branch differs from the reference's.\n"
+        "  ns/pixel: wall-clock time rendering the scene with {} thread{} (each combination at its own pane\n"
+        "  size, so that a run takes about {:.0f} ms); × base: over double/article at spp 1 on the same scene.\n",
+        report.w, static_cast<long long>(report.w) * report.w, report.threads, report.threads == 1 ? "" : "s",
+        report.rounds, report.rounds == 1 ? "" : "s", report.threads, report.threads == 1 ? "" : "s",
+        report.target_ms);
+    for (std::size_t s = 0; s < report.scenes.size(); ++s) {
+        const AccuracyScene& scene = report.scenes[s];
+        out += fmt::format("\nscene {}: {}\n  base (double/article, spp 1): {:.2f} ns/pixel\n", scene.name,
+                           scene_parameters(scene.scene), scene.base_ns_per_pixel);
+        out += fmt::format("  {:>4}  {:<11} {:<9} {:>10} {:>8} {:>10} {:>10} {:>9} {:>7}\n", "spp", "real", "formula",
+                           "ns/pixel", "× base", "max error", "median", "branch ≠", "sphere");
+        int last_spp = 0;
+        for (const AccuracyRow& row : report.rows) {
+            if (row.scene != s) continue;
+            if (last_spp != 0 && row.spp != last_spp) out += '\n';
+            last_spp = row.spp;
+            const std::string ratio = report.timeable ? fmt::format("{:.2f}", row.ratio) : "-";
+            out += fmt::format("  {:>4}  {:<11} {:<9} {:>10.1f} {:>8} {:>10} {:>10} {:>9} {:>7}\n", row.spp,
+                               real_type_name(row.real), formula_name(row.formula), row.ns_per_pixel, ratio,
+                               error_text(row.errors.max_error), error_text(row.errors.median_error),
+                               row.errors.branch_differs, row.errors.sphere_pixels);
+        }
+    }
+    if (!report.timeable)
+        out += fmt::format(
+            "\n  no ratios: the shortest timed run took {:.2f} ms, and a ratio needs every timed run to take at\n"
+            "  least {:.0f} ms; time a larger pane (--w {} or more)\n",
+            report.shortest_ms, min_timed_seconds * 1e3,
+            static_cast<int>(std::ceil(report.w * std::sqrt(min_timed_seconds * 1e3 / std::max(report.shortest_ms, 1e-6)))));
+    out += fmt::format("\n  the whole run took {:.1f} s\n", report.seconds);
+    return out;
+}
+
+std::string accuracy_json(const AccuracyReport& report) {
+    using json_text::append_number;
+    using json_text::append_string;
+    std::string out = "{\"bench\":\"accuracy\",\"schema\":1,\"promyk\":";
+    append_string(out, PROMYK_VERSION);
+    out += fmt::format(",\"w\":{},\"threads\":{},\"repetitions\":{},\"target_ms\":", report.w, report.threads,
+                       report.rounds);
+    append_number(out, report.target_ms);
+    out += ",\"shortest_ms\":";
+    append_number(out, report.shortest_ms);
+    out += fmt::format(",\"timeable\":{},\"seconds\":", report.timeable ? "true" : "false");
+    append_number(out, report.seconds);
+    out += ",\"reference\":{\"real\":\"quad\",\"formula\":\"geometric\"}";
+    out += ",\"baseline\":{\"real\":\"double\",\"formula\":\"article\",\"spp\":1}";
+    out += ",\"scenes\":[";
+    for (std::size_t s = 0; s < report.scenes.size(); ++s) {
+        const AccuracyScene& scene = report.scenes[s];
+        out += s ? ",{\"name\":" : "{\"name\":";
+        append_string(out, scene.name);
+        out += ",\"scene_content\":";
+        out += nlohmann::json::parse(scene_to_json(scene.scene)).dump();
+        out += ",\"base_ns_per_pixel\":";
+        append_number(out, scene.base_ns_per_pixel);
+        out += '}';
+    }
+    out += "],\"results\":[";
+    for (std::size_t r = 0; r < report.rows.size(); ++r) {
+        const AccuracyRow& row = report.rows[r];
+        const ErrorStats& e = row.errors;
+        out += r ? ",{\"scene\":" : "{\"scene\":";
+        append_string(out, report.scenes[row.scene].name);
+        out += fmt::format(",\"spp\":{},\"real\":\"{}\",\"formula\":\"{}\",\"ns_per_pixel\":", row.spp,
+                           real_type_name(row.real), formula_name(row.formula));
+        append_number(out, row.ns_per_pixel);
+        out += ",\"ratio\":";
+        append_number(out, report.timeable ? row.ratio : NAN);
+        out += fmt::format(",\"timed_w\":{},\"pixels\":{},\"sphere_pixels\":{},\"max_error\":", row.timed_w,
+                           e.pixels, e.sphere_pixels);
+        append_error(out, e.max_error);
+        out += ",\"median_error\":";
+        append_error(out, e.median_error);
+        out += fmt::format(",\"branch_differs\":{},\"non_finite\":{}}}", e.branch_differs, e.non_finite);
+    }
+    out += "]}\n";
+    return out;
+}
+
+}  // namespace promyk::bench
