@@ -168,7 +168,7 @@ private:
             problem(1, "error_header_missing");
             return 0;
         }
-        bool seen[9] = {};
+        std::vector<bool> seen(header_fields.size(), false);  // sized by the list: a new field cannot overrun it
         std::size_t k = 1;
         for (; k < lines.size(); ++k) {
             const std::string line = trim(lines[k]);

@@ -27,8 +27,33 @@ struct SampleOffset {
     double v = 0;
 };
 
-// The 32-bit hash of (i, j, s) that jitters sample s of pixel (i, j).
-std::uint32_t sample_hash(int i, int j, int s);
+// A well-mixed 32-bit integer hash (the "lowbias32" of Chris Wellons's hash
+// prospector): every input bit affects every output bit. Inline, with the
+// offsets below: rendering computes them for every sample.
+inline std::uint32_t mix32(std::uint32_t x) {
+    x ^= x >> 16;
+    x *= 0x7feb352dU;
+    x ^= x >> 15;
+    x *= 0x846ca68bU;
+    x ^= x >> 16;
+    return x;
+}
+
+// The 32-bit hash of (i, j, s) that jitters sample s of pixel (i, j). The
+// constants keep (0, 0, 0) from hashing to 0 (mix32(0) is 0).
+inline std::uint32_t sample_hash(int i, int j, int s) {
+    const auto u32 = [](int x) { return static_cast<std::uint32_t>(x); };
+    return mix32(u32(i) * 0x9e3779b1U ^ mix32(u32(j) * 0x85ebca6bU ^ mix32(u32(s) + 0x632be5abU)));
+}
+
+// Sample s of pixel (i, j) on an n x n grid (n = spp_side(spp) > 1): cell
+// (s div n, s mod n), 16 bits of jitter along each axis (exact binary fractions).
+inline SampleOffset sample_offset_on(int i, int j, int s, int n) {
+    const std::uint32_t h = sample_hash(i, j, s);
+    const double jitter_u = static_cast<double>(h & 0xffffU) / 65536.0;
+    const double jitter_v = static_cast<double>(h >> 16) / 65536.0;
+    return {(s % n + jitter_u) / n - 0.5, (s / n + jitter_v) / n - 0.5};
+}
 
 // Sample s (0 .. spp-1, row by row through the strata) of pixel (i, j).
 SampleOffset sample_offset(int i, int j, int s, int spp);

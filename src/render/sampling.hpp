@@ -41,8 +41,9 @@ SampledPixel<Intensity> sample_pixel(int w, int i, int j, int spp, Real z_E, Sho
     Intensity sum{};
     double nearest = INFINITY;
     Branch centre_branch = Branch::miss;
+    const int n = spp_side(spp);
     for (int s = 0; s < spp; ++s) {
-        const SampleOffset o = sample_offset(i, j, s, spp);
+        const SampleOffset o = spp == 1 ? SampleOffset{} : sample_offset_on(i, j, s, n);
         const auto result = shoot(s, sample_point<Real>(i, j, w, z_E, o));
         on_result(s, result);
         sum = s == 0 ? result.I_P : sum + result.I_P;
