@@ -71,9 +71,66 @@
 //    gives a few dozen u; the eye near a huge sphere's surface (k_c large)
 //    or a grazing ray (k_d large) lose what k says, and no more. k_d comes
 //    from the exact delta in the reference, k_c from the type's inputs in
-//    quad (their squares' rounding, 2^-112 relative, is allowed for). The
-//    geometric formula's closed form would need the condition of t_mid = C/EE
-//    and of l = t_mid E - S as well; it is held to the running bound only.
+//    quad (their squares' rounding, 2^-112 relative, is allowed for).
+//
+//    For geometric the closed form needs the condition of delta_g, which
+//    comes from l = t_mid E - S, the vector from the centre to the ray's
+//    point nearest it. Exactly, l is perpendicular to E, so |S|^2 =
+//    |t_mid E|^2 + |l|^2 (|t_mid E| <= |S|, |l| <= |S|), delta_g = r^2 -
+//    |l|^2 = delta / |E|^2 (Lagrange's identity) and a = |t_mid E|^2 =
+//    c_0 + delta_g >= 0. With a hit (delta_g > 0, so |l| < r) let
+//    D = sqrt(delta_g (a + delta_g)) and
+//      k_g = (r^2 + r|S| + 6u|S|^2) / D   (>= 1: D <= r sqrt(|S|^2 + r^2)),
+//    k_c as above. First order, exact inputs (the type's: the reference's
+//    exact values are computed from them, so their rounding is not an error):
+//      t_mid = C / EE: |t_mid^ - t_mid| <= 3u|S|/|E| + 3u|t_mid| (C's and
+//        EE's errors) + u|t_mid| <= 7u|S|/|E| (|t_mid E| <= |S|; C may
+//        cancel, so this is an absolute bound, not a relative one);
+//      l = t_mid E - S: the error vector has norm
+//        eta <= 7u|S| + u|t_mid E| + u|l| <= 8u|S| + u|l| <= 9u|S|;
+//      ll = |l|^2: |ll^ - |l|^2| <= 2|l| eta + eta^2 + 3u|l|^2
+//        <= 16u r|S| + 5u r^2 + 81u^2|S|^2 (|l| < r); eta^2 is kept: u^2|S|^2
+//        is as large as u r|S| when the sphere is |S|/r ~ 1/u away;
+//      delta_g = r*r - ll: + u r^2 + u delta_g, so
+//        |delta_g^ - delta_g| <= 16u (r^2 + r|S| + 6u|S|^2) + u delta_g
+//        = 16u k_g D + u delta_g;
+//      A = EE*delta_g: |A^ - A| <= EE |delta_g^ - delta_g| + 4u A;
+//      root = sqrt(A) = |E| sqrt(delta_g): |sqrt(A^) - root| =
+//        |A^ - A| / (sqrt(A^) + root) <= |A^ - A| / root, + u root (no
+//        linearisation: on a grazing ray delta_g^ may be off by more than
+//        delta_g itself while t stays good, root being small against |q|);
+//      q = C + sign(C) root: |q| = |C| + root >= sqrt(C^2 + A) =
+//        |E| sqrt(a + delta_g), so C's error 3u|E||S| over |q| is
+//        <= 3u|S| sqrt(delta_g) / D <= 3u r|S| / D <= 3u k_g, and root's is
+//        <= (EE (16u k_g D + u delta_g) + 4u A) / (root |q|) + u
+//        <= 16u k_g + u + 4u + u (delta_g <= D, root <= |q|):
+//        rel(q) <= 3u k_g + 16u k_g + 6u + u = (19 k_g + 7) u. (Should C^
+//        round to the sign opposite to C's, |C| <= 3u|E||S| and the same two
+//        roots come in the other order, |q| smaller by a relative 3u k_g at
+//        most: the same bound to first order);
+//      t_q = q / EE: (19 k_g + 7) u + 3u + u = (19 k_g + 11) u;
+//      t_c = c_0 / q: (3 k_c + 1) u + (19 k_g + 7) u + u = (19 k_g + 3 k_c + 9) u.
+//    So each root is within R_1 = (19 k_g + 3 k_c + 11) u of its exact value,
+//    relatively, to first order. The engine's choice is the smaller positive
+//    root: min is monotone, so min(t_a^, t_b^) lies within R_1 min(t_a, t_b)
+//    of the exact choice even when the two roots swap, and with R_1 < 1 no
+//    root changes sign (the eye inside: the far root on both sides). The
+//    test asserts (24 k_g + 8 k_c + 16) u |t_exact|, the constants rounded
+//    up to the next multiple of 8 (at least 24/19 = 1.26 times R_1), where
+//    R_1 <= 1/16: the terms left out are the products of the relative errors
+//    above, which compose as factors (1 + e_i)^(+-1) with sum |e_i| = s <=
+//    R_1, whose product is within e^(s/(1 - s)) - 1 <= 1.11 s of 1 for
+//    s <= 1/16 (the second-order terms inside the sums, u times an error,
+//    are smaller still). Where R_1 > 1/16 the first order is not a bound and
+//    the case is skipped, listed below (geometric_closed_form_skipped) and
+//    checked to be exactly those; the running bound above still holds it. The
+//    eye on the surface (c_0 = 0: t_c = 0, k_c infinite) is left out as for
+//    stable. No cancellation (k_g, k_c about 1) gives a few dozen u; a far
+//    sphere on the ray's line has k_g about 1 + 6u|S|/r, so it loses digits
+//    only as |S|/r nears 1/u (the article's delta, as it nears 1/sqrt(u));
+//    a grazing ray loses what k_g says (about r / sqrt(delta_g), the centre
+//    ahead), the eye near a huge sphere's surface what k_c says. The test
+//    reports (INFO) the fraction of the bound used.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -164,6 +221,19 @@ const FormulaFailure documented_failures[] = {
     {"geometric", "eye_just_outside", "float", "0.0", "dark (exact miss): the near root rounds to t <= 0 and the far root is taken"},
 };
 
+// Where the geometric formula's closed-form bound is not asserted: its
+// first-order error R_1 = (19 k_g + 3 k_c + 11) u exceeds 1/16 (the comment at
+// the top). Checked to be exactly these.
+struct ClosedFormSkip {
+    const char* id;
+    const char* type;
+    const char* why;
+};
+const ClosedFormSkip geometric_closed_form_skipped[] = {
+    {"eye_just_outside", "double",
+     "k_c ~ 5.7e15, R_1 ~ 1.9: c_0 = SS - r*r keeps no sure digit, nor does the near root c_0/q"},
+};
+
 std::string digits_lost_text(const json& lost) {
     if (lost.is_null()) return "all";
     std::ostringstream out;
@@ -192,6 +262,7 @@ TEST_CASE("Hard cases: stable, fma and geometric formulas as simulated, exact br
     };
     const json& cases = hard_cases_reference().at("cases");
     int failures_seen = 0;
+    int geometric_skips_seen = 0;
     for (const json& c : cases) {
         const std::string id = c.at("id").get<std::string>();
         const promyk::Scene scene = promyk::parse_scene(c.at("scene").dump(), "hard case " + id);
@@ -275,8 +346,9 @@ TEST_CASE("Hard cases: stable, fma and geometric formulas as simulated, exact br
                                            << show(r_bound));
                     CHECK(absq(result - r_exact) <= r_bound + absq(r_exact) * quad(0x1p-110));
                     // (The eye on the surface, c_0 = 0 in the type, is left out: k_c is infinite.)
-                    if (formula == promyk::Formula::stable && spheres.size() == 1 &&
-                        exact.at("hit") == "sphere 0" && !spheres.at(0).at("eye_on_surface").get<bool>()) {
+                    if ((formula == promyk::Formula::stable || formula == promyk::Formula::geometric) &&
+                        spheres.size() == 1 && exact.at("hit") == "sphere 0" &&
+                        !spheres.at(0).at("eye_on_surface").get<bool>()) {
                         const json& in = record.at("inputs");
                         quad EE = 0, SS = 0;
                         for (int k = 0; k < 3; ++k) {
@@ -288,23 +360,54 @@ TEST_CASE("Hard cases: stable, fma and geometric formulas as simulated, exact br
                         }
                         const quad r = read_in(in.at("spheres").at(0).at("r").get<std::string>(), type.name);
                         const quad big = SS + r * r;
-                        const quad c0 = absq(SS - r * r) - big * quad(0x1p-110);  // a lower bound of |c_0|
-                        if (!(c0 > 0)) continue;
+                        // A lower bound of |c_0| (> 0: no case has the eye off the surface by less
+                        // than 2^-110 (SS + r^2)).
+                        const quad c0 = absq(SS - r * r) - big * quad(0x1p-110);
+                        REQUIRE(c0 > 0);
                         const quad delta = absq(text_q(spheres.at(0).at("delta"))) * (1 - quad(0x1p-100));
                         REQUIRE(delta > 0);
-                        const quad k_d = EE * big / delta;
                         const quad k_c = big / c0;
                         const quad u = quad(std::ldexp(1.0, -type.bits));
-                        const quad closed = (16 * k_d + 8 * k_c + 16) * u * absq(t_exact);
-                        INFO("closed-form bound: k_d " << show(k_d) << ", k_c " << show(k_c) << ", bound "
-                                                       << show(closed));
-                        CHECK(absq(t - t_exact) <= closed + absq(t_exact) * quad(0x1p-110));
+                        const quad error = absq(t - t_exact);
+                        const quad slack = absq(t_exact) * quad(0x1p-110);
+                        if (formula == promyk::Formula::stable) {
+                            const quad k_d = EE * big / delta;
+                            const quad closed = (16 * k_d + 8 * k_c + 16) * u * absq(t_exact);
+                            INFO("closed-form bound: k_d " << show(k_d) << ", k_c " << show(k_c) << ", bound "
+                                                           << show(closed));
+                            CHECK(error <= closed + slack);
+                        } else {
+                            // Lower bounds of delta_g = delta / EE and of a + delta_g = c_0 + 2 delta_g
+                            // (and >= delta_g, a >= 0), an upper bound of k_g's numerator.
+                            const quad delta_g = delta / EE * (1 - quad(0x1p-100));
+                            const quad c0_low = (SS - r * r) - big * quad(0x1p-110);
+                            const quad a_plus = c0_low + 2 * delta_g > delta_g ? c0_low + 2 * delta_g : delta_g;
+                            const quad D = sqrtq(delta_g * a_plus) * (1 - quad(0x1p-100));
+                            const quad k_g = (r * r + r * sqrtq(SS) + 6 * u * SS) * (1 + quad(0x1p-100)) / D;
+                            const quad first_order = (19 * k_g + 3 * k_c + 11) * u;
+                            const quad closed = (24 * k_g + 8 * k_c + 16) * u * absq(t_exact);
+                            const ClosedFormSkip* skip = nullptr;
+                            for (const ClosedFormSkip& s : geometric_closed_form_skipped)
+                                if (id == s.id && std::string(type.name) == s.type) skip = &s;
+                            INFO("geometric closed-form bound: k_g " << show(k_g) << ", k_c " << show(k_c)
+                                                                     << ", R_1 " << show(first_order) << ", bound "
+                                                                     << show(closed) << ", fraction used "
+                                                                     << show(error / closed));
+                            CHECK((first_order > quad(0.0625)) == (skip != nullptr));
+                            if (skip == nullptr) {
+                                CHECK(error <= closed + slack);
+                            } else {
+                                ++geometric_skips_seen;
+                            }
+                        }
                     }
                 }
             }
         }
     }
     CHECK(failures_seen == static_cast<int>(sizeof documented_failures / sizeof documented_failures[0]));
+    CHECK(geometric_skips_seen ==
+          static_cast<int>(sizeof geometric_closed_form_skipped / sizeof geometric_closed_form_skipped[0]));
     for (const FormulaFailure& f : documented_failures) {
         INFO("documented failure " << f.formula << " " << f.id << " in " << f.type);
         CHECK_FALSE(
