@@ -53,6 +53,21 @@ std::size_t count_of(const Scene& scene, const std::string& kind) {
                               : scene.materials.size();
 }
 
+// Calls f(placeholder, line) for each placeholder of the part, with the
+// file line it stands on. The placeholders come in order: the lines are
+// counted once, not from the start for each.
+template <class F>
+void for_each_placeholder(const LessonPart& part, F&& f) {
+    int line = part.text_line;
+    std::size_t counted = 0;
+    for (const Placeholder& placeholder : find_placeholders(part.text)) {
+        line += static_cast<int>(std::count(part.text.begin() + static_cast<long>(counted),
+                                            part.text.begin() + static_cast<long>(placeholder.begin), '\n'));
+        counted = placeholder.begin;
+        f(placeholder, line);
+    }
+}
+
 }  // namespace
 
 PathCheck check_path(const std::string& text, const Vocabulary& vocabulary, const Scene* scene) {
@@ -140,28 +155,22 @@ void check_lesson(const Lesson& lesson, const Vocabulary& vocabulary, std::vecto
             for (const std::string& branch : part.branches)
                 if (vocabulary.find_branch(branch) == nullptr)
                     problem(part.line, "error_unknown_branch", {{"branch", branch}, {"branches", branch_list(vocabulary)}});
-            // The placeholders come in order: count the lines once, not from the start for each.
-            int line = part.text_line;
-            std::size_t counted = 0;
-            for (const Placeholder& placeholder : find_placeholders(part.text)) {
-                line += static_cast<int>(std::count(part.text.begin() + static_cast<long>(counted),
-                                                    part.text.begin() + static_cast<long>(placeholder.begin), '\n'));
-                counted = placeholder.begin;
+            for_each_placeholder(part, [&](const Placeholder& placeholder, int line) {
                 if (!placeholder.valid) {
                     problem(line, "error_bad_placeholder", {{"text", placeholder.name}});
-                    continue;
+                    return;
                 }
                 // {i}, {j}, {w}, {branch} are no keys; anything else is a path to check.
                 const bool special = placeholder.path == placeholder.name && is_special(placeholder.name);
                 if (special && !placeholder.settings.empty()) {
                     problem(line, "error_bad_placeholder", {{"text", std::string(part.text.substr(placeholder.begin, placeholder.end - placeholder.begin))}});
-                    continue;
+                    return;
                 }
-                if (!settings_ok(qualified_path(placeholder), placeholder.settings, line)) continue;
-                if (!special && !path_ok(placeholder.path, line)) continue;
+                if (!settings_ok(qualified_path(placeholder), placeholder.settings, line)) return;
+                if (!special && !path_ok(placeholder.path, line)) return;
                 if (part.kind == PartKind::prose && !placeholder.symbol && depends_on_pixel(placeholder.path, vocabulary))
                     problem(line, "error_pixel_outside_block", {{"key", placeholder.path}});
-            }
+            });
         }
     }
 }
@@ -175,15 +184,10 @@ std::vector<SettingsUse> settings_used(const Lesson& lesson) {
                     if (key.find('@') != std::string::npos) out.push_back({split_settings(key).second, key, part.line});
                 continue;
             }
-            int line = part.text_line;
-            std::size_t counted = 0;
-            for (const Placeholder& placeholder : find_placeholders(part.text)) {
-                line += static_cast<int>(std::count(part.text.begin() + static_cast<long>(counted),
-                                                    part.text.begin() + static_cast<long>(placeholder.begin), '\n'));
-                counted = placeholder.begin;
+            for_each_placeholder(part, [&](const Placeholder& placeholder, int line) {
                 if (placeholder.valid && !placeholder.settings.empty())
                     out.push_back({placeholder.settings, qualified_path(placeholder), line});
-            }
+            });
         }
     }
     return out;
