@@ -67,10 +67,11 @@ std::string Worksheet::intro() const {
     const Language language = view_.lesson.language;
     std::string pixels;
     for (const PixelTrace& trace : view_.traces) pixels += fmt::format(" --pixel {},{}", trace.header.i, trace.header.j);
-    // Settings other than the lesson's own (given with --real, --formula) must be given again.
+    // Settings other than the lesson's own (given with --real, --formula, --spp) must be given again.
     const TraceHeader& numbers = view_.traces.front().header;
     if (numbers.real != view_.lesson.header.real) pixels += " --real " + numbers.real;
     if (numbers.formula != view_.lesson.header.formula) pixels += " --formula " + numbers.formula;
+    if (numbers.spp != view_.lesson.header.spp) pixels += " --spp " + std::to_string(numbers.spp);
     const std::string command =
         fmt::format("promyk lesson {}{} --lang {} --answers {}", view_.lesson.header.name, pixels,
                     language_code(language), message(language, "worksheet_file"));
