@@ -234,22 +234,7 @@ const ClosedFormSkip geometric_closed_form_skipped[] = {
      "k_c ~ 5.7e15, R_1 ~ 1.9: c_0 = SS - r*r keeps no sure digit, nor does the near root c_0/q"},
 };
 
-std::string digits_lost_text(const json& lost) {
-    if (lost.is_null()) return "all";
-    std::ostringstream out;
-    out.setf(std::ios::fixed);
-    out.precision(1);
-    out << lost.get<double>();
-    return out.str();
-}
 
-const json& case_by_id(const std::string& id) {
-    for (const json& c : hard_cases_reference().at("cases"))
-        if (c.at("id") == id) return c;
-    throw std::runtime_error("no hard case " + id);
-}
-
-quad text_q(const json& v) { return strtoflt128(v.get<std::string>().c_str(), nullptr); }
 
 }  // namespace
 

@@ -108,4 +108,23 @@ inline std::vector<std::pair<std::string, quad>> engine_steps(const promyk::Pixe
     return out;
 }
 
+// A documented failure's digits lost, as the catalogue writes it ("all" for null).
+inline std::string digits_lost_text(const json& lost) {
+    if (lost.is_null()) return "all";
+    std::ostringstream out;
+    out.setf(std::ios::fixed);
+    out.precision(1);
+    out << lost.get<double>();
+    return out.str();
+}
+
+inline const json& case_by_id(const std::string& id) {
+    for (const json& c : hard_cases_reference().at("cases"))
+        if (c.at("id") == id) return c;
+    throw std::runtime_error("no hard case " + id);
+}
+
+// A reference value written as text, read exactly as a quad.
+inline quad text_q(const json& v) { return strtoflt128(v.get<std::string>().c_str(), nullptr); }
+
 }  // namespace hard_cases_support

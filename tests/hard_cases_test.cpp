@@ -115,20 +115,6 @@ const Failure documented_failures[] = {
     {"grazing_double", "double", "17.1", "misses"},
 };
 
-std::string digits_lost_text(const json& lost) {
-    if (lost.is_null()) return "all";
-    std::ostringstream out;
-    out.setf(std::ios::fixed);
-    out.precision(1);
-    out << lost.get<double>();
-    return out.str();
-}
-
-const json& case_by_id(const std::string& id) {
-    for (const json& c : hard_cases_reference().at("cases"))
-        if (c.at("id") == id) return c;
-    throw std::runtime_error("no hard case " + id);
-}
 
 }  // namespace
 
@@ -214,13 +200,13 @@ TEST_CASE("Hard cases: the article's formula in every real type, as simulated an
                             return it->second;
                     return quad(0);
                 }();
-                const quad t_exact = strtoflt128(exact.at("t").get<std::string>().c_str(), nullptr);
-                const quad t_bound = strtoflt128(article.at("t_error").at("bound").get<std::string>().c_str(), nullptr);
+                const quad t_exact = text_q(exact.at("t"));
+                const quad t_bound = text_q(article.at("t_error").at("bound"));
                 INFO("t: engine " << show(t) << ", exact " << show(t_exact) << ", bound " << show(t_bound));
                 CHECK(absq(t - t_exact) <= slack * t_bound + absq(t_exact) * quad(0x1p-110));
-                const quad r_exact = strtoflt128(exact.at("result").get<std::string>().c_str(), nullptr);
+                const quad r_exact = text_q(exact.at("result"));
                 const quad r_bound =
-                    strtoflt128(article.at("result_error").at("bound").get<std::string>().c_str(), nullptr);
+                    text_q(article.at("result_error").at("bound"));
                 INFO("result: engine " << show(result) << ", exact " << show(r_exact) << ", bound " << show(r_bound));
                 CHECK(absq(result - r_exact) <= slack * r_bound + absq(r_exact) * quad(0x1p-110));
             }

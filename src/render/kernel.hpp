@@ -48,7 +48,8 @@ public:
     // The most digits any step of pixel (i, j) loses to cancellation (the
     // largest of the trace's digits_lost (of all its samples), unrounded; 0 when no step has an
     // estimate), computed without building a trace: for a map of digits lost.
-    virtual double digits_lost(int w, int i, int j) const = 0;
+    // `branch`, when given, gets the pixel's branch from the same computation.
+    virtual double digits_lost(int w, int i, int j, Branch* branch = nullptr) const = 0;
     // Pixel (i, j)'s branch (as intensity gives it) and its notes, tangent
     // and behind the eye (render/notes.hpp: the centre sample's when spp > 1).
     virtual PixelNotes notes(int w, int i, int j) const = 0;

@@ -131,12 +131,11 @@ public:
         // One sphere: a ray that is not a miss shows it (a non-finite one too).
         return record.notes(branch, ray.branch == Branch::miss, ray.branch == Branch::miss ? -1 : 0);
     }
-    double digits_lost(int w, int i, int j) const override {
+    double digits_lost(int w, int i, int j, Branch* branch) const override {
         DigitsRecorder digits;  // the most any step of any sample lost
-        if (spp() > 1)
-            sampled(w, i, j, digits, IgnoreSample{});
-        else
-            trace_pixel_ray<F>(world_, w, i, j, digits);
+        const Branch taken = spp() > 1 ? sampled(w, i, j, digits, IgnoreSample{}).branch
+                                       : trace_pixel_ray<F>(world_, w, i, j, digits).branch;
+        if (branch) *branch = taken;
         return digits.max_digits_lost;
     }
     PixelTrace trace(const TraceHeader& header, int i, int j) const override {
@@ -274,13 +273,12 @@ public:
         return record.notes(branch, ray.hit_kind == 0, ray.hit_kind == 1 ? ray.hit_index : -1);
     }
 
-    double digits_lost(int w, int i, int j) const override {
+    double digits_lost(int w, int i, int j, Branch* branch) const override {
         DigitsRecorder digits;  // the most any step of any sample lost
         WorkCounts work;
-        if (spp() > 1)
-            sampled(w, i, j, work, digits, IgnoreSample{});
-        else
-            trace_general<Sw, F>(world_, pane_point(i, j, w, world_.z_E), work, digits);
+        const Branch taken = spp() > 1 ? sampled(w, i, j, work, digits, IgnoreSample{}).branch
+                                       : trace_general<Sw, F>(world_, pane_point(i, j, w, world_.z_E), work, digits).branch;
+        if (branch) *branch = taken;
         return digits.max_digits_lost;
     }
 

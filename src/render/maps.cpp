@@ -108,7 +108,9 @@ public:
     }
     PixelTrace trace(const TraceHeader& header, int i, int j) const override { return kernel_->trace(header, i, j); }
     PixelNotes notes(int w, int i, int j) const override { return kernel_->notes(w, i, j); }
-    double digits_lost(int w, int i, int j) const override { return kernel_->digits_lost(w, i, j); }
+    double digits_lost(int w, int i, int j, Branch* branch) const override {
+        return kernel_->digits_lost(w, i, j, branch);
+    }
 
 protected:
     const Kernel& kernel() const { return *kernel_; }
@@ -307,8 +309,7 @@ public:
 protected:
     ScalarPixel value(int w, int i, int j) const override {
         ScalarPixel pixel;
-        kernel().intensity(w, i, j, &pixel.branch);
-        const double digits = kernel().digits_lost(w, i, j);
+        const double digits = kernel().digits_lost(w, i, j, &pixel.branch);  // one computation: both
         if (pixel.branch == Branch::non_finite)
             pixel.kind = ScalarPixel::Kind::non_finite;
         else if (!(digits > 0))
