@@ -15,24 +15,50 @@ using Table = std::map<std::string, std::string, std::less<>>;
 
 const Table& table(Language language) {
     static const std::pair<Table, Table> tables = [] {
-        std::string_view text;
-        for (const embedded::EmbeddedFile& file : embedded::lesson_files())
-            if (file.path == "messages.json") text = file.text;
-        const nlohmann::json document = nlohmann::json::parse(text);
+        // messages.json holds the words of traces and lessons; each
+        // messages_TOPIC.json beside it the words of one part of promyk
+        // (the answer checker, the maps, the command line). An id is defined
+        // once across all of them.
         std::pair<Table, Table> parsed;
-        for (const auto& [id, value] : document.at("pl").items()) parsed.first[id] = value.get<std::string>();
-        for (const auto& [id, value] : document.at("en").items()) parsed.second[id] = value.get<std::string>();
+        for (const embedded::EmbeddedFile& file : embedded::lesson_files()) {
+            const std::string_view path = file.path;
+            if (path.find('/') != std::string_view::npos || path.substr(0, 8) != "messages" ||
+                path.size() < 13 || path.substr(path.size() - 5) != ".json")
+                continue;
+            const nlohmann::json document = nlohmann::json::parse(file.text);
+            for (const auto& [id, value] : document.at("pl").items())
+                if (!parsed.first.emplace(id, value.get<std::string>()).second)
+                    throw std::logic_error("message " + id + " is defined twice (lessons/messages*.json)");
+            for (const auto& [id, value] : document.at("en").items())
+                if (!parsed.second.emplace(id, value.get<std::string>()).second)
+                    throw std::logic_error("message " + id + " is defined twice (lessons/messages*.json)");
+        }
         return parsed;
     }();
     return language == Language::pl ? tables.first : tables.second;
 }
 
+std::optional<Language>& chosen_language() {
+    static std::optional<Language> chosen;
+    return chosen;
+}
+
 }  // namespace
+
+Language ui_language() {
+    std::optional<Language>& chosen = chosen_language();
+    if (!chosen) chosen = language_from_environment();
+    return *chosen;
+}
+
+void set_ui_language(Language language) { chosen_language() = language; }
+
+std::string ui_message(std::string_view id, const MessageArgs& args) { return message(ui_language(), id, args); }
 
 std::string message(Language language, std::string_view id, const MessageArgs& args) {
     const Table& messages = table(language);
     const auto it = messages.find(id);
-    if (it == messages.end()) throw std::logic_error("lessons/messages.json has no message " + std::string(id));
+    if (it == messages.end()) throw std::logic_error("lessons/messages*.json has no message " + std::string(id));
     std::string out;
     const std::string& text = it->second;
     for (std::size_t k = 0; k < text.size();) {

@@ -15,6 +15,16 @@ namespace promyk {
 
 using MessageArgs = std::vector<std::pair<std::string_view, std::string>>;
 
+// The language of everything this run prints: errors, warnings, status
+// lines and outputs (the global --lang; until it is set, LANG's choice).
+// --help stays English.
+Language ui_language();
+void set_ui_language(Language language);
+
+// message(ui_language(), id, args): the usual way to word an error or a
+// status line.
+std::string ui_message(std::string_view id, const MessageArgs& args = {});
+
 // The message `id` in `language`, each {name} replaced by its argument.
 // Throws std::logic_error for an id messages.json lacks (a bug, caught by tests).
 std::string message(Language language, std::string_view id, const MessageArgs& args = {});
