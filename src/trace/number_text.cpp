@@ -1,5 +1,6 @@
 #include "trace/number_text.hpp"
 #include "trace/messages.hpp"
+#include "math/decimal.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -29,6 +30,78 @@ std::string number_text(double value, Language language, int decimals) {
     if (std::isnan(value)) return "nan";
     if (std::isinf(value)) return value > 0 ? "inf" : (language == Language::pl ? "−inf" : "-inf");
     return local_number_text(decimals < 0 ? fmt::format("{}", value) : fmt::format("{:.{}f}", value, decimals), language);
+}
+
+namespace {
+
+std::optional<int>& digits_choice() {
+    static std::optional<int> chosen;
+    return chosen;
+}
+
+// `exact` rounded to `digits` significant digits, halves away from zero,
+// as %g would lay it out (trailing zeros dropped).
+std::string significant_text(const TypedNumber& exact, int digits) {
+    std::string d = strip_zeros(exact.digits);
+    if (d == "0") return "0";
+    // value = 0.d × 10^(point): `point` digits stand before the decimal point.
+    int point = static_cast<int>(d.size()) - exact.scale;
+    const std::size_t keep = static_cast<std::size_t>(digits);
+    if (d.size() > keep) {
+        const bool up = d[keep] >= '5';
+        d.resize(keep);
+        if (up) {
+            std::size_t k = keep;
+            while (k > 0 && d[k - 1] == '9') d[--k] = '0';
+            if (k == 0) {
+                d.insert(0, "1");
+                d.pop_back();
+                ++point;
+            } else {
+                ++d[k - 1];
+            }
+        }
+    }
+    while (d.size() > 1 && d.back() == '0') d.pop_back();
+    const int e = point - 1;  // the first digit's power of ten
+    std::string out = exact.negative ? "-" : "";
+    if (e < -4 || e >= digits) {
+        out += d.substr(0, 1);
+        if (d.size() > 1) out += "." + d.substr(1);
+        out += fmt::format("e{}{:02}", e < 0 ? '-' : '+', e < 0 ? -e : e);
+    } else if (e < 0) {
+        out += "0." + std::string(static_cast<std::size_t>(-e - 1), '0') + d;
+    } else {
+        const std::size_t whole = static_cast<std::size_t>(e) + 1;
+        if (d.size() <= whole) {
+            out += d + std::string(whole - d.size(), '0');
+        } else {
+            out += d.substr(0, whole) + "." + d.substr(whole);
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+std::optional<int> chosen_digits() { return digits_choice(); }
+
+void set_chosen_digits(int digits) { digits_choice() = digits; }
+
+int shown_digits(int default_digits) { return digits_choice().value_or(default_digits); }
+
+std::string shown_number(double value, Language language, int digits) {
+    if (value == 0) return "0";
+    if (!std::isfinite(value) || digits <= 0) return number_text(value, language);
+    return local_number_text(significant_text(exact_decimal(value), digits), language);
+}
+
+std::string shown_real_text(const std::string& text, RealType type, Language language, int digits) {
+    const std::optional<TypedNumber> exact = exact_value_of(text, type);
+    if (!exact) return local_number_text(text, language);  // inf, nan
+    if (is_zero(*exact)) return "0";
+    if (digits <= 0) return local_number_text(text, language);
+    return local_number_text(significant_text(*exact, digits), language);
 }
 
 std::string local_number_text(std::string_view text, Language language) {

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "math/real.hpp"
 #include "trace/recorder.hpp"
 
 namespace promyk {
@@ -26,6 +27,29 @@ std::string_view language_code(Language language);
 // the value rounded to `decimals` digits after the point; "nan", "inf", "-inf"
 // for non-finite values.
 std::string number_text(double value, Language language, int decimals = -1);
+
+// The significant digits this run shows (--digits N), if the command line
+// chose them; otherwise each output keeps its own default (trace: every
+// digit; lessons, worksheets and the page: 4).
+std::optional<int> chosen_digits();
+void set_chosen_digits(int digits);
+
+// The digits an output shows: --digits when given, else `default_digits`
+// (0: every digit).
+int shown_digits(int default_digits);
+
+// A number as people read it: rounded to `digits` significant digits, halves
+// away from zero (as a pupil rounds: 0.125 to 2 digits is 0.13), trailing
+// zeros dropped, in the style of printf's %g (an exponent below 1e-4 or from
+// 10^digits up: 1.235e+04), written the language's way. `digits` 0 shows
+// every digit: the shortest text that reads back to the same double. Zero
+// is "0" whatever its sign; "nan", "inf", "-inf" as number_text.
+std::string shown_number(double value, Language language, int digits);
+
+// The same for a value of another real type given as its exact shortest
+// text in that type (a trace's real_text): rounded from the type's own
+// binary value, not from the double beside it.
+std::string shown_real_text(const std::string& text, RealType type, Language language, int digits);
 
 // A number's text ("-1.5e-3") written the language's way: in Polish a
 // decimal comma and the minus sign U+2212 ("−1,5e−3"); in English as it is.
