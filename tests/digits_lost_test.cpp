@@ -175,7 +175,7 @@ TEST_CASE("digits lost: a unit sphere 10^4 away loses every digit of delta in fl
     CHECK(step_of(geometric, Key::delta_g).digits_lost < 1);
 }
 
-TEST_CASE("digits lost: the text trace marks 3 digits or more, and suggests the geometric formula",
+TEST_CASE("digits lost: the text trace counts 3 digits or more, and marks and advises only losses that matter",
           "[digits-lost]") {
     const Vocabulary& vocabulary = builtin_vocabulary();
     PixelTrace trace = trace_pixel(article_scene(), 8, 3, 4);
@@ -190,37 +190,61 @@ TEST_CASE("digits lost: the text trace marks 3 digits or more, and suggests the 
         return format_trace_text(trace, vocabulary, options);
     };
     const std::string suggestion = "--formula geometric";
-    // The article's pixel loses at most one digit: no mark, no note.
-    CHECK(text().find("⚠") == std::string::npos);
+    // The article's pixel loses at most one digit: no count, no mark, no note.
+    CHECK(text().find("digits lost") == std::string::npos);
 
-    delta().digits_lost = 2.94;  // shown as 2.9: below the threshold
+    delta().digits_lost = 2.94;  // shown as 2.9: below the count's threshold
+    CHECK(text().find("digits lost") == std::string::npos);
+    delta().digits_lost = 2.96;  // shown as 3.0: counted, harmless in double (16 digits)
+    CHECK(text().find("= 4.557812500000004\n                3.0 of 16 digits lost\n") != std::string::npos);
     CHECK(text().find("⚠") == std::string::npos);
-    delta().digits_lost = 2.96;  // shown as 3.0: marked
-    CHECK(text().find("⚠ 3.0 digits lost") != std::string::npos);
-    delta().digits_lost = 4.12;
-    CHECK(text().find("= 4.557812500000004\n                ⚠ 4.1 digits lost\n") != std::string::npos);
-    CHECK(text().find("⚠ marks a step that loses 3 or more significant digits") != std::string::npos);
-    CHECK(text().find("Δ/4 loses 4.1 significant digits: the article formula") != std::string::npos);
+    CHECK(text().find(suggestion) == std::string::npos);
+    // Double's half is 53·log10(2)/2 = 7.98: 7.9 survives it, 8.1 does not.
+    delta().digits_lost = 7.9;
+    CHECK(text().find("⚠") == std::string::npos);
+    delta().digits_lost = 8.1;
+    CHECK(text().find("= 4.557812500000004\n                ⚠ 8.1 of 16 digits lost\n") != std::string::npos);
+    const auto flat = [](std::string t) {
+        for (std::size_t at; (at = t.find("\n  ")) != std::string::npos;) t.replace(at, 3, " ");
+        for (std::size_t at; (at = t.find("  ")) != std::string::npos;) t.replace(at, 2, " ");
+        return t;
+    };
+    CHECK(flat(text()).find("(it loses more than 8.0)") != std::string::npos);
+    CHECK(flat(text()).find("Δ/4 loses 8.1 significant digits: the article formula") != std::string::npos);
     CHECK(text().find(suggestion) != std::string::npos);
-    CHECK(text(Language::pl).find("⚠ straconych cyfr: 4,1") != std::string::npos);
+    CHECK(text(Language::pl).find("⚠ straconych cyfr: 8,1 z 16") != std::string::npos);
     CHECK(text(Language::pl).find("--formula geometric") != std::string::npos);
     {
         TraceTextOptions wide;
         wide.layout = TraceLayout::wide;
-        CHECK(format_trace_text(trace, vocabulary, wide).find("4.557812500000004  ⚠ 4.1 digits lost") !=
+        CHECK(format_trace_text(trace, vocabulary, wide).find("4.557812500000004  ⚠ 8.1 of 16 digits lost") !=
               std::string::npos);
     }
+    // In float (7.22 digits) the half is 3.61: 3.7 digits lost is marked.
+    trace.header.real = "float";
+    delta().digits_lost = 3.7;
+    CHECK(text().find("⚠ 3.7 of 7 digits lost") != std::string::npos);
+    trace.header.real = "double";
     // The geometric formula's trace does not suggest itself.
+    delta().digits_lost = 8.1;
     trace.header.formula = "geometric";
-    CHECK(text().find("⚠ 4.1 digits lost") != std::string::npos);
+    CHECK(text().find("⚠ 8.1 of 16 digits lost") != std::string::npos);
     CHECK(text().find(suggestion) == std::string::npos);
     // A step the formula does not change (N) is marked, with no suggestion.
     trace.header.formula = "article";
     delta().digits_lost = 1;
     for (Step& step : trace.steps)
-        if (step.key == Key::N) step.digits_lost = 3.5;
-    CHECK(text().find("⚠ 3.5 digits lost") != std::string::npos);
+        if (step.key == Key::N) step.digits_lost = 9.5;
+    CHECK(text().find("⚠ 9.5 of 16 digits lost") != std::string::npos);
     CHECK(text().find(suggestion) == std::string::npos);
+}
+
+TEST_CASE("digits lost: the article's dark pixel (5, 1) counts its 3 digits, with no mark and no advice",
+          "[digits-lost]") {
+    const std::string text = format_trace_text(trace_pixel(article_scene(), 8, 5, 1), builtin_vocabulary(), {});
+    CHECK(text.find("3.0 of 16 digits lost") != std::string::npos);
+    CHECK(text.find("⚠") == std::string::npos);
+    CHECK(text.find("--formula geometric") == std::string::npos);
 }
 
 TEST_CASE("digits lost: bounded, on the documented keys only, and rendering unchanged, over random scenes",
