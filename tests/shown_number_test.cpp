@@ -17,7 +17,7 @@ TEST_CASE("shown_number rounds to significant digits, halves up", "[digits]") {
     CHECK(shown_number(4.557812500000004, Language::en, 4) == "4.558");
     CHECK(shown_number(10.240000000000002, Language::en, 4) == "10.24");
     CHECK(shown_number(0.125, Language::en, 2) == "0.13");   // exact tie: away from zero, not to even
-    CHECK(shown_number(-0.125, Language::en, 2) == "-0.13");
+    CHECK(shown_number(-0.125, Language::en, 2) == "−0.13");  // U+2212 in both languages
     CHECK(shown_number(0.5, Language::en, 4) == "0.5");      // trailing zeros dropped
     CHECK(shown_number(2.0, Language::en, 4) == "2");
     CHECK(shown_number(9.99995, Language::en, 4) == "10");   // carries into a new digit
@@ -25,10 +25,13 @@ TEST_CASE("shown_number rounds to significant digits, halves up", "[digits]") {
     CHECK(shown_number(1.058008460502604, Language::en, 4) == "1.058");
     CHECK(shown_number(1234.5, Language::en, 4) == "1235");  // 1234.5 is exact: a tie, up
     CHECK(shown_number(12345.0, Language::en, 4) == "1.235e+04");
+    CHECK(shown_number(10000.0, Language::en, 4) == "10000");  // exact: stays whole
+    CHECK(shown_number(1e15, Language::en, 4) == "1e+15");
+    CHECK(shown_number(123000000.0, Language::en, 4) == "123000000");
     CHECK(shown_number(94906265.0, Language::en, 4) == "9.491e+07");
     CHECK(shown_number(0.0001234567, Language::en, 4) == "0.0001235");
-    CHECK(shown_number(0.00001234567, Language::en, 4) == "1.235e-05");
-    CHECK(shown_number(1e-300, Language::en, 4) == "1e-300");
+    CHECK(shown_number(0.00001234567, Language::en, 4) == "1.235e−05");
+    CHECK(shown_number(1e-300, Language::en, 4) == "1e−300");
     CHECK(shown_number(3.0000000000000004, Language::en, 4) == "3");
 }
 
@@ -49,7 +52,7 @@ TEST_CASE("shown_number in Polish: decimal comma and a true minus", "[digits]") 
 TEST_CASE("shown_number at 0 digits is the shortest round-trip text", "[digits]") {
     CHECK(shown_number(10.240000000000002, Language::en, 0) == "10.240000000000002");
     CHECK(shown_number(std::nan(""), Language::en, 4) == "nan");
-    CHECK(shown_number(-INFINITY, Language::en, 4) == "-inf");
+    CHECK(shown_number(-INFINITY, Language::en, 4) == "−inf");
 }
 
 // Property: for random doubles over the whole range and every digit count,
@@ -64,10 +67,15 @@ TEST_CASE("shown_number is within half a unit in the last shown digit", "[digits
         const double value = std::ldexp(mantissa(random), exponent(random));
         if (value == 0) continue;
         for (int digits = 1; digits <= 17; ++digits) {
-            const std::string text = shown_number(value, Language::en, digits);
+            std::string text = shown_number(value, Language::en, digits);
+            for (std::size_t at; (at = text.find("−")) != std::string::npos;) text.replace(at, 3, "-");
             int significant = 0;
             bool seen = false;
-            for (char c : text) {
+            // a whole number shown exactly keeps its trailing zeros: they hold no digit
+            std::string mantissa = text.substr(0, text.find('e'));
+            if (mantissa.find('.') == std::string::npos && text.find('e') == std::string::npos)
+                while (mantissa.size() > 1 && mantissa.back() == '0') mantissa.pop_back();
+            for (char c : mantissa) {
                 if (c == 'e') break;
                 if (c >= '1' && c <= '9') seen = true;
                 if (seen && c >= '0' && c <= '9') ++significant;

@@ -27,6 +27,8 @@
 #include "lesson/lesson_render.hpp"
 #include "lesson/worksheet.hpp"
 #include "trace/messages.hpp"
+#include "util/edit_distance.hpp"
+#include "util/wrap.hpp"
 #include "trace/trace_text.hpp"
 #include "render/kernel.hpp"
 #include "render/trace_pixel.hpp"
@@ -137,8 +139,11 @@ int run_list(const LessonLibrary& library, Language language) {
     for (Lesson& lesson : library.lessons(problems))
         if (lesson.language == language) lessons.push_back(std::move(lesson));
     for (const Lesson& lesson : lessons) width = std::max(width, lesson.header.name.size());
-    for (const Lesson& lesson : lessons)
-        out += fmt::format("  {:<{}}  {}\n", lesson.header.name, width, lesson.header.summary);
+    // Each summary wrapped under itself, so the list fits 80 columns.
+    for (const Lesson& lesson : lessons) {
+        std::string line = wrap_text(std::string(width + 4, ' ') + lesson.header.summary, width + 4);
+        out += line.replace(0, width + 4, fmt::format("  {:<{}}  ", lesson.header.name, width)) + "\n";
+    }
     print(out);
     return 0;
 }
@@ -191,7 +196,7 @@ int run_lesson(const LessonOptions& options) {
     const Language language = options.lang.empty() ? language_from_environment() : *parse_language(options.lang);
     if (!options.dump.empty()) {
         LessonLibrary::dump_builtin(options.dump);
-        fmt::print(stderr, "promyk: wrote the lessons, messages and scenes into {}\n", printable(options.dump));
+        fmt::print(stderr, "promyk: {}\n", ui_message("lesson_dumped", {{"dir", printable(options.dump)}}));
         return 0;
     }
     const LessonLibrary library(options.lessons);
@@ -200,18 +205,19 @@ int run_lesson(const LessonOptions& options) {
 
     const std::optional<Lesson> found = library.find(options.name, language);
     if (!found) {
-        std::string names;
-        for (const std::string& name : lesson_names(library, language)) names += (names.empty() ? "" : ", ") + name;
-        throw UsageError(fmt::format("no lesson '{}'; the lessons are {} (promyk lesson --list)", options.name, names));
+        std::string names, hint;
+        for (const std::string& name : lesson_names(library, language)) {
+            names += (names.empty() ? "" : ", ") + name;
+            if (hint.empty() && edit_distance(options.name, name) <= 2) hint = ui_message("did_you_mean", {{"name", name}});
+        }
+        throw UsageError(ui_message("lesson_unknown", {{"name", options.name}, {"hint", hint}, {"names", names}}));
     }
     const Lesson& lesson = *found;
     // Each column's numbers: real type and formula (one for all, or one a column).
     std::istringstream columns(lesson.header.columns);
     for (std::string column; columns >> column;)
         if (column != "double/article")
-            throw InputError(lesson.file, "columns",
-                             "this version of promyk computes in double with the article's formula only "
-                             "(double/article); the lesson asks for " + column);
+            throw InputError(lesson.file, "columns", ui_message("lesson_columns", {{"column", column}}));
     const Scene scene = options.scene_file.empty() ? library.scene(lesson.header.scene) : load_scene_file(options.scene_file);
     const int w = options.w_given ? options.w : lesson.header.w;
     std::vector<LessonPixel> pixels;
@@ -222,14 +228,16 @@ int run_lesson(const LessonOptions& options) {
     if (pixels.empty()) {
         for (const LessonPixel& pixel : lesson.header.pixels) {
             if (pixel.i >= w || pixel.j >= w)
-                throw UsageError(fmt::format("the lesson's pixel ({}, {}) is outside the {} × {} pane; choose pixels with --pixel",
-                                             pixel.i, pixel.j, w, w));
+                throw UsageError(ui_message("lesson_pixel_outside", {{"i", std::to_string(pixel.i)},
+                                                                     {"j", std::to_string(pixel.j)},
+                                                                     {"w", std::to_string(w)}}));
             pixels.push_back(pixel);
         }
     }
 
     LessonView view{lesson, builtin_vocabulary(), {}, scene.name, w, LessonFormat::text, false, {}, {}};
     view.format = options.format == "markdown" ? LessonFormat::markdown : LessonFormat::text;
+    view.digits = shown_digits(4);  // lessons and worksheets: 4 significant digits unless --digits
     const char* no_color = std::getenv("NO_COLOR");
     view.color = view.format == LessonFormat::text && isatty(STDOUT_FILENO) == 1 && (no_color == nullptr || *no_color == '\0');
     // The numbers' type and formula: the command line's, else the lesson's header's (else double, article).

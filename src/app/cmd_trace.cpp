@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include "util/edit_distance.hpp"
+#include "trace/messages.hpp"
 #include "app/cli_values.hpp"
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
@@ -48,16 +50,20 @@ std::vector<RealType> compared_types(const std::string& list) {
         const std::size_t comma = std::min(list.find(',', start), list.size());
         const std::string name(trim(std::string_view(list).substr(start, comma - start)));
         const auto it = std::find_if(known.begin(), known.end(), [&](const auto& k) { return k.first == name; });
-        if (it == known.end())
-            throw UsageError(fmt::format("--compare: unknown type '{}'; the types are float, double, long-double, quad",
-                                         printable(name)));
+        if (it == known.end()) {
+            std::string hint;
+            for (const auto& [known_name, type] : known)
+                if (hint.empty() && edit_distance(name, known_name) <= 2)
+                    hint = ui_message("did_you_mean", {{"name", known_name}});
+            throw UsageError(ui_message("compare_unknown_type", {{"type", printable(name)}, {"hint", hint}}));
+        }
         chosen[static_cast<std::size_t>(it - known.begin())] = true;
         start = comma + 1;
     }
     std::vector<RealType> types;
     for (std::size_t k = 0; k < known.size(); ++k)
         if (chosen[k]) types.push_back(known[k].second);
-    if (types.size() < 2) throw UsageError("--compare needs at least two different types, e.g. float,double,quad");
+    if (types.size() < 2) throw UsageError(ui_message("compare_too_few"));
     return types;
 }
 
@@ -91,6 +97,7 @@ int run_trace(const TraceOptions& options) {
         text.layout = options.wide ? TraceLayout::wide : TraceLayout::narrow;
         text.language = language;
         text.explain = options.explain;
+        text.digits = shown_digits(0);  // the trace is the record: every digit unless --digits
         out = format_trace_text(trace, builtin_vocabulary(), text);
     }
     std::fputs(out.c_str(), stdout);

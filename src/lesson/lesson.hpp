@@ -13,6 +13,13 @@
 
 namespace promyk {
 
+// A placeholder's format: N >= 0 decimals ({key:N}); or the lesson's shown
+// significant digits ({key}: 4, or --digits N); or every digit ({key:all},
+// the shortest text that reads back to the same number, for the steps that
+// are about digits).
+inline constexpr int shown_digits_default = -1;
+inline constexpr int every_digit = -2;
+
 struct LessonPixel {
     int i = 0, j = 0;
 };
@@ -102,7 +109,7 @@ struct Placeholder {
     std::string path;                // the groups and the key ("sphere[1].t"); the name when there are no groups
     char component = 0;              // 'x', 'y', 'z' or 0
     std::string settings;            // "@float,geometric" without the @; empty: the lesson's
-    int decimals = -1;               // -1: the shortest round-trip text
+    int decimals = shown_digits_default;  // N decimals ({key:N}); or as below
     bool symbol = false;             // {symbol:key}
     bool valid = true;               // false: malformed (text kept in `name`)
 };

@@ -450,7 +450,7 @@ std::string qualified_path(const Placeholder& placeholder) {
 
 std::vector<Placeholder> find_placeholders(std::string_view text) {
     static const std::regex form(
-        R"((symbol:)?((?:[A-Za-z_]+\[[0-9]{1,6}\]\.)*([A-Za-z_][A-Za-z0-9_]*))(?:\.([xyz]))?(?:@([a-z-]+(?:,[a-z-]+)?))?(?::([0-9]|1[0-7]))?)");
+        R"((symbol:)?((?:[A-Za-z_]+\[[0-9]{1,6}\]\.)*([A-Za-z_][A-Za-z0-9_]*))(?:\.([xyz]))?(?:@([a-z-]+(?:,[a-z-]+)?))?(?::([0-9]|1[0-7]|all))?)");
     std::vector<Placeholder> found;
     for (std::size_t k = 0; k < text.size(); ++k) {
         if (text[k] != '{') continue;
@@ -478,7 +478,8 @@ std::vector<Placeholder> find_placeholders(std::string_view text) {
             placeholder.name = match[3];
             if (match[4].matched) placeholder.component = match[4].str()[0];
             if (match[5].matched) placeholder.settings = match[5];
-            if (match[6].matched) placeholder.decimals = std::stoi(match[6].str());
+            if (match[6].matched)
+                placeholder.decimals = match[6].str() == "all" ? every_digit : std::stoi(match[6].str());
         }
         found.push_back(placeholder);
         k = placeholder.end - 1;

@@ -93,14 +93,17 @@ std::string fill(const LessonView& view, const std::string& text, const PixelTra
             const std::optional<LessonNumber> number = lesson_number(view, source, qualified);
             std::optional<std::string> shown;
             if (number && trace != nullptr && view.shown_value) shown = view.shown_value(*trace, qualified, p.component);
-            if (!number) {
+            if (!number && trace != nullptr && entry != nullptr && entry->term_of_sum) {
+                out += "0";  // a term the computation did not reach adds nothing to the sum
+            } else if (!number) {
                 out += message(language, "not_reached");
             } else if (shown) {
                 out += *shown;
             } else if (p.component != 0 && std::holds_alternative<Vec3d>(number->value)) {
-                out += lesson_number_text(component_of(*number, p.component), "scalar", language, p.decimals);
+                out += lesson_number_text(component_of(*number, p.component), "scalar", language, p.decimals, view.digits);
             } else {
-                out += lesson_number_text(*number, shown_kind(view.vocabulary, p.path, number->value), language, p.decimals);
+                out += lesson_number_text(*number, shown_kind(view.vocabulary, p.path, number->value), language, p.decimals,
+                                          view.digits);
             }
         }
     }
@@ -112,7 +115,8 @@ std::string fill(const LessonView& view, const std::string& text, const PixelTra
 std::string cell_text(const LessonView& view, const PixelTrace& trace, const std::string& key, const LessonNumber& number) {
     if (view.shown_value)
         if (std::optional<std::string> shown = view.shown_value(trace, key, 0)) return *shown;
-    return lesson_number_text(number, shown_kind(view.vocabulary, key, number.value), view.lesson.language);
+    return lesson_number_text(number, shown_kind(view.vocabulary, key, number.value), view.lesson.language,
+                              shown_digits_default, view.digits);
 }
 
 std::string pixel_label(const LessonView& view, const PixelTrace& trace) {
@@ -163,11 +167,29 @@ std::string wrap(const std::string& text, std::size_t indent, std::size_t first_
     std::size_t used = first_used;
     std::size_t k = 0;
     bool first_word = true;
-    while (k < text.size()) {
+    const auto next_word = [&] {
         const std::size_t space = text.find(' ', k);
-        const std::string word = text.substr(k, space == std::string::npos ? std::string::npos : space - k);
+        std::string word = text.substr(k, space == std::string::npos ? std::string::npos : space - k);
         k = space == std::string::npos ? text.size() : space + 1;
+        return word;
+    };
+    while (k < text.size()) {
+        std::string word = next_word();
         if (word.empty()) continue;
+        // A short parenthesised group, a pixel "(0, 0)" or a point
+        // "(0,25; −0,75; 2)", is never broken across lines.
+        const auto open = [](const std::string& w) {
+            return std::count(w.begin(), w.end(), '(') + std::count(w.begin(), w.end(), '[') -
+                   std::count(w.begin(), w.end(), ')') - std::count(w.begin(), w.end(), ']');
+        };
+        for (std::size_t saved = k; open(word) > 0 && k < text.size(); saved = k) {
+            const std::string more = next_word();
+            if (display_width(word) + 1 + display_width(more) > 40) {
+                k = saved;
+                break;
+            }
+            word += " " + more;
+        }
         if (!first_word && used + 1 + display_width(word) > columns) {
             out += '\n' + std::string(indent, ' ');
             used = indent;
@@ -573,18 +595,26 @@ std::string rounded_real_text(const std::string& text, const std::string& real, 
 
 }  // namespace
 
-std::string lesson_number_text(const LessonNumber& number, const std::string& kind, Language language, int decimals) {
-    if (number.real_text.empty() || std::holds_alternative<std::string>(number.value))
-        return value_text(number.value, kind, language, decimals);
+std::string lesson_number_text(const LessonNumber& number, const std::string& kind, Language language, int decimals,
+                               int digits) {
+    const int significant = decimals == every_digit ? 0 : digits;  // shown_number's 0: every digit
+    if (number.real_text.empty() || std::holds_alternative<std::string>(number.value)) {
+        if (decimals >= 0) return value_text(number.value, kind, language, decimals);
+        return shown_value_text(number.value, kind, language, significant);
+    }
+    const RealType type = number.real == "float"         ? RealType::float_
+                          : number.real == "double"      ? RealType::double_
+                          : number.real == "long-double" ? RealType::long_double
+                                                         : RealType::quad_;
     const auto one = [&](const std::string& text, double value) {
         // A float is exactly a double: its double value rounds the same.
         if (decimals >= 0 && (number.real == "float" || number.real == "double")) return number_text(value, language, decimals);
         if (decimals >= 0) return rounded_real_text(text, number.real, language, decimals);
-        return local_number_text(text, language);
+        return shown_real_text(text, type, language, significant);
     };
     if (const double* value = std::get_if<double>(&number.value)) return one(number.real_text.front(), *value);
     const Vec3d& v = std::get<Vec3d>(number.value);
-    if (number.real_text.size() != 3) return value_text(number.value, kind, language, decimals);
+    if (number.real_text.size() != 3) return shown_value_text(number.value, kind, language, significant);
     const bool vector = kind == "vector" || kind == "colour";
     const char* separator = language == Language::pl ? "; " : ", ";
     return std::string(vector ? "[" : "(") + one(number.real_text[0], v.x) + separator + one(number.real_text[1], v.y) +

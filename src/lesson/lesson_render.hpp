@@ -30,6 +30,9 @@ struct LessonView {
     // The same pixels in the other numeric settings the lesson's qualifiers
     // name ({delta@float}, = t@geometric): looked up by pixel, real and formula.
     std::vector<PixelTrace> others{};
+    // Significant digits of a value shown without a format of its own
+    // ({key}, tables): 4, or the command line's --digits.
+    int digits = 4;
 };
 
 // The lesson's title, summary and setup (scene, pane, pixels).
@@ -85,7 +88,10 @@ LessonNumber component_of(const LessonNumber& number, char component);
 // A number as a lesson shows it: in double (and for the scene's values) as
 // value_text does; in another real type its exact text in that type, or with
 // `decimals` >= 0 that exact value rounded to so many decimals. The Polish way in Polish.
-std::string lesson_number_text(const LessonNumber& number, const std::string& kind, Language language, int decimals = -1);
+// `decimals` shown_digits_default: rounded to `digits` significant digits;
+// every_digit: the exact shortest text.
+std::string lesson_number_text(const LessonNumber& number, const std::string& kind, Language language,
+                               int decimals = every_digit, int digits = 4);
 
 // True for a value of the scene, the same for every pixel: a top-level given
 // key (S, r, L, I, z_E, background) and sphere[k].S, sphere[k].r, light[k].L,

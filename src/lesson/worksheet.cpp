@@ -1,4 +1,5 @@
 #include "lesson/worksheet.hpp"
+#include "util/wrap.hpp"
 
 #include <algorithm>
 
@@ -72,9 +73,28 @@ std::string Worksheet::intro() const {
     if (numbers.real != view_.lesson.header.real) pixels += " --real " + numbers.real;
     if (numbers.formula != view_.lesson.header.formula) pixels += " --formula " + numbers.formula;
     if (numbers.spp != view_.lesson.header.spp) pixels += " --spp " + std::to_string(numbers.spp);
-    const std::string command =
+    const std::string one_line =
         fmt::format("promyk lesson {}{} --lang {} --answers {}", view_.lesson.header.name, pixels,
                     language_code(language), message(language, "worksheet_file"));
+    // The intro indents the command by 4 columns: a longer one is broken
+    // into shell lines ending in " \\", each within 80 columns, so it can
+    // still be copied and pasted as it stands.
+    constexpr std::size_t indent = 4, continued = 6;
+    std::string command;
+    std::size_t used = indent;
+    for (std::size_t start = 0; start < one_line.size();) {
+        std::size_t next = one_line.find(" --", start + 1);
+        if (next == std::string::npos) next = one_line.size();
+        const std::string piece = one_line.substr(start, next - start);  // " --pixel 3,4"
+        if (!command.empty() && used + piece.size() + 2 > text_columns) {
+            command += " \\\n" + std::string(continued, ' ') + piece.substr(1);
+            used = continued + piece.size() - 1;
+        } else {
+            command += piece;
+            used += piece.size();
+        }
+        start = next;
+    }
     return "\n" + message(language, "worksheet_intro", {{"command", command}}) + "\n";
 }
 
@@ -139,7 +159,8 @@ std::string Worksheet::answer_key() const {
              {"pixel", message(language, "pixel_label", {{"i", std::to_string(blank.i)}, {"j", std::to_string(blank.j)}})},
              {"symbol", symbol},
              {"key", key},
-             {"value", lesson_number_text(LessonNumber{blank.value, blank.real_text, blank.real}, kind, language)}});
+             {"value", lesson_number_text(LessonNumber{blank.value, blank.real_text, blank.real}, kind, language,
+                                          shown_digits_default, view_.digits)}});
         out += (markdown ? "- " : "  ") + line + "\n";
     }
     return out;

@@ -28,7 +28,7 @@ std::string_view language_code(Language language) { return language == Language:
 
 std::string number_text(double value, Language language, int decimals) {
     if (std::isnan(value)) return "nan";
-    if (std::isinf(value)) return value > 0 ? "inf" : (language == Language::pl ? "−inf" : "-inf");
+    if (std::isinf(value)) return value > 0 ? "inf" : "−inf";
     return local_number_text(decimals < 0 ? fmt::format("{}", value) : fmt::format("{:.{}f}", value, decimals), language);
 }
 
@@ -47,6 +47,8 @@ std::string significant_text(const TypedNumber& exact, int digits) {
     // value = 0.d × 10^(point): `point` digits stand before the decimal point.
     int point = static_cast<int>(d.size()) - exact.scale;
     const std::size_t keep = static_cast<std::size_t>(digits);
+    // Exact: nothing but zeros is dropped (10000 at 4 digits is 10000).
+    const bool exact_value = d.size() <= keep || d.find_first_not_of('0', keep) == std::string::npos;
     if (d.size() > keep) {
         const bool up = d[keep] >= '5';
         d.resize(keep);
@@ -65,7 +67,9 @@ std::string significant_text(const TypedNumber& exact, int digits) {
     while (d.size() > 1 && d.back() == '0') d.pop_back();
     const int e = point - 1;  // the first digit's power of ten
     std::string out = exact.negative ? "-" : "";
-    if (e < -4 || e >= digits) {
+    // %g's layout, except that a whole number shown exactly keeps its
+    // digits (z_E = 10000, not 1e+04) below 10^15.
+    if (e < -4 || (e >= digits && !(exact_value && e < 15))) {
         out += d.substr(0, 1);
         if (d.size() > 1) out += "." + d.substr(1);
         out += fmt::format("e{}{:02}", e < 0 ? '-' : '+', e < 0 ? -e : e);
@@ -105,17 +109,18 @@ std::string shown_real_text(const std::string& text, RealType type, Language lan
 }
 
 std::string local_number_text(std::string_view text, Language language) {
-    if (language != Language::pl) return std::string(text);
-    std::string polish;
+    // One minus sign in every text for people: U+2212, as the formulas write
+    // it ("N = P − S"), in both languages; JSON keeps the ASCII hyphen.
+    std::string local;
     for (const char c : text) {
-        if (c == '.')
-            polish += ',';
+        if (c == '.' && language == Language::pl)
+            local += ',';
         else if (c == '-')
-            polish += "−";  // U+2212, the minus sign of Polish typesetting
+            local += "−";
         else
-            polish += c;
+            local += c;
     }
-    return polish;
+    return local;
 }
 
 std::string value_text(const StepValue& value, const std::string& kind, Language language, int decimals) {
@@ -127,6 +132,20 @@ std::string value_text(const StepValue& value, const std::string& kind, Language
     const char* separator = language == Language::pl ? "; " : ", ";
     return fmt::format("{}{}{}{}{}{}{}", open, number_text(v.x, language, decimals), separator,
                        number_text(v.y, language, decimals), separator, number_text(v.z, language, decimals), close);
+}
+
+}  // namespace promyk
+
+namespace promyk {
+
+std::string shown_value_text(const StepValue& value, const std::string& kind, Language language, int digits) {
+    if (const double* number = std::get_if<double>(&value)) return shown_number(*number, language, digits);
+    if (const std::string* word = std::get_if<std::string>(&value)) return word_text(language, *word);
+    const Vec3d& v = std::get<Vec3d>(value);
+    const bool bracket = kind == "vector" || kind == "colour";
+    const char* separator = language == Language::pl ? "; " : ", ";
+    return std::string(bracket ? "[" : "(") + shown_number(v.x, language, digits) + separator +
+           shown_number(v.y, language, digits) + separator + shown_number(v.z, language, digits) + (bracket ? "]" : ")");
 }
 
 }  // namespace promyk

@@ -41,7 +41,8 @@ int shown_digits(int default_digits);
 // A number as people read it: rounded to `digits` significant digits, halves
 // away from zero (as a pupil rounds: 0.125 to 2 digits is 0.13), trailing
 // zeros dropped, in the style of printf's %g (an exponent below 1e-4 or from
-// 10^digits up: 1.235e+04), written the language's way. `digits` 0 shows
+// 10^digits up: 1.235e+04; but a value the digits hold exactly stays whole
+// below 10^15: 10000), written the language's way. `digits` 0 shows
 // every digit: the shortest text that reads back to the same double. Zero
 // is "0" whatever its sign; "nan", "inf", "-inf" as number_text.
 std::string shown_number(double value, Language language, int digits);
@@ -51,9 +52,13 @@ std::string shown_number(double value, Language language, int digits);
 // binary value, not from the double beside it.
 std::string shown_real_text(const std::string& text, RealType type, Language language, int digits);
 
-// A number's text ("-1.5e-3") written the language's way: in Polish a
-// decimal comma and the minus sign U+2212 ("−1,5e−3"); in English as it is.
+// A number's text ("-1.5e-3") written the language's way: the minus sign
+// U+2212 in both languages, and in Polish a decimal comma ("−1,5e−3";
+// English "−1.5e−3").
 std::string local_number_text(std::string_view text, Language language);
+
+// A step's value as shown_number shows its numbers (`digits` 0: every digit).
+std::string shown_value_text(const StepValue& value, const std::string& kind, Language language, int digits);
 
 // A step's value; `kind` is the vocabulary's ("scalar", "point", "vector").
 std::string value_text(const StepValue& value, const std::string& kind, Language language, int decimals = -1);

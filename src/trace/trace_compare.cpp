@@ -12,6 +12,7 @@
 #include "trace/messages.hpp"
 #include "trace/trace_text.hpp"
 #include "util/text.hpp"
+#include "util/wrap.hpp"
 
 namespace promyk {
 
@@ -50,6 +51,34 @@ std::string path_of(const PixelTrace& trace, const Step& step) {
 std::string pad(const std::string& text, std::size_t width) {
     const std::size_t shown = display_width(text);
     return shown >= width ? text : text + std::string(width - shown, ' ');
+}
+
+// `lead` + `value` + "   " + `note` on one line when it fits 80 columns;
+// else the value broken after its separators under the lead, and the note
+// on a line of its own.
+std::string fit_row(const std::string& lead, const std::string& value, const std::string& note, Language language) {
+    constexpr std::size_t columns = 80;
+    const std::string tail = note.empty() ? "" : "   " + note;
+    if (display_width(lead) + display_width(value) + display_width(tail) <= columns) return lead + value + tail + "\n";
+    const std::string separator = language == Language::pl ? "; " : ", ";
+    const std::string indent(display_width(lead), ' ');
+    std::string out = lead;
+    std::size_t width = display_width(lead), start = 0;
+    while (start < value.size()) {
+        const std::size_t found = value.find(separator, start);
+        const std::size_t end = found == std::string::npos ? value.size() : found + separator.size();
+        std::string piece = value.substr(start, end - start);
+        if (width > indent.size() && width + display_width(piece) > columns) {
+            while (!out.empty() && out.back() == ' ') out.pop_back();
+            out += "\n" + indent;
+            width = indent.size();
+        }
+        out += piece;
+        width += display_width(piece);
+        start = end;
+    }
+    if (!note.empty()) out += "\n" + indent + note;
+    return out + "\n";
 }
 
 }  // namespace
@@ -127,19 +156,20 @@ std::string format_comparison(const std::vector<PixelTrace>& traces, const Vocab
 
     std::size_t name_width = 0;
     for (const PixelTrace& trace : traces) name_width = std::max(name_width, trace.header.real.size());
-    std::string out = message(language, "compare_heading",
+    std::string out = wrap_text(message(language, "compare_heading",
                               {{"i", std::to_string(reference.header.i)},
                                {"j", std::to_string(reference.header.j)},
                                {"w", std::to_string(reference.header.w)},
                                {"pane", pane_phrase(reference.header.w)},
                                {"scene", reference.header.scene_name},
-                               {"reference", reference.header.real}}) +
-                      "\n" + message(language, "compare_legend", {{"reference", reference.header.real}}) + "\n";
+                               {"reference", reference.header.real}})) +
+                      "\n" + wrap_text(message(language, "compare_legend", {{"reference", reference.header.real}})) + "\n";
     for (const std::string& place : order) {
         const Step* ref = places.back().count(place) ? places.back().at(place) : nullptr;
         const std::string key = place.substr(place.rfind('.') == std::string::npos ? 0 : place.rfind('.') + 1);
         const std::string bare = key.substr(0, key.find('#'));
         const VocabularyEntry* entry = vocabulary.find(bare);
+        const bool vector = entry && (entry->kind == "vector" || entry->kind == "colour");
         out += fmt::format("\n{}  {}\n", place, entry ? entry->symbol : bare);
         for (std::size_t c = 0; c < traces.size(); ++c) {
             const auto it = places[c].find(place);
@@ -150,31 +180,60 @@ std::string format_comparison(const std::vector<PixelTrace>& traces, const Vocab
                 const std::vector<std::string> reference_texts = ref ? exact_texts(*ref) : std::vector<std::string>{};
                 const bool word = std::holds_alternative<std::string>(it->second->value);
                 shown.clear();
-                int least = 1000;  // the fewest agreeing digits of the components; -1: all equal
+                // A vector agrees as far as its worst component: a component
+                // equal to the reference's agrees in every digit, and the
+                // vector is "exactly equal" only when every component is.
+                bool all_equal = true;
+                int least = 1000;
                 for (std::size_t k = 0; k < texts.size(); ++k) {
                     std::string text = texts[k];
                     if (!word && c + 1 < traces.size() && k < reference_texts.size()) {
                         const int digits = agreeing_digits(texts[k], traces[c].header.real, reference_texts[k],
                                                            reference.header.real);
-                        least = std::min(least, digits);
-                        if (digits >= 0) text = mark_digits(texts[k], digits);
+                        if (digits >= 0) {
+                            all_equal = false;
+                            least = std::min(least, digits);
+                            text = mark_digits(texts[k], digits);
+                        }
                     }
-                    if (word) text = word_text(language, text);
-                    shown += (k ? ", " : "") + text;
+                    text = word ? word_text(language, text) : local_number_text(text, language);
+                    shown += (k ? (language == Language::pl ? "; " : ", ") : "") + text;
                 }
-                if (texts.size() == 3) shown = "(" + shown + ")";
+                if (texts.size() == 3) shown = (vector ? "[" : "(") + shown + (vector ? "]" : ")");
                 if (!word && c + 1 < traces.size() && ref)
-                    agree = least < 0 ? message(language, "compare_equal")
+                    agree = all_equal ? message(language, "compare_equal")
                                       : message(language, "compare_digits", {{"digits", std::to_string(least)}});
             }
-            out += fmt::format("  {}  {}{}\n", pad(traces[c].header.real, name_width), shown,
-                               agree.empty() ? "" : "   " + agree);
+            out += fit_row("  " + pad(traces[c].header.real, name_width) + "  ", shown, agree, language);
         }
     }
+    // How each type ends: its branch, its intensity and its grey level
+    // (or colour), so that a difference in the result shows at a glance.
     out += "\n";
-    for (const PixelTrace& trace : traces)
-        out += fmt::format("{}  {}: {}\n", pad(trace.header.real, name_width), message(language, "trace_branch"),
-                           std::string(branch_name(trace.branch)));
+    for (const PixelTrace& trace : traces) {
+        const std::string lead = pad(trace.header.real, name_width) + "  ";
+        std::string result = trace.result_real_text.empty() ? real_text(trace.result) : trace.result_real_text.front();
+        if (trace.result_rgb) {
+            const std::vector<std::string> texts =
+                trace.result_real_text.size() == 3
+                    ? trace.result_real_text
+                    : std::vector<std::string>{real_text(trace.result_rgb->x), real_text(trace.result_rgb->y),
+                                               real_text(trace.result_rgb->z)};
+            const char* separator = language == Language::pl ? "; " : ", ";
+            result = "[" + local_number_text(texts[0], language) + separator + local_number_text(texts[1], language) +
+                     separator + local_number_text(texts[2], language) + "]";
+        } else {
+            result = local_number_text(result, language);
+        }
+        const std::string levels = trace.result_rgb
+                                       ? fmt::format("[{}, {}, {}]", trace.rgb[0], trace.rgb[1], trace.rgb[2])
+                                       : std::to_string(trace.grey);
+        out += fit_row(lead, message(language, "compare_result",
+                                     {{"branch", message(language, "branch_name_" + std::string(branch_name(trace.branch)))},
+                                      {"I_P", result},
+                                      {"grey", levels}}),
+                       "", language);
+    }
     return out;
 }
 

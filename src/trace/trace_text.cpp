@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <optional>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include "trace/digits_alarm.hpp"
 #include "trace/digits_lost.hpp"
 #include "trace/messages.hpp"
 #include "util/text.hpp"
@@ -49,23 +51,42 @@ std::string wrap(const std::string& first, const std::string& text, std::size_t 
     return out + '\n';
 }
 
-std::string value_of(const StepValue& value, const Vocabulary& vocabulary, const std::string& key, Language language);
+std::string value_of(const StepValue& value, const Vocabulary& vocabulary, const std::string& key, Language language,
+                     int digits = 0);
 
-// "⚠ 4.1 digits lost" for a step that loses many digits, else empty.
-std::string digits_lost_mark(const Step& step, Language language) {
+// The pixel's intensities when they follow from the steps (lit or
+// shadowed); empty when the branch fixes the result (background, dark).
+std::vector<double> computed_intensities(const PixelTrace& trace) {
+    if (trace.branch != Branch::lit && trace.branch != Branch::shadowed && !trace.samples) return {};
+    if (trace.result_rgb) return {trace.result_rgb->x, trace.result_rgb->y, trace.result_rgb->z};
+    return {trace.result};
+}
+
+bool alarming(const Step& step, const PixelTrace& trace) {
+    return digits_lost_alarm(step.digits_lost, full_digits_of(trace.header.real), computed_intensities(trace));
+}
+
+// A step that loses many digits: "⚠ 9.1 digits lost" when the loss matters
+// (digits_alarm.hpp), "3.0 digits lost" when it is shown only as a count;
+// empty below the count's threshold.
+std::string digits_lost_mark(const Step& step, const PixelTrace& trace, Language language) {
     if (std::isnan(step.digits_lost) || !loses_many_digits(step.digits_lost)) return "";
-    return message(language, "trace_digits_lost",
-                   {{"digits", number_text(rounded_digits(step.digits_lost), language, 1)}});
+    const std::string text = message(language, "trace_digits_lost_count",
+                                     {{"digits", number_text(rounded_digits(step.digits_lost), language, 1)},
+                                      {"full", number_text(std::round(full_digits_of(trace.header.real)), language, 0)}});
+    return alarming(step, trace) ? "⚠ " + text : text;
 }
 
 std::string kind_of(const Vocabulary& vocabulary, const std::string& key);
 
-// A step's value as text: in a real type other than double, its exact text
-// in that type (the Polish way in Polish: a decimal comma); else value_of.
+// A step's value as text, rounded to `digits` significant digits (0: every
+// digit): in a real type other than double, from its exact text in that
+// type (the Polish way in Polish: a decimal comma); else value_of.
 std::string step_value_text(const Step& step, const Vocabulary& vocabulary, const std::string& key,
-                            Language language) {
-    if (step.real_text.empty()) return value_of(step.value, vocabulary, key, language);
-    auto local = [language](const std::string& text) { return local_number_text(text, language); };
+                            Language language, const std::string& real, int digits) {
+    if (step.real_text.empty()) return value_of(step.value, vocabulary, key, language, digits);
+    const RealType type = real == "float" ? RealType::float_ : real == "long-double" ? RealType::long_double : RealType::quad_;
+    auto local = [&](const std::string& text) { return shown_real_text(text, type, language, digits); };
     if (step.real_text.size() == 1) return local(step.real_text.front());
     const std::string kind = kind_of(vocabulary, key);
     const char* separator = language == Language::pl ? "; " : ", ";
@@ -76,7 +97,11 @@ std::string step_value_text(const Step& step, const Vocabulary& vocabulary, cons
     return out + (vector ? "]" : ")");
 }
 
-std::string symbol_of(const Vocabulary& vocabulary, const std::string& key) {
+// A key's symbol in the language: the vocabulary's, unless messages have a
+// "symbol_KEY" for the language (the symbols that are English words:
+// background, found, nearest, flipped, blocker).
+std::string symbol_of(const Vocabulary& vocabulary, const std::string& key, Language language) {
+    if (std::optional<std::string> own = optional_message(language, "symbol_" + key)) return *own;
     const VocabularyEntry* entry = vocabulary.find(key);
     return entry ? entry->symbol : key;
 }
@@ -112,7 +137,7 @@ std::string header_text(const PixelTrace& trace, const Vocabulary& vocabulary, L
     }
     std::string given;
     for (const GivenValue& value : h.given) {
-        given += (given.empty() ? "" : separator) + symbol_of(vocabulary, value.key) + " = " +
+        given += (given.empty() ? "" : separator) + symbol_of(vocabulary, value.key, language) + " = " +
                  value_of(value.value, vocabulary, value.key, language);
     }
     const std::string lead = message(language, "trace_given");
@@ -120,7 +145,7 @@ std::string header_text(const PixelTrace& trace, const Vocabulary& vocabulary, L
     for (const GivenGroup& group : h.given_groups) {
         std::string values;
         for (const GivenValue& value : group.values)
-            values += (values.empty() ? "" : separator) + symbol_of(vocabulary, value.key) + " = " +
+            values += (values.empty() ? "" : separator) + symbol_of(vocabulary, value.key, language) + " = " +
                       value_of(value.value, vocabulary, value.key, language);
         const std::string title = "  " + group_text(language, group.kind, group.index) + ": ";
         out += wrap(title, values, display_width(title), separator);
@@ -163,14 +188,15 @@ std::string narrow_steps(const PixelTrace& trace, const Vocabulary& vocabulary, 
         const std::size_t indent = margin.size() + number_width + 2 + key_width + 2;
         const std::string key(key_name(step.key));
         const VocabularyEntry* entry = vocabulary.find(key);
-        const std::string symbol = entry ? entry->symbol : key;
+        const std::string symbol = symbol_of(vocabulary, key, options.language);
         const std::string lead = fmt::format("{}{:>{}}  {}", margin, k + 1, number_width, pad(key, key_width + 2));
         out += wrap(lead, entry && !entry->formula.empty() ? symbol + " = " + entry->formula : symbol, indent);
         if (options.explain && entry)
             out += wrap(std::string(indent, ' '), options.language == Language::pl ? entry->pl : entry->en, indent);
-        out += wrap(std::string(indent, ' ') + "= ", step_value_text(step, vocabulary, key, options.language),
+        out += wrap(std::string(indent, ' ') + "= ",
+                    step_value_text(step, vocabulary, key, options.language, trace.header.real, options.digits),
                     indent + 2, options.language == Language::pl ? "; " : " ");
-        const std::string mark = digits_lost_mark(step, options.language);
+        const std::string mark = digits_lost_mark(step, trace, options.language);
         if (!mark.empty()) out += std::string(indent, ' ') + mark + "\n";
     }
     return out;
@@ -194,9 +220,10 @@ std::string wide_steps(const PixelTrace& trace, const Vocabulary& vocabulary, co
             key = group_text(language, group.kind, group.index) + " / " + key;
         }
         const VocabularyEntry* entry = vocabulary.find(bare);
-        const std::string mark = digits_lost_mark(step, language);
-        rows.push_back({std::to_string(k + 1), key, entry ? entry->symbol : key, entry ? entry->formula : "",
-                        step_value_text(step, vocabulary, bare, language) + (mark.empty() ? "" : "  " + mark)});
+        const std::string mark = digits_lost_mark(step, trace, language);
+        rows.push_back({std::to_string(k + 1), key, symbol_of(vocabulary, bare, language), entry ? entry->formula : "",
+                        step_value_text(step, vocabulary, bare, language, trace.header.real, options.digits) +
+                            (mark.empty() ? "" : "  " + mark)});
     }
     std::size_t widths[4] = {0, 0, 0, 0};
     for (const Row& row : rows) {
@@ -219,7 +246,7 @@ std::string samples_text(const SampleSummary& samples, int spp, Language languag
     for (int b = 0; b < branch_count; ++b) {
         const int n = samples.branches[static_cast<std::size_t>(b)];
         if (n == 0) continue;
-        only = std::string(branch_name(static_cast<Branch>(b)));
+        only = message(language, "branch_name_" + std::string(branch_name(static_cast<Branch>(b))));
         counts += (counts.empty() ? "" : ", ") + std::to_string(n) + " " + only;
     }
     if (samples.agree())
@@ -244,18 +271,18 @@ std::string digits_lost_notes(const PixelTrace& trace, const Vocabulary& vocabul
     bool marked = false;
     const Step* worst = nullptr;
     for (const Step& step : trace.steps) {
-        if (std::isnan(step.digits_lost) || !loses_many_digits(step.digits_lost)) continue;
+        if (std::isnan(step.digits_lost) || !loses_many_digits(step.digits_lost) || !alarming(step, trace)) continue;
         marked = true;
         if (geometric_avoids(step.key) && (!worst || step.digits_lost > worst->digits_lost)) worst = &step;
     }
     if (!marked) return "";
     std::string out = "\n" + wrap("", message(language, "trace_digits_lost_about",
-                                       {{"threshold", number_text(many_digits_lost, language)}}),
+                                       {{"half", number_text(full_digits_of(trace.header.real) / 2, language, 1)}}),
                            2);
     if (worst && trace.header.formula != "geometric") {
         const std::string key(key_name(worst->key));
         out += wrap("", message(language, "trace_suggest_geometric",
-                                {{"symbol", symbol_of(vocabulary, key)},
+                                {{"symbol", symbol_of(vocabulary, key, language)},
                                  {"digits", number_text(rounded_digits(worst->digits_lost), language, 1)},
                                  {"formula", trace.header.formula}}),
                     2);
@@ -263,19 +290,31 @@ std::string digits_lost_notes(const PixelTrace& trace, const Vocabulary& vocabul
     return out;
 }
 
-std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, Language language) {
+// The value of a vocabulary key among the top-level steps (nothing when
+// the trace lacks it or it is not a number).
+std::optional<double> top_level_number(const PixelTrace& trace, Key key) {
+    for (const Step& step : trace.steps)
+        if (step.key == key && step.group < 0)
+            if (const double* value = std::get_if<double>(&step.value)) return *value;
+    return std::nullopt;
+}
+
+std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, const TraceTextOptions& options) {
+    const Language language = options.language;
     const std::string branch(branch_name(trace.branch));
     const BranchEntry* about = vocabulary.find_branch(branch);
     const std::string about_text = about ? (language == Language::pl ? about->pl : about->en) : "";
     const std::string branch_lead = message(language, "trace_branch");
-    std::string out = "\n" + wrap(branch_lead, branch + (about ? " — " + about_text : ""), display_width(branch_lead));
+    std::string out = "\n" + wrap(branch_lead, message(language, "branch_name_" + branch) + (about ? " — " + about_text : ""),
+                                  display_width(branch_lead));
     const VocabularyEntry* result = vocabulary.find("I_P");
     const std::string I_P = result ? result->symbol : "I_P";
-    std::string value = trace.result_rgb ? value_text(StepValue{*trace.result_rgb}, "colour", language)
-                                         : number_text(trace.result, language);
+    std::string value = trace.result_rgb ? shown_value_text(StepValue{*trace.result_rgb}, "colour", language, options.digits)
+                                         : shown_number(trace.result, language, options.digits);
     if (!trace.result_real_text.empty()) {
         const Step exact{Key::E, StepValue{0.0}, -1, trace.result_real_text};
-        value = step_value_text(exact, vocabulary, trace.result_rgb ? "m" : "I_P", language);
+        value = step_value_text(exact, vocabulary, trace.result_rgb ? "m" : "I_P", language, trace.header.real,
+                                options.digits);
     }
     if (trace.samples) out += samples_text(*trace.samples, trace.header.spp, language);
     if (!trace.hit_object.empty())
@@ -295,6 +334,12 @@ std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, L
                          : "") +
                     value,
                 display_width(result_lead), language == Language::pl ? "; " : ", ");
+    // cos α is a cosine only for a point on the sphere: above 1 (beyond
+    // rounding) the "hit" is not on the sphere at all, and I_P with it is
+    // no intensity (a tangent ray whose Δ/4 lost every digit).
+    if (const std::optional<double> cos_alpha = top_level_number(trace, Key::cos_alpha);
+        cos_alpha && std::fabs(*cos_alpha) > 1 + 1e-6)
+        out += wrap("", message(language, "trace_cos_above_one", {{"cos", shown_number(*cos_alpha, language, 4)}}), 2);
     if (trace.first_non_finite && *trace.first_non_finite < trace.steps.size()) {
         const std::size_t k = *trace.first_non_finite;
         const std::string key(key_name(trace.steps[k].key));
@@ -302,21 +347,28 @@ std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, L
         out += wrap(message(language, "trace_first_non_finite"),
                     message(language, decides ? "trace_non_finite_decides" : "trace_non_finite_lesson",
                             {{"k", std::to_string(k + 1)},
-                             {"symbol", symbol_of(vocabulary, key)},
+                             {"symbol", symbol_of(vocabulary, key, language)},
                              {"value", value_of(trace.steps[k].value, vocabulary, key, language)}}),
                     2);
     }
-    const std::string levels = trace.result_rgb ? fmt::format("({}, {}, {})", trace.rgb[0], trace.rgb[1], trace.rgb[2])
-                                                : std::to_string(trace.grey);
-    out += wrap(message(language, "trace_grey"),
-                message(language, "trace_grey_rule", {{"grey", levels}, {"I_P", I_P}}) +
-                    (trace.result != trace.result ? message(language, "trace_grey_nan") : ""),
-                2);
-    return out + digits_lost_notes(trace, vocabulary, language) + "\n" + message(language, "trace_note") + "\n";
+    if (trace.result_rgb) {
+        const std::string levels = fmt::format("[{}, {}, {}]", trace.rgb[0], trace.rgb[1], trace.rgb[2]);
+        out += wrap(message(language, "trace_rgb"), message(language, "trace_rgb_rule", {{"rgb", levels}, {"I_P", I_P}}), 2);
+    } else {
+        out += wrap(message(language, "trace_grey"),
+                    message(language, "trace_grey_rule", {{"grey", std::to_string(trace.grey)}, {"I_P", I_P}}) +
+                        (trace.result != trace.result ? message(language, "trace_grey_nan") : ""),
+                    2);
+    }
+    return out + digits_lost_notes(trace, vocabulary, language) + "\n" +
+           message(language, options.digits > 0 ? "trace_note_digits" : "trace_note",
+                   {{"digits", std::to_string(options.digits)}}) +
+           "\n";
 }
 
-std::string value_of(const StepValue& value, const Vocabulary& vocabulary, const std::string& key, Language language) {
-    return value_text(value, kind_of(vocabulary, key), language);
+std::string value_of(const StepValue& value, const Vocabulary& vocabulary, const std::string& key, Language language,
+                     int digits) {
+    return shown_value_text(value, kind_of(vocabulary, key), language, digits);
 }
 
 }  // namespace
@@ -332,7 +384,7 @@ std::string pane_phrase(int w) {
 std::string format_trace_text(const PixelTrace& trace, const Vocabulary& vocabulary, const TraceTextOptions& options) {
     std::string out = header_text(trace, vocabulary, options.language);
     out += options.layout == TraceLayout::wide ? wide_steps(trace, vocabulary, options) : narrow_steps(trace, vocabulary, options);
-    return out + footer_text(trace, vocabulary, options.language);
+    return out + footer_text(trace, vocabulary, options);
 }
 
 }  // namespace promyk

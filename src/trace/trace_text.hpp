@@ -19,6 +19,7 @@ struct TraceTextOptions {
     TraceLayout layout = TraceLayout::narrow;
     Language language = Language::en;
     bool explain = false;  // each step's description from the vocabulary under its formula
+    int digits = 0;        // significant digits shown (0: every digit, the record)
 };
 
 std::string format_trace_text(const PixelTrace& trace, const Vocabulary& vocabulary,

@@ -61,6 +61,11 @@ Vocabulary parse_vocabulary(std::string_view text, const std::string& source) {
             if (!given->is_boolean()) throw InputError(source, pointer + "/given", "given must be true or false");
             entry.given = given->get<bool>();
         }
+        if (const auto term = item.find("term_of_sum"); term != item.end()) {
+            if (!term->is_boolean())
+                throw InputError(source, pointer + "/term_of_sum", "term_of_sum must be true or false");
+            entry.term_of_sum = term->get<bool>();
+        }
         if (vocabulary.find(entry.key)) throw InputError(source, pointer + "/key", "duplicate key '" + entry.key + "'");
         vocabulary.keys.push_back(std::move(entry));
     }

@@ -18,6 +18,10 @@ struct VocabularyEntry {
     std::string formula_latex;
     std::string pl, en;  // short descriptions
     bool given = false;  // a value of the scene (S, r, ...), the same for every pixel
+    // A term of the intensity's sum (a light's diffuse part, its highlight,
+    // its contribution): where the computation did not reach it, it adds
+    // nothing, and prose shows 0, never a dash inside a sum.
+    bool term_of_sum = false;
 };
 
 struct BranchEntry {

@@ -1,0 +1,144 @@
+// The text trace as a class reads it: branch names in the run's language
+// (no English word in Polish output), a colour labelled as a colour, the
+// digits rule (--digits), the note on cos α above 1, and trace --compare's
+// agreement and closing lines.
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "render/trace_pixel.hpp"
+#include "scene/scene.hpp"
+#include "trace/trace_compare.hpp"
+#include "trace/trace_text.hpp"
+#include "trace/vocabulary.hpp"
+
+using namespace promyk;
+
+namespace {
+
+std::string text_of(const PixelTrace& trace, Language language, int digits = 0) {
+    TraceTextOptions options;
+    options.language = language;
+    options.digits = digits;
+    return format_trace_text(trace, builtin_vocabulary(), options);
+}
+
+// The text with every run of spaces and line ends made one space: prose
+// checked whatever its wrapping.
+std::string flat(const std::string& text) {
+    std::string out;
+    for (const char c : text) {
+        const bool space = c == ' ' || c == '\n';
+        if (space && !out.empty() && out.back() == ' ') continue;
+        out += space ? ' ' : c;
+    }
+    return out;
+}
+
+std::string fmt_rgb(const std::array<int, 3>& rgb) {
+    return "[" + std::to_string(rgb[0]) + ", " + std::to_string(rgb[1]) + ", " + std::to_string(rgb[2]) + "]";
+}
+
+Scene coloured_scene() {
+    Scene scene = article_scene();
+    scene.materials.push_back(Material{0, 1, 0, 10, Colour{1, 0.5, 0.25}});
+    scene.spheres[0].material = 0;
+    return scene;
+}
+
+}  // namespace
+
+TEST_CASE("trace text: branch names in the run's language", "[trace-text]") {
+    // At w = 8: (0, 0) misses, (5, 1) is on the dark side, (3, 4) is lit.
+    const std::vector<std::pair<int, int>> pixels = {{0, 0}, {5, 1}, {3, 4}};
+    const std::vector<std::string> polish = {"gałąź: chybienie — ", "gałąź: ciemna strona — ", "gałąź: strona oświetlona — "};
+    const std::vector<std::string> english = {"branch: miss — ", "branch: dark side — ", "branch: lit side — "};
+    for (std::size_t k = 0; k < pixels.size(); ++k) {
+        const PixelTrace trace = trace_pixel(article_scene(), 8, pixels[k].first, pixels[k].second);
+        const std::string pl = text_of(trace, Language::pl), en = text_of(trace, Language::en);
+        CHECK(pl.find(polish[k]) != std::string::npos);
+        CHECK(en.find(english[k]) != std::string::npos);
+        // English words of the branch names and the scene's fields never in Polish.
+        for (const char* word : {"background", "lit", "miss", "dark", "branch", "grey level"}) {
+            INFO(word << " in\n" << pl);
+            CHECK(pl.find(std::string(" ") + word) == std::string::npos);
+        }
+        CHECK(pl.find("tło = 0,5") != std::string::npos);
+    }
+}
+
+TEST_CASE("trace text: a colour is called a colour, with one kind of bracket", "[trace-text]") {
+    const PixelTrace trace = trace_pixel(coloured_scene(), 8, 3, 4);
+    REQUIRE(trace.result_rgb);
+    const std::string en = text_of(trace, Language::en);
+    CHECK(en.find("grey level") == std::string::npos);
+    CHECK(en.find(fmt_rgb(trace.rgb)) != std::string::npos);
+    CHECK(en.find("colour: [") != std::string::npos);
+    CHECK(text_of(trace, Language::pl).find("kolor: [") != std::string::npos);
+}
+
+TEST_CASE("trace text: --digits rounds every value shown; the default shows every digit", "[trace-text]") {
+    const PixelTrace trace = trace_pixel(article_scene(), 8, 3, 4);
+    const std::string all = text_of(trace, Language::en), four = text_of(trace, Language::en, 4);
+    CHECK(all.find("= 4.557812500000004\n") != std::string::npos);
+    CHECK(four.find("= 4.558\n") != std::string::npos);
+    CHECK(four.find("= 10.24\n") != std::string::npos);        // |S|² = 10.240000000000002
+    CHECK(four.find("I_P = I·D / (r·√|K|²) = 0.6957") != std::string::npos);
+    CHECK(four.find("4.557812500000004") == std::string::npos);
+    CHECK(text_of(trace, Language::pl, 4).find("= 4,558\n") != std::string::npos);
+    // negatives carry the minus sign U+2212 in both languages, as formulas do
+    CHECK(all.find("−1.083983078994792]") != std::string::npos);
+    CHECK(all.find("-1.08") == std::string::npos);
+}
+
+// A ray that just misses a far sphere "hits" it in double once Δ/4 loses
+// every digit: the hit lies beside the sphere and cos α comes out 10298.
+TEST_CASE("trace text: cos α above 1 is said to mean the hit is not on the sphere", "[trace-text]") {
+    Scene scene = article_scene();
+    scene.z_E = 1.0 / 128;
+    scene.spheres[0].S = Vec3d{1257558701527, 1257558701527, 5030234806090};
+    scene.spheres[0].r = 6;
+    const PixelTrace trace = trace_pixel(scene, 512, 255, 256);
+    const std::string en = flat(text_of(trace, Language::en)), pl = flat(text_of(trace, Language::pl));
+    INFO(en);
+    CHECK(en.find("cos α = 1.03e+04 > 1") != std::string::npos);
+    CHECK(en.find("this \"hit\" is not on the sphere") != std::string::npos);
+    CHECK(pl.find("cos α = 1,03e+04 > 1") != std::string::npos);
+    // the article's pixel: no such note
+    CHECK(text_of(trace_pixel(article_scene(), 8, 3, 4), Language::en).find("A cosine never exceeds 1") == std::string::npos);
+}
+
+TEST_CASE("trace --compare: a vector agrees as far as its worst component, and the results close it", "[trace-text]") {
+    std::vector<PixelTrace> traces;
+    for (const RealType type : {RealType::float_, RealType::double_, RealType::quad_})
+        traces.push_back(trace_pixel(article_scene(), 8, 3, 4, type));
+    const std::string en = format_comparison(traces, builtin_vocabulary(), Language::en);
+    INFO(en);
+    // E = (0.125, 0.125, 2) is exact in every type: every component equal.
+    CHECK(en.find("(0.125, 0.125, 2)   exactly equal") != std::string::npos);
+    // P in double: no component is exactly quad's, so it is not "exactly equal".
+    const std::size_t P = en.find("\nP  P\n");
+    REQUIRE(P != std::string::npos);
+    const std::string P_rows = en.substr(P, en.find("\n\n", P + 1) - P);
+    CHECK(P_rows.find("exactly equal") == std::string::npos);
+    CHECK(P_rows.find("significant digits agree") != std::string::npos);
+    // the closing lines: branch, intensity and grey level of each type
+    CHECK(en.find("branch: : ") == std::string::npos);
+    CHECK(en.find("double  branch: lit side; I_P = 0.6957365143147741; level: 177") != std::string::npos);
+    CHECK(en.find("float   branch: lit side; I_P = ") != std::string::npos);
+    const std::string pl = format_comparison(traces, builtin_vocabulary(), Language::pl);
+    CHECK(pl.find("gałąź: strona oświetlona; I_P = 0,6957365143147741; poziom: 177") != std::string::npos);
+    for (const std::string& out : {en, pl}) {
+        std::size_t start = 0;
+        while (start < out.size()) {
+            const std::size_t end = std::min(out.find('\n', start), out.size());
+            std::size_t width = 0;
+            for (std::size_t k = start; k < end; ++k) width += (static_cast<unsigned char>(out[k]) & 0xC0) != 0x80;
+            INFO(out.substr(start, end - start));
+            CHECK(width <= 80);
+            start = end + 1;
+        }
+    }
+}
