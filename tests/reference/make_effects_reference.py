@@ -839,6 +839,11 @@ def main(argv):
     if len(argv) != 2:
         sys.stderr.write("usage: make_effects_reference.py OUTPUT.json\n")
         return 2
+    if argv[-1].startswith("-"):
+        # An option misread as the output would write a file named like it
+        # (a 257 KB file '--help' was committed once).
+        sys.stderr.write(f"{argv[0]}: the output path must not begin with '-': {argv[-1]}\n")
+        return 2
     scene_blocks = []
     for file_name in SCENE_FILES:
         scene = load_scene_file(file_name)

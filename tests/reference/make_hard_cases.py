@@ -1026,6 +1026,11 @@ def main(argv):
     if len(argv) != 2 and not want_catalogue:
         sys.stderr.write("usage: make_hard_cases.py [--catalogue] OUTPUT.json\n")
         return 2
+    if argv[-1].startswith("-"):
+        # An option misread as the output would write a file named like it
+        # (a 257 KB file '--help' was committed once).
+        sys.stderr.write(f"{argv[0]}: the output path must not begin with '-': {argv[-1]}\n")
+        return 2
     records = [case_record(c) for c in cases()]
     edges = far_edges()
     family = tangent_families()
