@@ -9,3 +9,11 @@ add_test(NAME reference_script_refuses_dash_output
                  -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/docs/dash_output
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect.cmake)
 
+# The release pass only: the sanitizers' build would give the same bytes and
+# outputs, many times slower.
+if(NOT PROMYK_SANITIZE)
+  # docs/*.png are what docs/make_pictures.sh makes today.
+  add_test(NAME docs.pictures_up_to_date
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/docs/pictures_up_to_date.sh $<TARGET_FILE:promyk>
+                   ${CMAKE_CURRENT_BINARY_DIR}/docs/pictures)
+endif()
