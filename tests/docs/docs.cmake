@@ -16,4 +16,8 @@ if(NOT PROMYK_SANITIZE)
   add_test(NAME docs.pictures_up_to_date
            COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/docs/pictures_up_to_date.sh $<TARGET_FILE:promyk>
                    ${CMAKE_CURRENT_BINARY_DIR}/docs/pictures)
+  # Every command shown in README.md and docs/*.md prints what is shown.
+  add_test(NAME docs.commands
+           COMMAND ${PROMYK_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/docs/doc_commands.py $<TARGET_FILE:promyk>)
+  set_tests_properties(docs.commands PROPERTIES TIMEOUT 300)
 endif()
