@@ -18,7 +18,7 @@ import tempfile
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 ELLIPSIS = "…"
-MARKER = re.compile(r"^<!--\s*(output|not run|exit|file|run as):\s*(.*?)\s*-->\s*$")
+MARKER = re.compile(r"^<!--\s*(output|not run|exit|file|run as|pending):\s*(.*?)\s*-->\s*$")
 FENCE = re.compile(r"^```(\S*)\s*$")
 PROGRAM = re.compile(r"^(promyk|build/release/promyk)(\s|$)")
 NUMBER = re.compile(r"[-+−]?\d+(?:[.,]\d+)*(?:[eE][-+]?\d+)?")
@@ -221,7 +221,8 @@ def check_file(path, promyk, update):
                     new_block += shown or []
                     continue
                 expected_code = exit_code if n == len(commands) - 1 else 0
-                if code != expected_code:
+                wrong_exit = code != expected_code
+                if wrong_exit:
                     problems.append(f"{where}: '{to_run}' exited with {code}, not {expected_code}:\n  "
                                     + "\n  ".join(actual[-10:]))
                 if shown is None:
@@ -229,13 +230,15 @@ def check_file(path, promyk, update):
                 recorded = block.marker("run as") is not None
                 if contains_in_order(shown, actual) if recorded else matches(shown, actual, timing):
                     new_block += shown
-                elif update and not recorded:
+                elif update and not recorded and not wrong_exit:
                     new_block += updated(shown, actual)
                     changed = True
                 else:
-                    if update:
+                    if update and recorded:
                         problems.append(f"{where}: a recorded run's shape differs from '{to_run}': "
                                         "record it again (see the text above the block)")
+                    elif update:
+                        pass  # the wrong exit code is reported: the output shown stays
                     else:
                         diff = difflib.unified_diff(shown, actual, "shown", "printed", lineterm="", n=2)
                         problems.append(f"{where}: the output of '{to_run}' differs from the one shown"
