@@ -57,7 +57,7 @@ bool same_bits(double a, double b) {
     return x == y;
 }
 
-// The keys whose steps carry an estimate (README: traces; the schema).
+// The keys whose steps carry an estimate (docs/traces.md: digits lost; the schema).
 const std::set<Key> estimated_keys = {Key::C,   Key::c_0, Key::delta, Key::delta_fma, Key::t,     Key::t_far,
                                       Key::q,   Key::l,   Key::delta_g, Key::N,       Key::K,     Key::D,
                                       Key::NE,  Key::b_s, Key::c_s,   Key::delta_s,   Key::s_1,   Key::s_2,

@@ -1,6 +1,6 @@
 // The extended engine against an independent high-precision reference
 // (tests/reference/effects_reference.json, made by make_effects_reference.py
-// with mpmath at 200 bits from README's "The engine's conventions (the
+// with mpmath at 200 bits from docs/conventions.md, "The engine's conventions (the
 // extensions)"; see tests/reference/README.md, "The extensions' reference").
 //
 // For every listed pixel of the example scenes in lessons/scenes/ (read with

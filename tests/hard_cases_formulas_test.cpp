@@ -6,7 +6,7 @@
 //
 // make_hard_cases.py simulates each formula in the engine's own operation
 // order (src/geometry/sphere_stable.hpp, sphere_fma.hpp, sphere_geometric.hpp;
-// README "The engine's conventions"), with the engine's root choice
+// docs/conventions.md, "The engine's conventions"), with the engine's root choice
 // (nearest_root_ahead: the near root if > 0, else the far one, in either
 // kernel, render/tracer.hpp) and logs the values the engine records under the
 // engine's keys. For every case, type and formula the test checks:

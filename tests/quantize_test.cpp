@@ -1,5 +1,5 @@
 // to_byte (src/render/quantize.hpp) against an independent computation of
-// README's rule round(clamp(v, 0, 1) * 255), halves rounded up, NaN to 0.
+// the rule of docs/conventions.md, round(clamp(v, 0, 1) * 255), halves rounded up, NaN to 0.
 //
 // The product clamp(v, 0, 1) * 255 is the double product, as the expression
 // evaluates in double; its rounding to an integer is done here with integer

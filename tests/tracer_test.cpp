@@ -61,7 +61,7 @@ Scene one_sphere_scene(double z_E, Vec3d S, double r, Vec3d L, double I, double 
     return scene;
 }
 
-// README's rule round(clamp(v, 0, 1) * 255), halves up, by std::lround:
+// The rule of docs/conventions.md, round(clamp(v, 0, 1) * 255), halves up, by std::lround:
 // independent of the engine's to_byte.
 std::uint8_t independent_byte(double v) {
     return static_cast<std::uint8_t>(std::lround(std::min(std::max(v, 0.0), 1.0) * 255));

@@ -3,7 +3,7 @@
 
 Usage: python3 make_effects_reference.py OUTPUT.json
 
-Follows README.md, "The engine's conventions (the extensions)", operation by
+Follows docs/conventions.md, "The engine's conventions (the extensions)", operation by
 operation: the nearest hit with t > 0 over spheres (the far root when the eye
 is inside) and planes, the normal facing the eye, per light the article's
 diffuse term (I*D)/(r*sqrt(KK)), Phong's highlight with RV^n by repeated
@@ -226,7 +226,7 @@ def power(x, n):
 
 
 # --------------------------------------------------------------------------
-# The engine's conventions (README.md), one pixel
+# The engine's conventions (docs/conventions.md), one pixel
 
 
 def pane_point(scene, w, i, j):
@@ -818,7 +818,7 @@ def header():
         "generator": "tests/reference/make_effects_reference.py (python3 with mpmath); regenerate with: "
                      "python3 tests/reference/make_effects_reference.py tests/reference/effects_reference.json",
         "precision_bits": mr.PREC,
-        "conventions": "README.md, 'The engine's conventions (the extensions)', followed operation by operation",
+        "conventions": "docs/conventions.md, 'The engine's conventions (the extensions)', followed operation by operation",
         "scene_files": "lessons/scenes/FILE; each number is taken as the exact value of the IEEE double nearest "
                        "its decimal text",
         "pane": "E = (x_E, y_E, z_E) with x_E = (2j+1)/w - 1 and y_E = -(2i+1)/w + 1 in IEEE doubles; "
@@ -838,6 +838,11 @@ def header():
 def main(argv):
     if len(argv) != 2:
         sys.stderr.write("usage: make_effects_reference.py OUTPUT.json\n")
+        return 2
+    if argv[-1].startswith("-"):
+        # An option misread as the output would write a file named like it
+        # (a 257 KB file '--help' was committed once).
+        sys.stderr.write(f"{argv[0]}: the output path must not begin with '-': {argv[-1]}\n")
         return 2
     scene_blocks = []
     for file_name in SCENE_FILES:

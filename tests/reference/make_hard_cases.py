@@ -14,7 +14,7 @@ engine computes in (float, double, long double, quad: significands of 24, 53,
   for long double and quad), and the pane point x_E = (2j+1)/w - 1,
   y_E = -(2i+1)/w + 1 evaluated in the type, one rounding per operation, as
   render/pane.hpp does;
-- `exact`: the engine's computation (README, "The engine's conventions (the
+- `exact`: the engine's computation (docs/conventions.md, "The engine's conventions (the
   extensions)", with the article's formula for the sphere) carried out
   EXACTLY on those inputs: every + - * is exact (4096-bit mpmath arithmetic,
   more than the inputs' products and sums can need: the script checks delta
@@ -424,7 +424,7 @@ SPHERE = {"article": sphere_article, "stable": sphere_stable, "fma": sphere_fma,
 
 
 # --------------------------------------------------------------------------
-# One pixel, README's conventions
+# One pixel, the conventions of docs/conventions.md
 
 
 def sphere_blocks(P, K, KK, S, r, log):
@@ -983,7 +983,7 @@ def header():
         "inputs": "each scene number rounded to nearest in the type (exact for long double and quad); the pane "
                   "point -(2i+1)/w + 1, (2j+1)/w - 1 computed in the type; written with enough digits to read "
                   "back exactly in the type (9, 17, 21, 36)",
-        "exact": "README's computation (the article's sphere formula) carried out exactly on the type's inputs "
+        "exact": "The computation of docs/conventions.md (the article's sphere formula) carried out exactly on the type's inputs "
                  "(4096-bit mpmath: + - * exact, / and sqrt to 4096 bits), %d significant digits; ties "
                  "(values equal to 3500 bits) decided as exact equality" % EXACT_DIGITS,
         "formulas": "per sphere formula, the program with every operation correctly rounded to nearest in the "
@@ -1025,6 +1025,11 @@ def main(argv):
     want_catalogue = len(argv) == 3 and argv[1] == "--catalogue"
     if len(argv) != 2 and not want_catalogue:
         sys.stderr.write("usage: make_hard_cases.py [--catalogue] OUTPUT.json\n")
+        return 2
+    if argv[-1].startswith("-"):
+        # An option misread as the output would write a file named like it
+        # (a 257 KB file '--help' was committed once).
+        sys.stderr.write(f"{argv[0]}: the output path must not begin with '-': {argv[-1]}\n")
         return 2
     records = [case_record(c) for c in cases()]
     edges = far_edges()

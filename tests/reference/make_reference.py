@@ -678,6 +678,11 @@ def main(argv):
     if len(argv) != 2 and not scenes_mode:
         sys.stderr.write("usage: make_reference.py [--scenes] OUTPUT.json\n")
         return 2
+    if argv[-1].startswith("-"):
+        # An option misread as the output would write a file named like it
+        # (a 257 KB file '--help' was committed once).
+        sys.stderr.write(f"{argv[0]}: the output path must not begin with '-': {argv[-1]}\n")
+        return 2
     if scenes_mode:
         scenes = [load_scene(name) for name in SCENE_FILES]
         pixels = scenes_pixel_set(scenes)
