@@ -1,6 +1,7 @@
 #include "render/map_legend.hpp"
 
 #include <cmath>
+#include <cstdlib>
 
 #include <fmt/format.h>
 
@@ -74,7 +75,7 @@ Legend map_legend(MapKind kind, const ColourScale* scale, Language language) {
             bar.ticks.push_back({0, legend_number(scale->low(), language)});
             for (int k = static_cast<int>(std::ceil(std::log10(scale->low()) + 1e-9));
                  k < std::log10(scale->high()) - 1e-9; ++k) {
-                const double value = std::stod(fmt::format("1e{}", k));
+                const double value = std::strtod(fmt::format("1e{}", k).c_str(), nullptr);
                 bar.ticks.push_back({std::log10(value / scale->low()) / span, legend_number(value, language)});
             }
             bar.ticks.push_back({1, legend_number(scale->high(), language)});

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <optional>
 #include <string>
@@ -465,17 +466,18 @@ ColourScale fallback_error_scale() { return error_scale(1e-20, 1); }
 
 ColourScale error_scale_of_run(double smallest, double largest) {
     // 10^k read from its decimal text: the double nearest the decade, as a
-    // reader types it (1e-17), not pow's rounding of it.
-    auto decade = [](int k) { return std::stod(fmt::format("1e{}", k)); };
+    // reader types it (1e-17), not pow's rounding of it; 0 below a double's range.
+    auto decade = [](int k) { return std::strtod(fmt::format("1e{}", k).c_str(), nullptr); };
     int low = static_cast<int>(std::floor(std::log10(smallest)));
     int high = static_cast<int>(std::ceil(std::log10(largest)));
     while (low > -330 && decade(low) > smallest) --low;  // log10 may round across an edge
-    while (high < 310 && decade(high) < largest) ++high;
+    while (high < 308 && decade(high) < largest) ++high;
     if (high <= low) high = low + 1;
-    // 10^-324 is 0 in a double: the smallest decade above it is 1e-323.
-    return error_scale(std::max(decade(std::max(low, -323)), std::numeric_limits<double>::denorm_min()),
-                       decade(std::min(high, 308)));
+    // Below 1e-323 the decade is the smallest double there is.
+    const double low_value = decade(low) > 0 ? decade(low) : std::numeric_limits<double>::denorm_min();
+    return error_scale(low_value, decade(high));
 }
+
 ColourScale digits_lost_scale(RealType real) {
     const int digits = real == RealType::float_         ? 8
                        : real == RealType::long_double ? 20
