@@ -45,13 +45,13 @@ void draw_pane_labels(const PaneLabels& labels, int w, int scale, bool grid, int
         // Row n: right-aligned, its digits' middle on the band's middle;
         // kept inside the pane's height (it may reach up into the corner).
         int ink_y = n * pitch + (scale - digit_height(s)) / 2;
-        ink_y = std::clamp(ink_y, pad - labels.top_height, side - digit_height(s));
+        ink_y = std::max(pad - labels.top_height, std::min(ink_y, side - digit_height(s)));
         const int x = labels.left_width - pad - width;
         draw_text(frame.left, x, ink_y - font::ink_top * s, text, s, ink);
         draw_text(frame.top, x, labels.top_height + ink_y - font::ink_top * s, text, s, ink);
         // Column n: centred on the band, kept inside the image.
         int x_col = labels.left_width + n * pitch + (scale - width) / 2;
-        x_col = std::clamp(x_col, labels.left_width, frame.top.width() - width);
+        x_col = std::max(labels.left_width, std::min(x_col, frame.top.width() - width));
         draw_text(frame.top, x_col, pad - font::ink_top * s, text, s, ink);
     }
 }
