@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "image/canvas.hpp"
+#include "image/grid_contrast.hpp"
 #include "render/image_writer.hpp"
 #include "util/atomic_file.hpp"
 #include "util/errors.hpp"
@@ -431,13 +433,19 @@ TEST_CASE("a scaled writer draws each pixel as a block, with grid lines between"
     REQUIRE(grey.width == side);
     REQUIRE(grey.height == side);
     const int step = scale + (grid ? 1 : 0);
+    auto block = [&](int i, int j) { return int(pixels[static_cast<std::size_t>(i * w + j)]); };
     for (int y = 0; y < side; ++y) {
         for (int x = 0; x < side; ++x) {
-            const bool on_grid = grid && (y % step == scale || x % step == scale);
-            const std::uint8_t expected =
-                on_grid ? grid_grey : pixels[static_cast<std::size_t>((y / step) * w + x / step)];
+            const bool line_y = grid && y % step == scale, line_x = grid && x % step == scale;
+            const int i = y / step, j = x / step;
+            // A line pixel is the grey that stands out most from its neighbours.
+            const int expected = line_y && line_x ? contrasting_grey({block(i, j), block(i, j + 1), block(i + 1, j),
+                                                                      block(i + 1, j + 1)})
+                                 : line_y         ? contrasting_grey({block(i, j), block(i + 1, j)})
+                                 : line_x         ? contrasting_grey({block(i, j), block(i, j + 1)})
+                                                  : block(i, j);
             CAPTURE(x, y);
-            REQUIRE(int(grey.pixels[static_cast<std::size_t>(y * side + x)]) == int(expected));
+            REQUIRE(int(grey.pixels[static_cast<std::size_t>(y * side + x)]) == expected);
         }
     }
 }
@@ -749,14 +757,24 @@ TEST_CASE("a scaled RGB writer draws RGB blocks, with grey grid lines in every c
     REQUIRE(rgb.height == side);
     REQUIRE(rgb.pixels.size() == static_cast<std::size_t>(side * side * 3));
     const int step = scale + (grid ? 1 : 0);
+    auto luma = [&](int i, int j) {
+        const std::size_t k = static_cast<std::size_t>((i * w + j) * 3);
+        return luminance(pixels[k], pixels[k + 1], pixels[k + 2]);
+    };
     for (int y = 0; y < side; ++y) {
         for (int x = 0; x < side; ++x) {
-            const bool on_grid = grid && (y % step == scale || x % step == scale);
+            const bool line_y = grid && y % step == scale, line_x = grid && x % step == scale;
+            const int i = y / step, j = x / step;
+            // A line pixel is grey (r = g = b), the grey that stands out most from its neighbours.
+            const int line = line_y && line_x ? contrasting_grey({luma(i, j), luma(i, j + 1), luma(i + 1, j),
+                                                                  luma(i + 1, j + 1)})
+                             : line_y         ? contrasting_grey({luma(i, j), luma(i + 1, j)})
+                             : line_x         ? contrasting_grey({luma(i, j), luma(i, j + 1)})
+                                              : -1;
             for (int c = 0; c < 3; ++c) {
-                const std::uint8_t expected =
-                    on_grid ? grid_grey : pixels[static_cast<std::size_t>(((y / step) * w + x / step) * 3 + c)];
+                const int expected = line >= 0 ? line : pixels[static_cast<std::size_t>((i * w + j) * 3 + c)];
                 CAPTURE(x, y, c);
-                REQUIRE(int(rgb.pixels[static_cast<std::size_t>((y * side + x) * 3 + c)]) == int(expected));
+                REQUIRE(int(rgb.pixels[static_cast<std::size_t>((y * side + x) * 3 + c)]) == expected);
             }
         }
     }
@@ -775,9 +793,13 @@ TEST_CASE("a scaled RGB writer, 2 x 2 at scale 2 with a grid, byte for byte", "[
     }
     CHECK(read_bytes(path) ==
           "P3\n5 5\n255\n"
-          "255 0 0 255 0 0 64 64 64 0 255 0 0 255 0\n"
-          "255 0 0 255 0 0 64 64 64 0 255 0 0 255 0\n"
-          "64 64 64 64 64 64 64 64 64 64 64 64 64 64 64\n"
-          "0 0 255 0 0 255 64 64 64 1 2 3 1 2 3\n"
-          "0 0 255 0 0 255 64 64 64 1 2 3 1 2 3\n");
+          // Luminances: red 54, green 182, blue 19, (1, 2, 3) 2. Red | green:
+          // white (73 from green, 64 for mid-grey); blue | (1, 2, 3): white;
+          // under red over blue: white; under green over (1, 2, 3): grey 92
+          // (90 from each); the crossing of all four: white (73).
+          "255 0 0 255 0 0 255 255 255 0 255 0 0 255 0\n"
+          "255 0 0 255 0 0 255 255 255 0 255 0 0 255 0\n"
+          "255 255 255 255 255 255 255 255 255 92 92 92 92 92 92\n"
+          "0 0 255 0 0 255 255 255 255 1 2 3 1 2 3\n"
+          "0 0 255 0 0 255 255 255 255 1 2 3 1 2 3\n");
 }

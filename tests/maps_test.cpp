@@ -6,9 +6,15 @@
 
 #include <png.h>
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <optional>
+#include <set>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -50,15 +56,23 @@ struct Collect final : RenderSink {
     std::size_t row_bytes = 0;
 };
 
-// The map rendered as `promyk render --map` renders it (two threads).
+// The map rendered as `promyk render --map` renders it (two threads); a
+// deferred map (the error map's own range) settled and its rows replayed.
 Image map_of(MapKind kind, const Scene& scene, int w, RealType real = RealType::double_,
-             Formula formula = Formula::article, int spp = 1, MapTally* tally = nullptr) {
-    const std::unique_ptr<MapKernel> map = make_map_kernel(kind, scene, real, formula, spp, w);
+             Formula formula = Formula::article, int spp = 1, MapTally* tally = nullptr,
+             std::optional<std::pair<double, double>> range = std::nullopt, ColourScale* scale_used = nullptr) {
+    const std::unique_ptr<MapKernel> map = make_map_kernel(kind, scene, real, formula, spp, w, range);
     REQUIRE(map->channels() == 3);
     Collect sink;
     sink.row_bytes = static_cast<std::size_t>(w) * 3;
     render(*map, scene, {w, 2}, PixelSelection{}, sink);
+    if (map->deferred()) {
+        map->settle();
+        sink.bytes.assign(sink.bytes.size(), 0);
+        for (int i = 0; i < w; ++i) map->replay_row(w, i, sink.bytes.data() + static_cast<std::size_t>(i) * sink.row_bytes);
+    }
     if (tally) *tally = map->tally();
+    if (scale_used && map->colour_scale()) *scale_used = *map->colour_scale();
     return {w, sink.bytes};
 }
 
@@ -222,8 +236,10 @@ TEST_CASE("the error map marks the pixels whose branch differs from the referenc
     CHECK(marked > w * w / 10);
 }
 
-TEST_CASE("the error map's scale runs from 1e-20 to 1 on viridis", "[maps]") {
-    const ColourScale& scale = error_scale();
+TEST_CASE("the error map's scale runs from its low end to its high end on viridis, log10", "[maps]") {
+    const ColourScale scale = fallback_error_scale();
+    CHECK(scale.low() == 1e-20);
+    CHECK(scale.high() == 1);
     CHECK(hex(scale(1e-20)) == "#440154");
     CHECK(hex(scale(1e-30)) == "#440154");
     CHECK(hex(scale(1)) == "#FDE725");
@@ -237,6 +253,98 @@ TEST_CASE("the error map's scale runs from 1e-20 to 1 on viridis", "[maps]") {
     CHECK(tally.largest > 0);
     CHECK(tally.largest < 1e-14);
     CHECK(category(tally, "branch differs").count == 0);
+}
+
+TEST_CASE("a run's error range is widened to whole decades around its errors", "[maps]") {
+    struct Case {
+        double smallest, largest, low, high;
+    };
+    for (const Case& c : {Case{3e-17, 4e-16, 1e-17, 1e-15}, Case{1e-17, 1e-16, 1e-17, 1e-16},
+                          Case{2e-9, 2e-9, 1e-9, 1e-8}, Case{1e-16, 1e-16, 1e-16, 1e-15},
+                          Case{9.99e-8, 1.01e-5, 1e-8, 1e-4}, Case{5e-324, 0.5, 5e-324, 1}}) {
+        CAPTURE(c.smallest, c.largest);
+        const ColourScale scale = error_scale_of_run(c.smallest, c.largest);
+        CHECK(scale.low() == c.low);
+        CHECK(scale.high() == c.high);
+        CHECK(scale.low() <= c.smallest);
+        CHECK(scale.high() >= c.largest);
+        CHECK(scale.logarithmic());
+    }
+}
+
+TEST_CASE("a float map and a double map of the article's scene each use many colours of the ramp", "[maps]") {
+    // With the fixed 1e-20 ... 1 scale each was nearly one flat colour: a
+    // float's errors all near 1e-8, a double's near 1e-16. Viridis grows
+    // lighter from end to end, so the spread of luminance tells how much of
+    // the ramp a map uses.
+    auto spread = [](const Image& image) {
+        int darkest = 255, lightest = 0;
+        for (int k = 0; k < image.w * image.w; ++k) {
+            const Rgb8 c = image.at(k / image.w, k % image.w);
+            if (c == exact) continue;
+            const int l = (54 * c.r + 183 * c.g + 19 * c.b + 128) >> 8;
+            darkest = std::min(darkest, l), lightest = std::max(lightest, l);
+        }
+        return lightest - darkest;
+    };
+    const int w = 64;
+    for (const RealType real : {RealType::float_, RealType::double_}) {
+        const std::string type(real_type_name(real));
+        CAPTURE(type);
+        ColourScale scale(0, 1, false);
+        MapTally tally;
+        const Image image = map_of(MapKind::error, article_scene(), w, real, Formula::article, 1, &tally,
+                                   std::nullopt, &scale);
+        std::set<std::string> colours;
+        for (int i = 0; i < w; ++i)
+            for (int j = 0; j < w; ++j)
+                if (image.at(i, j) != exact) colours.insert(hex(image.at(i, j)));
+        CHECK(colours.size() >= 40);
+        CHECK(spread(image) >= 120);
+        // The run's range holds its errors; its largest reaches the top decade.
+        REQUIRE(tally.has_largest);
+        CHECK(scale.high() >= tally.largest);
+        CHECK(scale.high() / 10 < tally.largest);
+        CHECK(category(tally, fmt::format("below {:g}", scale.low())).count == 0);
+        // The fixed scale, for contrast: a narrow band of the ramp.
+        const Image fixed = map_of(MapKind::error, article_scene(), w, real, Formula::article, 1, nullptr,
+                                   std::make_pair(1e-20, 1.0));
+        CHECK(spread(fixed) < 80);
+    }
+}
+
+TEST_CASE("with --range two runs' error maps give the same colour to the same error", "[maps]") {
+    // The errors computed here from the plain kernels, not from the map.
+    const std::pair<double, double> range{1e-18, 1e-6};
+    const ColourScale scale = error_scale(range.first, range.second);
+    const int w = 24;
+    std::set<std::string> seen;
+    for (const RealType real : {RealType::float_, RealType::double_, RealType::long_double}) {
+        const std::string type(real_type_name(real));
+        CAPTURE(type);
+        ColourScale used(0, 1, false);
+        const Image image =
+            map_of(MapKind::error, article_scene(), w, real, Formula::article, 1, nullptr, range, &used);
+        CHECK(used.low() == range.first);
+        CHECK(used.high() == range.second);
+        const auto computed = make_kernel(article_scene(), real, Formula::article);
+        const auto reference = make_kernel(article_scene(), RealType::quad_, Formula::geometric);
+        for (int i = 0; i < w; ++i) {
+            for (int j = 0; j < w; ++j) {
+                Branch a, b;
+                const Vec3<quad> I = computed->exact_intensity(w, i, j, &a);
+                const Vec3<quad> I_ref = reference->exact_intensity(w, i, j, &b);
+                REQUIRE(a == b);
+                const double error = static_cast<double>(fabsq(I.x - I_ref.x));
+                INFO("pixel (" << i << ", " << j << ") error " << error);
+                // Outside the range an error is drawn at the nearest end.
+                const Rgb8 expected = error == 0 ? exact : scale(std::clamp(error, range.first, range.second));
+                CHECK(hex(image.at(i, j)) == hex(expected));
+                if (error != 0) seen.insert(hex(expected));
+            }
+        }
+    }
+    CHECK(seen.size() >= 20);
 }
 
 namespace {

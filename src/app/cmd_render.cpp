@@ -7,8 +7,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <optional>
 #include <iterator>
@@ -22,11 +24,16 @@
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
 #include "app/progress.hpp"
+#include "image/framed_writer.hpp"
+#include "image/legend.hpp"
+#include "image/pane_labels.hpp"
 #include "render/image_writer.hpp"
+#include "render/map_legend.hpp"
 #include "render/maps.hpp"
 #include "render/renderer.hpp"
 #include "render/stages.hpp"
 #include "render/trace_size.hpp"
+#include "trace/messages.hpp"
 #include "util/errors.hpp"
 #include "util/printable.hpp"
 #include "util/output_file.hpp"
@@ -56,15 +63,24 @@ struct RenderOptions {
     std::vector<std::string> trace_regions;
     bool force = false;
     std::string map;  // empty: the shading; else a map_name (render/maps.hpp)
+    bool labels = false;  // row and column numbers on the margins
+    bool legend = false;  // a map's legend below it
+    std::string range;    // the error map's scale, "LO,HI"; empty: the run's own
 };
+
+// Room the margins and the legend may take beyond the pane.
+constexpr int frame_allowance = 512;
 
 // Streams rows into the image and trace lines into the traces file; regular
 // files are temporaries until commit, so a failed render leaves nothing.
 class FileSink final : public RenderSink {
 public:
-    FileSink(ImageWriter& image, OutputFile* traces, Progress& progress)
+    // `image` null: the rows are dropped (a deferred map's placeholders).
+    FileSink(ImageWriter* image, OutputFile* traces, Progress& progress)
         : image_(image), traces_(traces), progress_(progress) {}
-    void image_rows(const std::uint8_t* rows, int count) override { image_.write_rows(rows, count); }
+    void image_rows(const std::uint8_t* rows, int count) override {
+        if (image_) image_->write_rows(rows, count);
+    }
     void trace_lines(std::string_view lines) override {
         traces_->write(lines);
         for (const char c : lines) lines_ += c == '\n';
@@ -73,7 +89,7 @@ public:
     std::int64_t trace_count() const { return lines_; }
 
 private:
-    ImageWriter& image_;
+    ImageWriter* image_;
     OutputFile* traces_;
     Progress& progress_;
     std::int64_t lines_ = 0;
@@ -147,8 +163,10 @@ ImageFormat image_format(const RenderOptions& options, const OutputTarget& targe
 
 void check_scale(const RenderOptions& options) {
     // w blocks of `scale` pixels, and with --grid the w − 1 lines between them.
+    // With --labels or --legend the frame takes up to frame_allowance more.
     const int lines = options.grid ? options.w - 1 : 0;
-    const int largest = (max_image_side - lines) / options.w;
+    const int room = max_image_side - (options.labels || options.legend ? frame_allowance : 0);
+    const int largest = (room - lines) / options.w;
     if (largest < 1)
         throw UsageError(fmt::format("--grid at --w {} would make an image wider than {} pixels", options.w,
                                      max_image_side));
@@ -159,12 +177,53 @@ void check_scale(const RenderOptions& options) {
                                      options.scale));
 }
 
-std::string image_description(const RenderOptions& options, const Scene& scene, const MapKernel* map) {
+// --range LO,HI: two finite numbers, 0 < LO < HI.
+std::pair<double, double> parse_range(const std::string& text) {
+    const auto comma = text.find(',');
+    auto number = [](const std::string& part, double& value) {
+        if (part.empty() || part.find_first_of(" \t\n") != std::string::npos) return false;
+        char* end = nullptr;
+        value = std::strtod(part.c_str(), &end);
+        return end == part.c_str() + part.size() && std::isfinite(value);
+    };
+    double low = 0, high = 0;
+    if (comma == std::string::npos || !number(text.substr(0, comma), low) || !number(text.substr(comma + 1), high) ||
+        !(0 < low && low < high))
+        throw UsageError(ui_message("map_range_invalid", {{"text", printable(text)}}));
+    return {low, high};
+}
+
+// The image's width at `scale`: the pane and, with --labels, the left margin.
+long framed_image_width(const RenderOptions& options, int scale) {
+    const long side = scaled_side(options.w, scale, options.grid);
+    return side + (options.labels ? pane_labels(options.w, scale, options.grid).left_width : 0);
+}
+
+// --legend must fit the image's width: exit 2 naming the smallest --scale that fits.
+void check_legend_width(const RenderOptions& options, const Legend& legend) {
+    const LegendNeed need = legend_need(legend);
+    const long width = framed_image_width(options, options.scale);
+    if (width >= need.width) return;
+    const int lines = options.grid ? options.w - 1 : 0;
+    const int largest = (max_image_side - frame_allowance - lines) / options.w;
+    for (int scale = options.scale + 1; scale <= largest; ++scale) {
+        if (framed_image_width(options, scale) >= need.width)
+            throw UsageError(ui_message("legend_too_narrow", {{"width", std::to_string(width)},
+                                                              {"needed", std::to_string(need.width)},
+                                                              {"widest", need.widest},
+                                                              {"scale", std::to_string(scale)}}));
+    }
+    throw UsageError(ui_message("legend_too_narrow_at_max", {{"width", std::to_string(width)},
+                                                             {"needed", std::to_string(need.width)},
+                                                             {"widest", need.widest}}));
+}
+
+std::string image_description(const RenderOptions& options, const Scene& scene, const MapKernel* map, int width,
+                              int height) {
     const std::string what = map ? fmt::format("{}, ", map->description()) : std::string();
-    if (options.scale == 1 && !options.grid)
+    if (options.scale == 1 && !options.grid && width == options.w && height == options.w)
         return fmt::format("{}{} × {} pixels, scene \"{}\"", what, options.w, options.w, scene.name);
-    const long side = scaled_side(options.w, options.scale, options.grid);
-    return fmt::format("{}{} × {} pixels: the {} × {} pane at scale {}{}, scene \"{}\"", what, side, side,
+    return fmt::format("{}{} × {} pixels: the {} × {} pane at scale {}{}, scene \"{}\"", what, width, height,
                        options.w, options.w, options.scale, options.grid ? " with a grid" : "", scene.name);
 }
 
@@ -189,6 +248,14 @@ void print_map_stats(const MapKernel& map, const RenderOptions& options) {
     }
     if (tally.has_largest)
         fmt::print(stderr, "  largest: {:.3g} at ({}, {})\n", tally.largest, tally.largest_i, tally.largest_j);
+    if (map.kind() == MapKind::error && map.colour_scale()) {
+        const Language language = ui_language();
+        fmt::print(stderr, "{}\n",
+                   ui_message("map_stats_range",
+                              {{"low", legend_number(map.colour_scale()->low(), language)},
+                               {"high", legend_number(map.colour_scale()->high(), language)},
+                               {"how", ui_message(options.range.empty() ? "map_range_of_run" : "map_range_given")}}));
+    }
 }
 
 // What the engine did, on stderr: the stages it ran, rays by kind,
@@ -211,6 +278,15 @@ void print_stats(const RenderStats& stats, const Scene& scene, int spp) {
 
 int run_render(const RenderOptions& options) {
     check_scale(options);
+    if (options.legend && options.map.empty()) throw UsageError(ui_message("legend_without_map"));
+    std::optional<std::pair<double, double>> error_range;
+    if (!options.range.empty()) {
+        if (options.map != "error") throw UsageError(ui_message("map_range_without_error_map"));
+        error_range = parse_range(options.range);
+    }
+    if (options.map == "error" && !error_range && options.w > max_w_for_run_range)
+        throw UsageError(ui_message("map_range_needed", {{"w", std::to_string(options.w)},
+                                                         {"max", std::to_string(max_w_for_run_range)}}));
     const Traced traced = traced_pixels(options);
 
     // Every output is looked at before anything is computed or created.
@@ -236,6 +312,10 @@ int run_render(const RenderOptions& options) {
     }
     const int channels = map_kind ? 3 : image_channels(scene);
     check_image_format(format, channels, options.output);
+    std::unique_ptr<MapKernel> map;
+    if (map_kind)
+        map = make_map_kernel(*map_kind, scene, options.real, options.formula, options.spp, options.w, error_range);
+    if (options.legend) check_legend_width(options, map_legend(*map_kind, map->colour_scale(), ui_language()));
 
     // The size guard protects disks: it applies where the traces land in a
     // regular file (a path, or standard output redirected to one), not to a
@@ -257,16 +337,36 @@ int run_render(const RenderOptions& options) {
     std::optional<OutputFile> traces;
     if (traces_target) traces.emplace(*traces_target);
     const int side = static_cast<int>(scaled_side(options.w, options.scale, options.grid));
-    std::unique_ptr<ImageWriter> image = open_image_writer(image_file, format, side, side, channels);
-    if (side != options.w) image = scale_image_writer(std::move(image), options.w, options.scale, options.grid);
+    int image_width = side, image_height = side;
+    // The image writer: the pane's blocks, in a frame of numbers and a legend
+    // if asked. A deferred map opens it after the render: its legend's
+    // numbers come from the run.
+    auto open_image = [&]() {
+        Frame frame;
+        if (options.labels) {
+            draw_pane_labels(pane_labels(options.w, options.scale, options.grid), options.w, options.scale,
+                             options.grid, channels, frame);
+        }
+        if (options.legend) {
+            frame.bottom = draw_legend(map_legend(*map_kind, map->colour_scale(), ui_language()),
+                                       framed_width(frame, side), channels);
+        }
+        image_width = framed_width(frame, side);
+        image_height = framed_height(frame, side);
+        std::unique_ptr<ImageWriter> writer = open_image_writer(image_file, format, image_width, image_height, channels);
+        if (!frame.empty()) writer = frame_image_writer(std::move(writer), std::move(frame), side, side);
+        if (side != options.w) writer = scale_image_writer(std::move(writer), options.w, options.scale, options.grid);
+        return writer;
+    };
+    const bool deferred = map && map->deferred();
+    std::unique_ptr<ImageWriter> image;
+    if (!deferred) image = open_image();
 
     std::int64_t trace_count = 0;
     RenderStats stats;
-    std::unique_ptr<MapKernel> map;
-    if (map_kind) map = make_map_kernel(*map_kind, scene, options.real, options.formula, options.spp, options.w);
     {
         Progress progress("promyk render", "rows");
-        FileSink sink(*image, traces ? &*traces : nullptr, progress);
+        FileSink sink(image.get(), traces ? &*traces : nullptr, progress);
         const RenderSettings settings{options.w, options.threads, options.real, options.formula, options.spp};
         if (map)
             render(*map, scene, settings, traced.selection, sink, &stats);
@@ -274,13 +374,23 @@ int run_render(const RenderOptions& options) {
             render(scene, settings, traced.selection, sink, &stats);
         trace_count = sink.trace_count();
     }
+    if (deferred) {
+        // The scale from the run's own errors, then the rows in its colours.
+        map->settle();
+        image = open_image();
+        std::vector<std::uint8_t> row(static_cast<std::size_t>(options.w) * 3);
+        for (int i = 0; i < options.w; ++i) {
+            map->replay_row(options.w, i, row.data());
+            image->write_rows(row.data(), 1);
+        }
+    }
     image->finish();
     commit_together({&image_file, traces ? &*traces : nullptr});
 
     // Status on stderr: standard output carries only the product (-o -, --traces -).
     const std::string image_name =
         image_target.kind == OutputKind::standard_output ? "PNG to standard output" : options.output;
-    fmt::print(stderr, "wrote {} ({})\n", printable(image_name), printable(image_description(options, scene, map.get())));
+    fmt::print(stderr, "wrote {} ({})\n", printable(image_name), printable(image_description(options, scene, map.get(), image_width, image_height)));
     if (traces) {
         fmt::print(stderr, "wrote {} ({} {}, {})\n",
                    traces->target().kind == OutputKind::standard_output ? "traces to standard output"
@@ -332,7 +442,15 @@ std::function<int()> setup_render(CLI::App& app) {
         ->type_name("N")
         ->check(whole_number(1, cli::max_w))
         ->capture_default_str();
-    cmd->add_flag("--grid", options->grid, "Draw 1-pixel grey lines between the pixels' blocks (see --scale)");
+    cmd->add_flag("--grid", options->grid,
+                  "Draw 1-pixel lines between the pixels' blocks (see --scale), each line pixel black,\n"
+                  "white or grey, whichever stands out most from the blocks it borders");
+    cmd->add_flag("--labels", options->labels,
+                  "Number the rows (i, left margin) and columns (j, top margin), each number centred\n"
+                  "on its row or column; the image grows by the margins. When the numbers would touch\n"
+                  "(a small --scale, a big --w) only every k-th row and column is numbered, k the\n"
+                  "first of 1, 2, 5, 10, 20, 50, ... that fits; without --scale that is every 10th\n"
+                  "row and column or fewer");
     add_threads_option(*cmd, options->threads);
     add_real_option(*cmd, options->real);
     add_formula_option(*cmd, options->formula);
@@ -365,13 +483,23 @@ std::function<int()> setup_render(CLI::App& app) {
                     "Draw a per-pixel quantity instead of the shading, in colour (.png or .ppm; README: Maps):\n"
                     "branch: the branch taken (miss, dark, lit, shadowed, non-finite) and the notes tangent\n"
                     "and behind the eye, in Okabe-Ito colours; error: |I - I_ref| against quad with the\n"
-                    "geometric formula on a log scale 1e-20 .. 1, white where exact, vermillion where the\n"
+                    "geometric formula on a log scale from the run's smallest to its largest non-zero\n"
+                    "error in whole decades (or --range), white where exact, vermillion where the\n"
                     "branch differs; digits-lost: the most significant digits any step loses to\n"
                     "cancellation (as trace marks them), one colour step a digit, white where none.\n"
-                    "--real, --formula and --spp choose what is mapped; --stats counts each category and\n"
-                    "names its first pixel")
+                    "--real, --formula and --spp choose what is mapped; --stats counts each category,\n"
+                    "names its first pixel and prints the error map's scale")
         ->type_name("branch|error|digits-lost")
         ->check(map_names);
+    cmd->add_flag("--legend", options->legend,
+                  "With --map: add a legend strip below the map, as wide as the image: each colour\n"
+                  "with its name in the run's language, the colour bar with its numbers. If the\n"
+                  "image is too narrow for its longest name, exit 2 naming the --scale that fits");
+    cmd->add_option("--range", options->range,
+                    "With --map error: fix the colour scale to LO .. HI (0 < LO < HI; errors outside\n"
+                    "are drawn at the nearest end), so that two runs' maps compare colour for colour.\n"
+                    "Needed above --w 4096")
+        ->type_name("LO,HI");
     cmd->footer("Intensity maps to 8-bit grey as round(clamp(v, 0, 1) * 255).");
     return [options] { return run_render(*options); };
 }

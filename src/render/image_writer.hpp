@@ -121,14 +121,11 @@ constexpr int max_image_side = 32768;
 // and with `grid`, 1-pixel lines between the blocks: w·scale + (w − 1).
 long scaled_side(int w, int scale, bool grid);
 
-// The grey level of the grid lines: darker than the background (128), lighter
-// than the dark side (0), so blocks of either stay apart. In an RGB image the
-// lines are grid_grey in every channel.
-constexpr std::uint8_t grid_grey = 64;
-
 // Wraps `inner`, whose side must be scaled_side(w, scale, grid): takes rows of
 // w pixels and writes each pixel as a scale x scale block, with grid lines
-// between blocks if asked. The pixels have inner's channels (channels() is
+// between blocks if asked: each line pixel a grey (r = g = b in RGB) that
+// contrasts with the squares it borders (image/grid_contrast.hpp). The
+// pixels have inner's channels (channels() is
 // inner->channels()): a grey pane makes grey blocks, an RGB pane RGB blocks.
 // Streams: holds one output row, not the image. finish() finishes `inner`.
 std::unique_ptr<ImageWriter> scale_image_writer(std::unique_ptr<ImageWriter> inner, int w, int scale, bool grid);

@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <optional>
+#include <string>
 #include <utility>
 
 #include <fmt/format.h>
@@ -152,6 +156,7 @@ public:
     }
 
     std::string description() const override { return "branch map"; }
+    MapKind kind() const override { return MapKind::branch; }
 };
 
 // A pixel of a map of one number: the number, or one of the cases that have
@@ -171,41 +176,56 @@ class ScalarMap : public MapOf {
 public:
     // `zero` names the value 0's colour; `compares`: whether pixels are
     // compared with a reference (a branch can differ from its branch).
-    ScalarMap(std::unique_ptr<Kernel> kernel, int w, const ColourScale& scale, const LegendColour& zero, bool compares)
-        : MapOf(std::move(kernel), w), scale_(scale), zero_(zero), compares_(compares) {}
+    // Without a scale the map is deferred (MapKernel::deferred): it keeps
+    // each pixel until settle() finds the scale from the run's values.
+    ScalarMap(std::unique_ptr<Kernel> kernel, int w, std::optional<ColourScale> scale, const LegendColour& zero,
+              bool compares)
+        : MapOf(std::move(kernel), w), scale_(scale), zero_(zero), compares_(compares), w_(w) {
+        if (!scale_) stored_.resize(static_cast<std::size_t>(w) * static_cast<std::size_t>(w));
+    }
 
     RowCounts row(int w, int i, std::uint8_t* out) const override {
         RowCounts counts;
+        if (!scale_) {  // deferred: record, colour later
+            for (int j = 0; j < w; ++j) {
+                const ScalarPixel pixel = value(w, i, j);
+                count_branch(counts, pixel.branch, j);
+                stored_[index(i, j)] = encode(pixel);
+                put(out, j, Rgb8{});
+            }
+            return counts;
+        }
         RowTally& tally = row_tally(i);
         tally.reset(category_count());
         for (int j = 0; j < w; ++j) {
             const ScalarPixel pixel = value(w, i, j);
             count_branch(counts, pixel.branch, j);
-            Rgb8 colour;
-            int category;
-            switch (pixel.kind) {
-                case ScalarPixel::Kind::zero:
-                    colour = zero_.rgb, category = 0;
-                    break;
-                case ScalarPixel::Kind::branch_differs:
-                    colour = branch_differs_colour().rgb, category = category_count() - 2;
-                    break;
-                case ScalarPixel::Kind::non_finite:
-                    colour = non_finite_error_colour().rgb, category = category_count() - 1;
-                    break;
-                case ScalarPixel::Kind::value:
-                default:
-                    colour = scale_(pixel.value), category = 1 + bin(pixel.value);
-                    if (pixel.value > tally.largest) tally.largest = pixel.value, tally.largest_j = j;
-                    break;
-            }
-            tally.add(category, j);
-            put(out, j, colour);
+            colour(pixel, tally, j, out);
         }
         return counts;
     }
 
+    bool deferred() const override { return stored_.size() > 0; }
+    const ColourScale* colour_scale() const override { return scale_ ? &*scale_ : nullptr; }
+
+    void settle() override {
+        double smallest = 0, largest = 0;
+        for (const double v : stored_) {
+            if (!(v > 0)) continue;
+            if (smallest == 0 || v < smallest) smallest = v;
+            largest = std::max(largest, v);
+        }
+        scale_ = smallest > 0 ? error_scale_of_run(smallest, largest) : fallback_error_scale();
+    }
+
+    void replay_row(int w, int i, std::uint8_t* out) const override {
+        RowTally& tally = row_tally(i);
+        tally.reset(category_count());
+        for (int j = 0; j < w; ++j) colour(decode(stored_[index(i, j)]), tally, j, out);
+    }
+
     MapTally tally() const override {
+        if (!scale_) return {};
         std::vector<std::string> names;
         names.emplace_back(zero_.category);
         for (int b = 0; b < bins(); ++b) names.push_back(bin_name(b));
@@ -221,23 +241,77 @@ protected:
     virtual ScalarPixel value(int w, int i, int j) const = 0;
 
 private:
-    // Steps of the scale: decades on a log axis, tenths on a linear one;
-    // plus one below and one at or above its ends.
+    std::size_t index(int i, int j) const {
+        return static_cast<std::size_t>(i) * static_cast<std::size_t>(w_) + static_cast<std::size_t>(j);
+    }
+    // A stored pixel: its value (> 0), 0, or -1 (branch differs), -2 (non-finite).
+    static double encode(const ScalarPixel& pixel) {
+        switch (pixel.kind) {
+            case ScalarPixel::Kind::zero:
+                return 0;
+            case ScalarPixel::Kind::branch_differs:
+                return -1;
+            case ScalarPixel::Kind::non_finite:
+                return -2;
+            case ScalarPixel::Kind::value:
+                break;
+        }
+        return pixel.value;
+    }
+    static ScalarPixel decode(double stored) {
+        ScalarPixel pixel;
+        pixel.kind = stored > 0    ? ScalarPixel::Kind::value
+                     : stored == 0 ? ScalarPixel::Kind::zero
+                     : stored == -1 ? ScalarPixel::Kind::branch_differs
+                                    : ScalarPixel::Kind::non_finite;
+        pixel.value = stored;
+        return pixel;
+    }
+
+    void colour(const ScalarPixel& pixel, RowTally& tally, int j, std::uint8_t* out) const {
+        Rgb8 colour;
+        int category;
+        switch (pixel.kind) {
+            case ScalarPixel::Kind::zero:
+                colour = zero_.rgb, category = 0;
+                break;
+            case ScalarPixel::Kind::branch_differs:
+                colour = branch_differs_colour().rgb, category = category_count() - 2;
+                break;
+            case ScalarPixel::Kind::non_finite:
+                colour = non_finite_error_colour().rgb, category = category_count() - 1;
+                break;
+            case ScalarPixel::Kind::value:
+            default:
+                colour = (*scale_)(pixel.value), category = 1 + bin(pixel.value);
+                if (pixel.value > tally.largest) tally.largest = pixel.value, tally.largest_j = j;
+                break;
+        }
+        tally.add(category, j);
+        put(out, j, colour);
+    }
+
+    // Steps of the scale: decades on a log axis (the last one shorter when
+    // the range is not whole decades), tenths on a linear one; plus one
+    // below and one at or above its ends.
     int steps() const {
-        return scale_.logarithmic() ? static_cast<int>(std::lround(std::log10(scale_.high() / scale_.low())))
-                                    : scale_.linear_steps();
+        if (!scale_->logarithmic()) return scale_->linear_steps();
+        return std::max(1, static_cast<int>(std::ceil(std::log10(scale_->high() / scale_->low()) - 1e-9)));
     }
     int bins() const { return steps() + 2; }
     int category_count() const { return bins() + 3; }
     double edge(int k) const {  // the lower end of step k
-        return scale_.logarithmic() ? scale_.low() * std::pow(10.0, k)
-                                    : scale_.low() + (scale_.high() - scale_.low()) * k / steps();
+        return scale_->logarithmic()
+                   ? std::min(scale_->low() * std::pow(10.0, k), scale_->high())
+                   : scale_->low() + (scale_->high() - scale_->low()) * k / steps();
     }
     int bin(double value) const {
-        if (value < scale_.low()) return 0;
-        if (value >= scale_.high()) return bins() - 1;
-        int k = scale_.logarithmic() ? static_cast<int>(std::floor(std::log10(value / scale_.low())))
-                                     : static_cast<int>(std::floor((value - scale_.low()) / (scale_.high() - scale_.low()) * steps()));
+        if (value < scale_->low()) return 0;
+        if (value >= scale_->high()) return bins() - 1;
+        int k = scale_->logarithmic()
+                    ? static_cast<int>(std::floor(std::log10(value / scale_->low())))
+                    : static_cast<int>(
+                          std::floor((value - scale_->low()) / (scale_->high() - scale_->low()) * steps()));
         k = std::clamp(k, 0, steps() - 1);
         // log10 may round across a decade's edge: settle it by comparing.
         if (value < edge(k) && k > 0) --k;
@@ -245,14 +319,16 @@ private:
         return 1 + k;
     }
     std::string bin_name(int b) const {
-        if (b == 0) return fmt::format("below {:g}", scale_.low());
-        if (b == bins() - 1) return fmt::format("{:g} or more", scale_.high());
+        if (b == 0) return fmt::format("below {:g}", scale_->low());
+        if (b == bins() - 1) return fmt::format("{:g} or more", scale_->high());
         return fmt::format("{:g} to {:g}", edge(b - 1), edge(b));
     }
 
-    ColourScale scale_;
+    std::optional<ColourScale> scale_;
     const LegendColour& zero_;
     bool compares_;
+    int w_;
+    mutable std::vector<double> stored_;  // deferred: one a pixel, each row written by one thread
 };
 
 // |I - I_ref|, the largest over r, g, b, against the same pixel in quad with
@@ -260,10 +336,12 @@ private:
 // compared as Kernel::intensity gives them, rounded to double.
 class ErrorMap final : public ScalarMap {
 public:
-    ErrorMap(std::unique_ptr<Kernel> kernel, std::unique_ptr<Kernel> reference, int w)
-        : ScalarMap(std::move(kernel), w, error_scale(), exact_colour(), true), reference_(std::move(reference)) {}
+    ErrorMap(std::unique_ptr<Kernel> kernel, std::unique_ptr<Kernel> reference, int w,
+             std::optional<ColourScale> scale)
+        : ScalarMap(std::move(kernel), w, scale, exact_colour(), true), reference_(std::move(reference)) {}
 
     std::string description() const override { return "error map against quad with the geometric formula"; }
+    MapKind kind() const override { return MapKind::error; }
 
 protected:
     ScalarPixel value(int w, int i, int j) const override {
@@ -305,6 +383,7 @@ public:
         : ScalarMap(std::move(kernel), w, digits_lost_scale(real), none_lost_colour(), false) {}
 
     std::string description() const override { return "digits-lost map"; }
+    MapKind kind() const override { return MapKind::digits_lost; }
 
 protected:
     ScalarPixel value(int w, int i, int j) const override {
@@ -381,10 +460,24 @@ Rgb8 ColourScale::operator()(double value) const {
     return ramp(t);
 }
 
-const ColourScale& error_scale() {
-    static const ColourScale scale(1e-20, 1, true);
-    return scale;
+ColourScale error_scale(double low, double high) { return ColourScale(low, high, true); }
+
+ColourScale fallback_error_scale() { return error_scale(1e-20, 1); }
+
+ColourScale error_scale_of_run(double smallest, double largest) {
+    // 10^k read from its decimal text: the double nearest the decade, as a
+    // reader types it (1e-17), not pow's rounding of it; 0 below a double's range.
+    auto decade = [](int k) { return std::strtod(fmt::format("1e{}", k).c_str(), nullptr); };
+    int low = static_cast<int>(std::floor(std::log10(smallest)));
+    int high = static_cast<int>(std::ceil(std::log10(largest)));
+    while (low > -330 && decade(low) > smallest) --low;  // log10 may round across an edge
+    while (high < 308 && decade(high) < largest) ++high;
+    if (high <= low) high = low + 1;
+    // Below 1e-323 the decade is the smallest double there is.
+    const double low_value = decade(low) > 0 ? decade(low) : std::numeric_limits<double>::denorm_min();
+    return error_scale(low_value, decade(high));
 }
+
 ColourScale digits_lost_scale(RealType real) {
     const int digits = real == RealType::float_         ? 8
                        : real == RealType::long_double ? 20
@@ -398,12 +491,14 @@ const LegendColour& branch_differs_colour() { return differs; }
 const LegendColour& non_finite_error_colour() { return non_finite_error; }
 
 std::unique_ptr<MapKernel> make_map_kernel(MapKind kind, const Scene& scene, RealType real, Formula formula, int spp,
-                                           int w) {
+                                           int w, std::optional<std::pair<double, double>> error_range) {
     std::unique_ptr<Kernel> kernel = make_kernel(scene, real, formula, spp);
     switch (kind) {
         case MapKind::error:
-            return std::make_unique<ErrorMap>(std::move(kernel), make_kernel(scene, RealType::quad_, Formula::geometric, spp),
-                                              w);
+            return std::make_unique<ErrorMap>(
+                std::move(kernel), make_kernel(scene, RealType::quad_, Formula::geometric, spp), w,
+                error_range ? std::optional<ColourScale>(error_scale(error_range->first, error_range->second))
+                            : std::nullopt);
         case MapKind::digits_lost:
             return std::make_unique<DigitsLostMap>(std::move(kernel), w, real);
         case MapKind::branch:

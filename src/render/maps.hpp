@@ -21,6 +21,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "geometry/formula.hpp"
@@ -85,10 +86,16 @@ private:
     int linear_steps_;
 };
 
-// The error map's scale: 1e-20 (dark purple) ... 1 (yellow), log10: a
-// long double's errors (about 1e-20 of an intensity near 1/2) to a float's
-// lost pixel.
-const ColourScale& error_scale();
+// The error map's scale, log10 viridis from `low` (dark purple) to `high`
+// (yellow); errors outside are clamped to its ends.
+ColourScale error_scale(double low, double high);
+// The scale a run's own errors make: from its smallest non-zero error to its
+// largest, widened to whole decades (10^floor(log10 smallest) to
+// 10^ceil(log10 largest), at least one decade), so a float's, a double's and
+// a quad's map each use the whole ramp. Without a non-zero finite error,
+// the fixed scale 1e-20 ... 1.
+ColourScale error_scale_of_run(double smallest, double largest);
+ColourScale fallback_error_scale();
 // The error map's special colours.
 const LegendColour& exact_colour();           // |I - I_ref| = 0: white
 const LegendColour& branch_differs_colour();  // a branch other than the reference's: vermillion
@@ -121,14 +128,33 @@ public:
     virtual MapTally tally() const = 0;
     // What the map shows, for the status line: "branch map", "error map ...".
     virtual std::string description() const = 0;
+    virtual MapKind kind() const = 0;
+    // The colour scale of a scalar map (nullptr for the branch map, and for
+    // a deferred map before settle()).
+    virtual const ColourScale* colour_scale() const { return nullptr; }
+    // Whether the map's scale comes from the run's own values (the error map
+    // without --range): then row() only records each pixel (its rows are
+    // black placeholders and tally() is empty), and after render() the
+    // caller calls settle(), which fixes the scale, and then takes the
+    // coloured rows from replay_row(), in order, which also counts them.
+    virtual bool deferred() const { return false; }
+    virtual void settle() {}
+    virtual void replay_row(int w, int i, std::uint8_t* out) const { (void)w, (void)i, (void)out; }
 
 protected:
     using Kernel::Kernel;
 };
 
+// The largest --w at which the error map finds its own range (it keeps a
+// double a pixel until the render ends: 128 MiB); above it, --range is needed.
+inline constexpr int max_w_for_run_range = 4096;
+
 // The map of `kind` for the scene computed in `real` with `formula` and spp
-// samples per pixel, on a w x w pane (the map keeps w rows of counts).
+// samples per pixel, on a w x w pane (the map keeps w rows of counts). The
+// error map uses `error_range` (low, high) if given, else its run's own
+// range (deferred()).
 std::unique_ptr<MapKernel> make_map_kernel(MapKind kind, const Scene& scene, RealType real, Formula formula,
-                                           int spp, int w);
+                                           int spp, int w,
+                                           std::optional<std::pair<double, double>> error_range = std::nullopt);
 
 }  // namespace promyk
