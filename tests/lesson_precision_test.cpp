@@ -67,11 +67,16 @@ float geometric_delta(int w, int i, int j, float z_E, float z_S, float r) {
     return r * r - ll;
 }
 
+// A number as English text shows it: the minus sign U+2212.
+std::string english(std::string text) {
+    for (std::size_t at; (at = text.find('-')) != std::string::npos;) text.replace(at, 1, "\u2212");
+    return text;
+}
+
 std::string polish(std::string text) {
     for (char& c : text)
         if (c == '.') c = ',';
-    if (!text.empty() && text[0] == '-') text.replace(0, 1, "\u2212");
-    return text;
+    return english(text);
 }
 
 const std::string far_sphere = std::string(PROMYK_SOURCE_DIR) + "/lessons/scenes/far_sphere.json";
@@ -112,12 +117,12 @@ TEST_CASE("lesson precision shows float's and double's own numbers of the far sp
     const Run en = run_promyk("lesson precision --lang en --format markdown");
     INFO(en.out);
     REQUIRE(en.exit_code == 0);
-    CHECK_THAT(en.out, Catch::Contains("Float: Δ/4 = " + promyk::real_text(f.delta) + "."));
-    CHECK_THAT(en.out, Catch::Contains("Double: Δ/4 = " + promyk::real_text(d.delta) + ";"));
-    CHECK_THAT(en.out, Catch::Contains("float gives " + promyk::real_text(f.EE) + "."));
-    CHECK_THAT(en.out, Catch::Contains("exactly, " + promyk::real_text(d.EE) + ";"));
-    CHECK_THAT(en.out, Catch::Contains("Δ_g in float is " + promyk::real_text(g) + ";"));
-    CHECK_THAT(en.out, Catch::Contains("(float, geometric) | " + promyk::real_text(g) + " |"));  // the table's float row
+    CHECK_THAT(en.out, Catch::Contains("Float: Δ/4 = " + english(promyk::real_text(f.delta)) + "."));
+    CHECK_THAT(en.out, Catch::Contains("Double: Δ/4 = " + english(promyk::real_text(d.delta)) + ";"));
+    CHECK_THAT(en.out, Catch::Contains("float gives " + english(promyk::real_text(f.EE)) + "."));
+    CHECK_THAT(en.out, Catch::Contains("exactly, " + english(promyk::real_text(d.EE)) + ";"));
+    CHECK_THAT(en.out, Catch::Contains("Δ_g in float is " + english(promyk::real_text(g)) + ";"));
+    CHECK_THAT(en.out, Catch::Contains("(float, geometric) | " + english(promyk::real_text(g)) + " |"));  // the table's float row
     CHECK_THAT(en.out, Catch::Contains("What precision costs"));
 
     const Run pl = run_promyk("lesson precision --lang pl --format markdown");
@@ -130,28 +135,33 @@ TEST_CASE("lesson precision shows float's and double's own numbers of the far sp
 }
 
 TEST_CASE("lesson --real float prints float's exact text, in both languages", "[lesson][precision]") {
-    // The article's scene, pixel (3, 4), in float.
+    // The article's scene, pixel (3, 4), in float: 8 significant digits
+    // tell float's Δ/4 (4.5578117) from double's (4.5578125); the default 4
+    // would show both as 4.558.
     const Article<float> f = article_delta<float>(8, 3, 4, 2.0f, 0.0f, 0.0f, 3.2f, 1.1f);
     const Article<double> d = article_delta<double>(8, 3, 4, 2.0, 0.0, 0.0, 3.2, 1.1);
-    const std::string float_text = promyk::real_text(f.delta), double_text = promyk::real_text(d.delta);
-    REQUIRE(float_text != double_text);  // 4.5578117 against 4.557812500000004
+    const std::string float_text = promyk::real_text(f.delta);
+    REQUIRE(float_text == "4.5578117");
+    REQUIRE(promyk::real_text(d.delta) == "4.557812500000004");
 
-    const Run en = run_promyk("lesson sphere --real float --pixel 3,4 --lang en");
+    const Run en = run_promyk("lesson sphere --real float --pixel 3,4 --lang en --digits 8");
     INFO(en.out);
     REQUIRE(en.exit_code == 0);
     CHECK_THAT(en.out, Catch::Contains("Numbers: float, formula: article"));
     CHECK_THAT(en.out, Catch::Contains("(3, 4): " + float_text + "\n"));
     CHECK_THAT(en.out, Catch::Contains("(3, 4): " + promyk::real_text(f.SS) + "\n"));
-    CHECK_THAT(en.out, !Catch::Contains(double_text));
+    CHECK_THAT(en.out, !Catch::Contains("4.5578125"));
 
-    const Run pl = run_promyk("lesson sphere --real float --pixel 3,4 --lang pl");
+    const Run pl = run_promyk("lesson sphere --real float --pixel 3,4 --lang pl --digits 8");
     INFO(pl.out);
     REQUIRE(pl.exit_code == 0);
     CHECK_THAT(pl.out, Catch::Contains("(3, 4): " + polish(float_text) + "\n"));
 
     // The header's real: does the same; the command line overrides it.
-    const Run plain = run_promyk("lesson sphere --pixel 3,4 --lang en");
-    CHECK_THAT(plain.out, Catch::Contains("(3, 4): " + double_text + "\n"));
+    const Run plain = run_promyk("lesson sphere --pixel 3,4 --lang en --digits 8");
+    CHECK_THAT(plain.out, Catch::Contains("(3, 4): 4.5578125\n"));
+    // And by default, 4 significant digits.
+    CHECK_THAT(run_promyk("lesson sphere --real float --pixel 3,4 --lang en").out, Catch::Contains("(3, 4): 4.558\n"));
 }
 
 TEST_CASE("worksheet and answers in float, and qualified answers", "[lesson][precision]") {
@@ -161,8 +171,10 @@ TEST_CASE("worksheet and answers in float, and qualified answers", "[lesson][pre
     const Run sheet = run_promyk("lesson sphere --real float --pixel 3,4 --lang en --worksheet --key");
     INFO(sheet.out);
     REQUIRE(sheet.exit_code == 0);
-    CHECK_THAT(sheet.out, Catch::Contains("--pixel 3,4 --real float --lang en --answers"));
-    CHECK_THAT(sheet.out, Catch::Contains("Δ/4 = " + promyk::real_text(f.delta) + "   [delta]"));
+    std::string command = sheet.out;  // the "check with" command, its shell lines joined
+    for (std::size_t at; (at = command.find(" \\\n      ")) != std::string::npos;) command.replace(at, 9, " ");
+    CHECK_THAT(command, Catch::Contains("--pixel 3,4 --real float --lang en --answers"));
+    CHECK_THAT(sheet.out, Catch::Contains("Δ/4 = 4.558   [delta]"));  // 4.5578117 to 4 digits
 
     // Float's Δ/4 is 4.557811737060546875: to 7 decimals 4.5578117; double's 4.5578125 is wrong.
     write(dir.file("right.txt"), "delta = " + promyk::real_text(f.delta) + "\n");

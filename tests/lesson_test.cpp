@@ -167,7 +167,7 @@ TEST_CASE("a lesson missing in a language, or with other steps there, is reporte
 TEST_CASE("the numbers a lesson prints are the trace's, in both languages", "[lesson]") {
     for (const Language language : {Language::en, Language::pl}) {
         std::vector<LessonProblem> problems;
-        const Lesson lesson = parse_lesson(with_body("## [a] A\n::: pixel\n<{i},{j}> delta={delta} t={t} D={D:5}\n:::\n"),
+        const Lesson lesson = parse_lesson(with_body("## [a] A\n::: pixel\n<{i},{j}> delta={delta:all} t={t:all} D={D:5} d4={delta}\n:::\n"),
                                            "x.md", language, problems);
         REQUIRE(problems.empty());
         const Scene scene = article_scene();
@@ -177,12 +177,14 @@ TEST_CASE("the numbers a lesson prints are the trace's, in both languages", "[le
         const std::string text = render_step(view, 0);
         INFO(text);
         CHECK(text.find('{') == std::string::npos);
-        static const std::regex row(R"(<(\d),(\d)>\s+delta=(\S+)\s+t=(\S+)\s+D=(\S+))");
+        static const std::regex row(R"(<(\d),(\d)>\s+delta=(\S+)\s+t=(\S+)\s+D=(\S+)\s+d4=(\S+))");
         int rows = 0;
         for (auto it = std::sregex_iterator(text.begin(), text.end(), row); it != std::sregex_iterator(); ++it, ++rows) {
             const PixelTrace& trace = view.traces.at(static_cast<std::size_t>(rows));
             CHECK(std::stoi((*it)[1]) == trace.header.i);
             CHECK(read_number((*it)[3]) == std::get<double>(*lesson_value(trace, "delta")));
+            // {delta} shows 4 significant digits (the lessons' default)
+            CHECK((*it)[6] == shown_number(std::get<double>(*lesson_value(trace, "delta")), language, 4));
             if (trace.branch == Branch::miss) {
                 CHECK((*it)[4] == "—");
             } else {
@@ -279,7 +281,8 @@ TEST_CASE("a lesson's value tables show the trace's values", "[lesson]") {
                         std::string kind = builtin_vocabulary().find(path_key(key))->kind;
                         if (std::holds_alternative<Vec3d>(*value) && kind != "point" && kind != "vector") kind = "colour";
                         const std::string shown =
-                            fmt::format("({}, {}): {}", trace.header.i, trace.header.j, value_text(*value, kind, lesson.language));
+                            fmt::format("({}, {}): {}", trace.header.i, trace.header.j,
+                                        shown_value_text(*value, kind, lesson.language, lesson.header.digits));
                         INFO(lesson.file << " step " << k + 1 << ": " << shown);
                         CHECK(text.find(shown) != std::string::npos);
                     }
@@ -424,7 +427,7 @@ TEST_CASE("value tables take paths, and a shadow ray's tests are nested in their
         "s1={light[0].sphere[0].s_1:4} blocker={light[0].blocker}\n:::\n",
         scene, {{7, 2}, {7, 6}}, Language::en);
     INFO(text);
-    CHECK(text.find("(7, 2): " + number_text(s1, Language::en)) != std::string::npos);
+    CHECK(text.find("(7, 2): " + shown_number(s1, Language::en, 4)) != std::string::npos);
     CHECK(text.find("(7, 6): —") != std::string::npos);  // the light is not blocked: the ray missed the sphere
     CHECK(text.find("s₁ (light 0, sphere 0) = ") != std::string::npos);  // the row says whose s₁ it is
     CHECK(text.find("s1=" + number_text(s1, Language::en, 4) + " blocker=sphere 0") != std::string::npos);

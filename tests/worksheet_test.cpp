@@ -68,6 +68,7 @@ TEST_CASE("a worksheet shows no pixel's number, keeps the scene's, and its key h
         for (const LessonFormat format : {LessonFormat::text, LessonFormat::markdown}) {
             LessonView view{lesson, builtin_vocabulary(), {}, scene.name, 8};
             view.format = format;
+            view.digits = lesson.header.digits;  // as promyk lesson sets it
             for (const auto& [i, j] : pixels) view.traces.push_back(trace_pixel(scene, 8, i, j));
             const Worksheet worksheet(view);
             std::string sheet = render_lesson_title(view) + worksheet.intro();
@@ -93,7 +94,7 @@ TEST_CASE("a worksheet shows no pixel's number, keeps the scene's, and its key h
                 const VocabularyEntry* entry = builtin_vocabulary().find(path_key(blank.key));
                 std::string kind = blank.component != 0 || entry == nullptr ? "scalar" : entry->kind;
                 if (std::holds_alternative<Vec3d>(blank.value) && kind != "point" && kind != "vector") kind = "colour";
-                const std::string value = value_text(blank.value, kind, lesson.language);
+                const std::string value = shown_value_text(blank.value, kind, lesson.language, view.digits);
                 CHECK(key.find("(" + std::to_string(blank.number) + ") ") != std::string::npos);
                 CHECK(key.find(value) != std::string::npos);
             }
@@ -164,7 +165,7 @@ TEST_CASE("a worksheet blanks a number inside a group and shows a word filled in
         CHECK(form.find("nearest") == std::string::npos);
         const std::string key = worksheet.answer_key();
         const double t1 = std::get<double>(worksheet.blanks()[1].value);
-        CHECK(key.find(number_text(t1, language)) != std::string::npos);
+        CHECK(key.find(shown_number(t1, language, 4)) != std::string::npos);
         CHECK(key.find("[sphere[1].t]") != std::string::npos);
     }
 }

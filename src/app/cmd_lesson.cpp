@@ -237,7 +237,7 @@ int run_lesson(const LessonOptions& options) {
 
     LessonView view{lesson, builtin_vocabulary(), {}, scene.name, w, LessonFormat::text, false, {}, {}};
     view.format = options.format == "markdown" ? LessonFormat::markdown : LessonFormat::text;
-    view.digits = shown_digits(4);  // lessons and worksheets: 4 significant digits unless --digits
+    view.digits = shown_digits(lesson.header.digits);  // 4 significant digits unless digits: or --digits
     const char* no_color = std::getenv("NO_COLOR");
     view.color = view.format == LessonFormat::text && isatty(STDOUT_FILENO) == 1 && (no_color == nullptr || *no_color == '\0');
     // The numbers' type and formula: the command line's, else the lesson's header's (else double, article).

@@ -35,6 +35,10 @@ struct LessonHeader {
     std::string real = "double";
     std::string formula = "article";
     int spp = 1;  // samples per pixel (spp:, --spp): the centre sample tells the story
+    // Significant digits of the values shown without a format of their own
+    // (digits:, --digits): 4, as every lesson; 0 ("all") every digit, for a
+    // lesson about digits (precision).
+    int digits = 4;
     int name_line = 1;   // the line of "name:", for messages about the name
     int scene_line = 1;  // the line of "scene:", for messages about the scene
 };

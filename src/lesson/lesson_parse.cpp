@@ -15,7 +15,7 @@ namespace promyk {
 
 namespace {
 
-const std::vector<std::string_view> header_fields = {"name", "title", "summary", "scene", "w", "pixels", "columns", "real", "formula", "spp"};
+const std::vector<std::string_view> header_fields = {"name", "title", "summary", "scene", "w", "pixels", "columns", "real", "formula", "spp", "digits"};
 
 std::vector<std::string> split_lines(std::string_view text) {
     if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // a UTF-8 byte order mark
@@ -246,6 +246,14 @@ private:
             if (!is_formula_name(value))
                 problem(line, "error_header_value", {{"field", field}, {"problem", "article, stable, fma, geometric"}});
             header.formula = value;
+        } else if (field == "digits") {
+            const bool number = !value.empty() && value.size() <= 2 && value.find_first_not_of("0123456789") == std::string::npos;
+            if (value == "all")
+                header.digits = 0;
+            else if (number && std::stoi(value) >= 1 && std::stoi(value) <= 40)
+                header.digits = std::stoi(value);
+            else
+                problem(line, "error_header_value", {{"field", field}, {"problem", "1 … 40, or all"}});
         } else if (field == "spp") {
             const bool digits = !value.empty() && value.size() <= 4 && value.find_first_not_of("0123456789") == std::string::npos;
             if (!digits || !valid_spp(std::stoi(value)))
