@@ -252,18 +252,27 @@ AccuracyReport run_accuracy_bench(const AccuracyOptions& options) {
         }
     }
 
-    // Each job renders its pane sized from the errors' pass to take about the
-    // target; the timing helper repeats it when that is too short (a fast
-    // combination, a small --w, an estimate taken while the machine was busy).
+    // Each job renders the whole scene on a pane of its own, sized to take
+    // about the target: first from the errors' pass, then again from a run
+    // long enough to say what a pixel costs (the errors' pass of a fast
+    // combination takes well under a millisecond, thread start-up included),
+    // so that starting the threads is a small part of every run. The timing
+    // helper repeats a run that is still too short (a small --w, a machine
+    // busy while the pane was sized).
+    const long jobs_count = static_cast<long>(jobs.size());
+    const long total_runs = jobs_count * (options.repetitions + 2);
     TimingPolicy policy;
     policy.rounds = options.repetitions;
-    policy.progress = [&](long done, long total) { report_progress("timing", done, total); };
     std::vector<TimedWork> work;
+    report_progress("timing", 0, total_runs);
     for (std::size_t k = 0; k < jobs.size(); ++k) {
         jobs[k].side = side_for(target, estimates[k]);
         work.push_back(repeated([&, k] { jobs[k].run(report.threads); }));
+        const Calibration sizing = calibrate(work.back(), policy);
+        jobs[k].side = side_for(target, sizing.seconds / (static_cast<double>(sizing.count) * jobs[k].pixels()));
+        report_progress("timing", static_cast<long>(k + 1), total_runs);
     }
-    report_progress("timing", 0, static_cast<long>(jobs.size()) * (options.repetitions + 1));
+    policy.progress = [&](long done, long) { report_progress("timing", jobs_count + done, total_runs); };
     const std::vector<Timing> timings = time_side_by_side(work, policy);
 
     auto ns_per_pixel = [&](std::size_t k) { return timings[k].median_seconds_per_unit / jobs[k].pixels() * 1e9; };
