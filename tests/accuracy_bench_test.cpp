@@ -170,7 +170,8 @@ TEST_CASE("errors: max over every pixel, median over the reference's sphere pixe
     CHECK(stats.median_error == 0.5);  // 4e-3, 0.5 and infinity
 }
 
-TEST_CASE("a tiny run: one row per scene x spp x type x formula, the baseline timed even when not listed",
+TEST_CASE("a tiny run: one row per scene x spp x type x formula, the baseline timed even when not listed, "
+          "every ratio given",
           "[bench][accuracy]") {
     AccuracyOptions options;
     options.w = 6;
@@ -186,22 +187,29 @@ TEST_CASE("a tiny run: one row per scene x spp x type x formula, the baseline ti
     for (const AccuracyScene& scene : report.scenes) CHECK(scene.base_ns_per_pixel > 0);
     for (const AccuracyRow& row : report.rows) {
         CHECK(row.ns_per_pixel > 0);
+        CHECK(row.ratio > 0);  // a 6 × 6 pane is repeated until a run lasts 20 ms: every ratio is given
+        CHECK(row.untimed.empty());
         CHECK(row.timed_w >= 4);
         CHECK(row.errors.pixels == 36);
         if (row.real == RealType::quad_ && row.formula == Formula::geometric) CHECK(row.errors.max_error == 0);
     }
-    CHECK_FALSE(report.timeable);  // a 6 × 6 pane's timed runs are far under 20 ms
+    CHECK(report.timeable);
+    CHECK(report.shortest_ms >= 20);
 
     const std::string table = accuracy_table(report);
     CHECK(table.find("scene far_sphere: z_E = 8000, S = (0, 0, 10000), r = 1, L = (5000, 5000, 0), I = 1") !=
           std::string::npos);
-    CHECK(table.find("no ratios") != std::string::npos);
+    CHECK(table.find("no ratio") == std::string::npos);
 
     const nlohmann::json json = nlohmann::json::parse(accuracy_json(report));
     CHECK(json["bench"] == "accuracy");
     CHECK(json["w"] == 6);
     REQUIRE(json["results"].size() == 16);
-    CHECK(json["results"][0]["ratio"].is_null());
+    for (const nlohmann::json& result : json["results"]) {
+        CHECK(result["ratio"].is_number());
+        CHECK_FALSE(result.contains("untimed"));
+    }
+    CHECK(json["timeable"] == true);
     CHECK(json["scenes"][1]["scene_content"]["spheres"][0]["r"] == 1);
 }
 

@@ -16,6 +16,7 @@
 #include "bench/effects.hpp"
 #include "bench/speed.hpp"
 #include "render/samples.hpp"
+#include "trace/messages.hpp"
 #include "util/errors.hpp"
 #include "util/output_file.hpp"
 #include "util/printable.hpp"
@@ -34,8 +35,7 @@ std::vector<std::string> list_items(const std::string& list, const std::string& 
         const std::size_t comma = std::min(list.find(',', start), list.size());
         std::string item(trim(std::string_view(list).substr(start, comma - start)));
         if (item.empty())
-            throw UsageError(fmt::format("{}: an empty item in '{}'; write the items separated by commas", option,
-                                         printable(list)));
+            throw UsageError(ui_message("bench_empty_item", {{"option", option}, {"list", printable(list)}}));
         items.push_back(std::move(item));
         start = comma + 1;
     }
@@ -52,7 +52,8 @@ std::vector<T> chosen(const std::string& list, const std::string& option,
         if (it == known.end()) {
             std::string names;
             for (const auto& k : known) names += (names.empty() ? "" : ", ") + k.first;
-            throw UsageError(fmt::format("{}: unknown value '{}'; the values are {}", option, printable(item), names));
+            throw UsageError(ui_message("bench_unknown_value",
+                                        {{"option", option}, {"value", printable(item)}, {"values", names}}));
         }
         picked[static_cast<std::size_t>(it - known.begin())] = true;
     }
@@ -67,8 +68,7 @@ std::vector<int> chosen_spps(const std::string& list) {
     for (const std::string& item : list_items(list, "--spp")) {
         const int spp = cli::parse_whole_number(item, "--spp", 1, max_spp);
         if (!valid_spp(spp))
-            throw UsageError(fmt::format("--spp: {} is not a square; samples per pixel are 1, 4, 9, 16, ... {}", item,
-                                         max_spp));
+            throw UsageError(ui_message("bench_spp_not_square", {{"spp", item}, {"max", std::to_string(max_spp)}}));
         spps.push_back(spp);
     }
     std::sort(spps.begin(), spps.end());
@@ -108,9 +108,9 @@ int run_accuracy(AccuracyCommand& command) {
         if (phase != phase_shown) {
             progress.reset();
             phase_shown = std::string(phase);
-            progress = std::make_unique<Progress>(
-                "promyk bench accuracy, " + phase_shown,
-                phase_shown == "timing" ? "timed runs" : "pixel-samples");
+            const bool timing = phase_shown == "timing";
+            progress = std::make_unique<Progress>(ui_message(timing ? "bench_progress_timing" : "bench_progress_errors"),
+                                                  ui_message(timing ? "bench_unit_timed_runs" : "bench_unit_pixel_samples"));
         }
         progress->update(done, total);
     };
@@ -126,7 +126,9 @@ int run_accuracy(AccuracyCommand& command) {
         json->write(text);
         json->commit();
         if (!json_to_stdout)
-            fmt::print(stderr, "wrote {} ({} results)\n", printable(command.json), report.rows.size());
+            fmt::print(stderr, "{}\n",
+                       ui_message("bench_wrote_json", {{"file", printable(command.json)},
+                                                       {"count", std::to_string(report.rows.size())}}));
     }
     return 0;
 }
@@ -136,6 +138,12 @@ int run_accuracy(AccuracyCommand& command) {
 std::function<int()> setup_bench(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("bench", "Measure what the engine costs, side by side in one run");
     cmd->require_subcommand(1);
+    // Set here, else CLI11 copies promyk's own footer, whose 'promyk COMMAND
+    // --help' is one level short for bench.
+    cmd->footer(
+        "Run 'promyk bench speed --help', 'promyk bench effects --help' or\n"
+        "'promyk bench accuracy --help' for a measurement's options.\n"
+        "Every timed run repeats its work until it lasts at least 20 ms; medians are reported.");
     auto speed = std::make_shared<bench::SpeedOptions>();
     CLI::App* speed_cmd = cmd->add_subcommand(
         "speed", "The engine against the article's literal program, all threads against one, trace writing");
@@ -153,8 +161,9 @@ std::function<int()> setup_bench(CLI::App& app) {
         ->check(whole_number(1, cli::max_w))
         ->capture_default_str();
     speed_cmd->footer(
-        "Ratios are printed only when every timed run takes at least 20 ms; smaller panes print the\n"
-        "times and say why there is no ratio.");
+        "Each timed run renders the pane again and again until it lasts at least 20 ms, so a small\n"
+        "--w still gives ratios (a larger pane is closer to real use). A run that cannot be timed\n"
+        "leaves its ratio out and says why.");
     auto effects = std::make_shared<bench::EffectsOptions>();
     CLI::App* effects_cmd = cmd->add_subcommand(
         "effects", "What each effect costs: every example scene's time per pixel against the article's scene");
@@ -166,6 +175,9 @@ std::function<int()> setup_bench(CLI::App& app) {
         ->type_name("N")
         ->check(whole_number(1, 1000))
         ->capture_default_str();
+    effects_cmd->footer(
+        "Each timed run renders the pane again and again until it lasts at least 20 ms; × article is\n"
+        "a scene's time per pixel over the article's scene's.");
     auto accuracy = std::make_shared<AccuracyCommand>();
     CLI::App* accuracy_cmd = cmd->add_subcommand(
         "accuracy",
@@ -211,9 +223,10 @@ std::function<int()> setup_bench(CLI::App& app) {
         "pixels (where the reference does not miss); branch ≠: pixels whose branch (the centre sample's)\n"
         "differs from the reference's.\n"
         "Timing: every combination renders the whole scene on a pane of its own size, chosen so that a\n"
-        "run takes about 40 ms × (w/128)², all combinations side by side, round after round; ns/pixel is\n"
-        "the median wall-clock time per pixel with --threads threads, × base its ratio to double/article\n"
-        "at spp 1 on the same scene (printed only when every timed run takes at least 20 ms).\n"
+        "run takes about 40 ms × (w/128)², at least 25 ms (repeated until it lasts 20 ms), all combinations\n"
+        "side by side, round after round; ns/pixel is the median wall-clock time per pixel with\n"
+        "--threads threads, × base its ratio to double/article at spp 1 on the same scene (left out,\n"
+        "with the reason, only for a combination that could not be timed).\n"
         "Example: promyk bench accuracy --w 32 --spp 1,4 --real float,double --json accuracy.json");
     return [speed_cmd, effects_cmd, speed, effects, accuracy] {
         if (speed_cmd->parsed()) return bench::run_speed_bench(*speed);

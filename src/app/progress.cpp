@@ -1,9 +1,12 @@
 #include "app/progress.hpp"
 
 #include <unistd.h>
+#include <algorithm>
 #include <cstdio>
 
 #include <fmt/format.h>
+
+#include "trace/messages.hpp"
 
 namespace promyk::app {
 
@@ -26,7 +29,15 @@ void Progress::update(long done, long total) {
     last_percent_ = percent;
     shown_ = true;
     const double seconds = std::chrono::duration<double>(elapsed).count();
-    fmt::print(stderr, "\r{}: {:3d}% ({} of {} {}), {:.1f} s", what_, percent, done, total, unit_, seconds);
+    std::string tenths = fmt::format("{:.1f}", seconds);
+    if (ui_language() == Language::pl) std::replace(tenths.begin(), tenths.end(), '.', ',');  // decimal comma
+    const std::string line = ui_message("progress_line", {{"what", what_},
+                                                          {"percent", fmt::format("{:3d}", percent)},
+                                                          {"done", std::to_string(done)},
+                                                          {"total", std::to_string(total)},
+                                                          {"unit", unit_},
+                                                          {"seconds", tenths}});
+    fmt::print(stderr, "\r{}", line);
     std::fflush(stderr);
 }
 

@@ -11,9 +11,11 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "bench/timing.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_json.hpp"
 #include "trace/json_text.hpp"
+#include "trace/messages.hpp"
 #include "util/interrupt.hpp"
 
 namespace promyk::bench {
@@ -22,20 +24,11 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// A timed run shorter than this says more about the clock and the scheduler
-// than about the work (as in bench speed and bench effects).
-constexpr double min_timed_seconds = 0.020;
-
 // The length aimed at for each timed run at the default pane; it grows with
 // w², so --w scales the timing as it scales the errors' work.
 constexpr double target_seconds_at_default_w = 0.040;
 
-double median(std::vector<double> values) {
-    if (values.empty()) return 0;
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
-}
+double median(std::vector<double> values) { return median_of(std::move(values)); }
 
 // Runs work(k, thread) for k = 0 .. count-1 on `threads` threads, the k
 // handed out one at a time (as the renderer hands out rows). Stops early
@@ -69,18 +62,14 @@ void parallel_for(int count, int threads, Work&& work) {
 struct TimedJob {
     const Kernel* kernel = nullptr;
     int side = 0;
-    std::vector<double> seconds;
 
-    double run(int threads) const {
+    void run(int threads) const {
         std::vector<std::vector<std::uint8_t>> buffers(static_cast<std::size_t>(std::max(1, threads)),
                                                        std::vector<std::uint8_t>(static_cast<std::size_t>(side)));
-        const auto start = Clock::now();
         parallel_for(side, threads, [&](int i, int thread) {
             kernel->row(side, i, buffers[static_cast<std::size_t>(thread)].data());
         });
-        const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
         throw_if_interrupted();
-        return elapsed;
     }
     double pixels() const { return static_cast<double>(side) * side; }
 };
@@ -180,7 +169,10 @@ AccuracyReport run_accuracy_bench(const AccuracyOptions& options) {
     const int w = options.w;
     const double pixels = static_cast<double>(w) * w;
     const AccuracyOptions defaults;
-    const double target = target_seconds_at_default_w * pixels / (static_cast<double>(defaults.w) * defaults.w);
+    // At least a little over the shortest run that counts, so that most
+    // jobs need no repetition (a pane at its own size is one unit of work).
+    const double target = std::max(TimingPolicy{}.min_run_seconds * 1.25,
+                                   target_seconds_at_default_w * pixels / (static_cast<double>(defaults.w) * defaults.w));
     report.target_ms = target * 1e3;
 
     Scene article = article_scene();
@@ -206,7 +198,7 @@ AccuracyReport run_accuracy_bench(const AccuracyOptions& options) {
     std::vector<std::size_t> row_job;
     std::vector<std::size_t> base_job(report.scenes.size());
     auto add_job = [&](std::unique_ptr<Kernel> kernel, double seconds_per_pixel) {
-        jobs.push_back({kernel.get(), 0, {}});
+        jobs.push_back({kernel.get(), 0});
         kernels.push_back(std::move(kernel));
         estimates.push_back(seconds_per_pixel);
         return jobs.size() - 1;
@@ -260,49 +252,53 @@ AccuracyReport run_accuracy_bench(const AccuracyOptions& options) {
         }
     }
 
-    // Calibration (also a warm-up): each job runs at a quarter of the target
-    // from the first estimate (again, on a larger pane, while a run is too
-    // short to say much: the errors' pass of a fast combination takes well
-    // under a millisecond), and its pane is then sized from what it took.
-    report_progress("timing", 0, static_cast<long>(jobs.size()) * (options.repetitions + 1));
+    // Each job renders the whole scene on a pane of its own, sized to take
+    // about the target: first from the errors' pass, then again from a run
+    // long enough to say what a pixel costs (the errors' pass of a fast
+    // combination takes well under a millisecond, thread start-up included),
+    // so that starting the threads is a small part of every run. The timing
+    // helper repeats a run that is still too short (a small --w, a machine
+    // busy while the pane was sized).
+    const long jobs_count = static_cast<long>(jobs.size());
+    const long total_runs = jobs_count * (options.repetitions + 2);
+    TimingPolicy policy;
+    policy.rounds = options.repetitions;
+    std::vector<TimedWork> work;
+    report_progress("timing", 0, total_runs);
     for (std::size_t k = 0; k < jobs.size(); ++k) {
-        TimedJob& job = jobs[k];
-        job.side = side_for(target / 4, estimates[k]);
-        double seconds = job.run(report.threads);
-        for (int again = 0; again < 6 && seconds < target / 8 && job.side < 32768; ++again) {
-            job.side = std::max(job.side + 1, side_for(target / 4, seconds / job.pixels()));
-            seconds = job.run(report.threads);
-        }
-        // Once more at that size: on a busy machine a thread can wait for a
-        // core for milliseconds, and the faster run is the less disturbed one.
-        seconds = std::min(seconds, job.run(report.threads));
-        job.side = side_for(target, seconds / job.pixels());
-        report_progress("timing", static_cast<long>(k + 1), static_cast<long>(jobs.size()) * (options.repetitions + 1));
+        jobs[k].side = side_for(target, estimates[k]);
+        work.push_back(repeated([&, k] { jobs[k].run(report.threads); }));
+        const Calibration sizing = calibrate(work.back(), policy);
+        jobs[k].side = side_for(target, sizing.seconds / (static_cast<double>(sizing.count) * jobs[k].pixels()));
+        report_progress("timing", static_cast<long>(k + 1), total_runs);
     }
-    // The rounds: every job once a round, forwards and backwards in turn, so
-    // a drift of the machine's speed weighs on all of them alike.
-    long runs = static_cast<long>(jobs.size());
-    for (int round = 0; round < options.repetitions; ++round) {
-        for (std::size_t n = 0; n < jobs.size(); ++n) {
-            TimedJob& job = jobs[round % 2 ? jobs.size() - 1 - n : n];
-            job.seconds.push_back(job.run(report.threads));
-            report_progress("timing", ++runs, static_cast<long>(jobs.size()) * (options.repetitions + 1));
-        }
-    }
+    policy.progress = [&](long done, long) { report_progress("timing", jobs_count + done, total_runs); };
+    const std::vector<Timing> timings = time_side_by_side(work, policy);
 
-    auto ns_per_pixel = [&](const TimedJob& job) { return median(job.seconds) / job.pixels() * 1e9; };
+    auto ns_per_pixel = [&](std::size_t k) { return timings[k].median_seconds_per_unit / jobs[k].pixels() * 1e9; };
     double shortest = INFINITY;
-    for (const TimedJob& job : jobs) shortest = std::min(shortest, median(job.seconds));
-    report.shortest_ms = shortest * 1e3;
-    report.timeable = shortest >= min_timed_seconds;
+    report.timeable = true;
+    for (const Timing& t : timings) {
+        if (t.timed) shortest = std::min(shortest, t.shortest_run_seconds);
+        report.timeable = report.timeable && t.timed;
+    }
+    report.shortest_ms = std::isfinite(shortest) ? shortest * 1e3 : 0;
     for (std::size_t s = 0; s < report.scenes.size(); ++s)
-        report.scenes[s].base_ns_per_pixel = ns_per_pixel(jobs[base_job[s]]);
+        report.scenes[s].base_ns_per_pixel = timings[base_job[s]].timed ? ns_per_pixel(base_job[s]) : 0;
     for (std::size_t r = 0; r < report.rows.size(); ++r) {
         AccuracyRow& row = report.rows[r];
-        const TimedJob& job = jobs[row_job[r]];
-        row.ns_per_pixel = ns_per_pixel(job);
-        row.ratio = row.ns_per_pixel / report.scenes[row.scene].base_ns_per_pixel;
-        row.timed_w = job.side;
+        const std::size_t k = row_job[r];
+        const Timing& base = timings[base_job[row.scene]];
+        row.timed_w = jobs[k].side;
+        if (!timings[k].timed) {
+            row.untimed = timings[k].problem;
+            continue;
+        }
+        row.ns_per_pixel = ns_per_pixel(k);
+        if (base.timed)
+            row.ratio = row.ns_per_pixel / report.scenes[row.scene].base_ns_per_pixel;
+        else
+            row.untimed = ui_message("bench_accuracy_untimed_base", {{"why", base.problem}});
     }
     report.seconds = std::chrono::duration<double>(Clock::now() - started).count();
     return report;
@@ -316,7 +312,8 @@ std::string accuracy_table(const AccuracyReport& report) {
         "  the exact values (a long double's 1e-20 shows); max over every pixel, median over the sphere's pixels\n"
         "  (reference branch not miss); branch ≠: pixels whose branch differs from the reference's.\n"
         "  ns/pixel: wall-clock time rendering the scene with {} thread{} (each combination at its own pane\n"
-        "  size, so that a run takes about {:.0f} ms); × base: over double/article at spp 1 on the same scene.\n",
+        "  size, so that a run takes about {:.0f} ms, repeated while a run is under 20 ms); × base: over\n"
+        "  double/article at spp 1 on the same scene.\n",
         report.w, static_cast<long long>(report.w) * report.w, report.threads, report.threads == 1 ? "" : "s",
         report.rounds, report.rounds == 1 ? "" : "s", report.threads, report.threads == 1 ? "" : "s",
         report.target_ms);
@@ -331,19 +328,30 @@ std::string accuracy_table(const AccuracyReport& report) {
             if (row.scene != s) continue;
             if (last_spp != 0 && row.spp != last_spp) out += '\n';
             last_spp = row.spp;
-            const std::string ratio = report.timeable ? fmt::format("{:.2f}", row.ratio) : "-";
-            out += fmt::format("  {:>4}  {:<11} {:<9} {:>10.1f} {:>8} {:>10} {:>10} {:>9} {:>7}\n", row.spp,
-                               real_type_name(row.real), formula_name(row.formula), row.ns_per_pixel, ratio,
+            const bool has_ratio = row.untimed.empty();
+            const std::string ratio = has_ratio ? fmt::format("{:.2f}", row.ratio) : "-";
+            const std::string ns = row.ns_per_pixel > 0 ? fmt::format("{:.1f}", row.ns_per_pixel) : "-";
+            out += fmt::format("  {:>4}  {:<11} {:<9} {:>10} {:>8} {:>10} {:>10} {:>9} {:>7}\n", row.spp,
+                               real_type_name(row.real), formula_name(row.formula), ns, ratio,
                                error_text(row.errors.max_error), error_text(row.errors.median_error),
                                row.errors.branch_differs, row.errors.sphere_pixels);
         }
     }
-    if (!report.timeable)
-        out += fmt::format(
-            "\n  no ratios: the shortest timed run took {:.2f} ms, and a ratio needs every timed run to take at\n"
-            "  least {:.0f} ms; time a larger pane (--w {} or more)\n",
-            report.shortest_ms, min_timed_seconds * 1e3,
-            static_cast<int>(std::ceil(report.w * std::sqrt(min_timed_seconds * 1e3 / std::max(report.shortest_ms, 1e-6)))));
+    bool first = true;
+    for (const AccuracyRow& row : report.rows) {
+        if (row.untimed.empty()) continue;
+        out += first ? "\n" : "";
+        first = false;
+        std::string note = ui_message("bench_accuracy_untimed_row", {{"scene", report.scenes[row.scene].name},
+                                                                     {"spp", std::to_string(row.spp)},
+                                                                     {"real", std::string(real_type_name(row.real))},
+                                                                     {"formula", std::string(formula_name(row.formula))},
+                                                                     {"why", row.untimed}});
+        // Indented as the table is, continuation lines included.
+        for (std::size_t at = note.find('\n'); at != std::string::npos; at = note.find('\n', at + 3))
+            note.replace(at, 1, "\n  ");
+        out += "  " + note + "\n";
+    }
     out += fmt::format("\n  the whole run took {:.1f} s\n", report.seconds);
     return out;
 }
@@ -383,7 +391,11 @@ std::string accuracy_json(const AccuracyReport& report) {
                            real_type_name(row.real), formula_name(row.formula));
         append_number(out, row.ns_per_pixel);
         out += ",\"ratio\":";
-        append_number(out, report.timeable ? row.ratio : NAN);
+        append_number(out, row.untimed.empty() ? row.ratio : NAN);
+        if (!row.untimed.empty()) {
+            out += ",\"untimed\":";
+            append_string(out, row.untimed);
+        }
         out += fmt::format(",\"timed_w\":{},\"pixels\":{},\"sphere_pixels\":{},\"max_error\":", row.timed_w,
                            e.pixels, e.sphere_pixels);
         append_error(out, e.max_error);

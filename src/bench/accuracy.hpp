@@ -91,6 +91,7 @@ struct AccuracyRow {
     Formula formula = Formula::article;
     double ns_per_pixel = 0;   // wall-clock time per pixel rendering with the run's threads (median of the rounds)
     double ratio = 0;          // ns_per_pixel / the scene's base_ns_per_pixel
+    std::string untimed;       // why there is no ratio (this job or the baseline could not be timed); empty: timed
     int timed_w = 0;           // each timed run renders the scene on a timed_w × timed_w pane
     ErrorStats errors;
 };
@@ -100,8 +101,8 @@ struct AccuracyReport {
     int threads = 1;
     int rounds = 0;            // timing rounds (--repetitions)
     double target_ms = 0;      // the aimed-for length of each timed run
-    double shortest_ms = 0;    // the shortest timed run (median over rounds)
-    bool timeable = false;     // every timed run long enough (>= 20 ms) for its ratio to mean something
+    double shortest_ms = 0;    // the shortest timed run (every run that counts lasts at least 20 ms)
+    bool timeable = false;     // every combination was timed (runs of at least 20 ms): every ratio is given
     std::vector<AccuracyScene> scenes;
     std::vector<AccuracyRow> rows;  // scene, then spp, then real type, then formula
     double seconds = 0;        // the whole run's wall-clock time

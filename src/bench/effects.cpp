@@ -9,9 +9,11 @@
 #include <fmt/format.h>
 
 #include "bench/cpu_pinning.hpp"
+#include "bench/timing.hpp"
 #include "render/renderer.hpp"
 #include "render/stages.hpp"
 #include "scene/scene_json.hpp"
+#include "trace/messages.hpp"
 #include "util/embedded_files.hpp"
 #include "util/interrupt.hpp"
 
@@ -19,18 +21,10 @@ namespace promyk::bench {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
 class NullSink final : public RenderSink {
 public:
     void image_rows(const std::uint8_t*, int) override {}
 };
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
-}
 
 // The article's scene first, then the example scenes in the order of the
 // features they add (the others after them, by name).
@@ -68,45 +62,48 @@ int run_effects_bench(const EffectsOptions& options) {
     const std::vector<Scene> scenes = example_scenes();
     const int w = options.w;
     const double pixels = static_cast<double>(w) * w;
-    std::vector<std::vector<double>> times(scenes.size());
     std::vector<RenderStats> stats(scenes.size());
 
     std::vector<int> cpus = allowed_cpus();
     std::optional<PinnedToCpu> pin;
     if (!cpus.empty()) pin.emplace(cpus.front());  // one core for every run: like with like
-    fmt::print("promyk bench effects: every example scene at w = {} ({} pixels), one thread, {} alternating "
-               "round{}, medians\n\n",
-               w, w * static_cast<long>(w), options.repetitions, options.repetitions == 1 ? "" : "s");
+    fmt::print("promyk bench effects: every example scene at w = {} ({} pixels), one thread,\n"
+               "  {} alternating round{}, medians; each timed run repeats the pane until it lasts\n"
+               "  at least {:.0f} ms\n\n",
+               w, w * static_cast<long>(w), options.repetitions, options.repetitions == 1 ? "" : "s",
+               TimingPolicy{}.min_run_seconds * 1e3);
     std::fflush(stdout);
-    for (int round = 0; round < options.repetitions; ++round) {
-        for (std::size_t k = 0; k < scenes.size(); ++k) {
-            throw_if_interrupted();
-            NullSink sink;
-            const auto start = Clock::now();
-            render(scenes[k], {w, 1}, PixelSelection{}, sink, &stats[k]);
-            times[k].push_back(std::chrono::duration<double>(Clock::now() - start).count());
-        }
+    std::vector<TimedWork> jobs;
+    for (std::size_t k = 0; k < scenes.size(); ++k) {
+        NullSink sink;
+        render(scenes[k], {w, 1}, PixelSelection{}, sink, &stats[k]);  // the work columns (untimed)
+        jobs.push_back(repeated([&, k] {
+            NullSink timed_sink;
+            render(scenes[k], {w, 1}, PixelSelection{}, timed_sink);
+        }));
     }
+    TimingPolicy policy;
+    policy.rounds = options.repetitions;
+    const std::vector<Timing> timings = time_side_by_side(jobs, policy);
 
-    const double article = median(times.front());
-    // A ratio is worth printing only when the runs are long enough for the
-    // clock and the scheduler to be noise (as in bench speed).
-    const bool ratios = article >= 0.020;
+    const Timing& article = timings.front();
     fmt::print("  {:<12} {:>9} {:>9}  {:>13} {:>13} {:>12}  {}\n", "scene", "ns/pixel", "× article",
                "shadow rays/px", "sphere tests/px", "plane tests/px", "stages");
+    std::vector<std::string> problems;
     for (std::size_t k = 0; k < scenes.size(); ++k) {
-        const double t = median(times[k]);
+        const Timing& t = timings[k];
         const RenderStats& s = stats[k];
-        const std::string ratio = ratios ? fmt::format("{:.2f}", t / article) : "—";
-        fmt::print("  {:<12} {:>9.2f} {:>9}  {:>13.3f} {:>13.3f} {:>12.3f}  {}\n", scenes[k].name, t / pixels * 1e9,
-                   ratio, static_cast<double>(s.shadow_rays) / pixels,
-                   static_cast<double>(s.sphere_tests) / pixels, static_cast<double>(s.plane_tests) / pixels,
-                   stage_list(scenes[k]));
+        if (!t.timed) problems.push_back(ui_message("bench_effects_untimed", {{"scene", scenes[k].name}, {"why", t.problem}}));
+        const std::string ns = t.timed ? fmt::format("{:.2f}", t.median_seconds_per_unit / pixels * 1e9) : "-";
+        const std::string ratio =
+            t.timed && article.timed ? fmt::format("{:.2f}", t.median_seconds_per_unit / article.median_seconds_per_unit)
+                                     : "-";
+        fmt::print("  {:<12} {:>9} {:>9}  {:>13.3f} {:>13.3f} {:>12.3f}  {}\n", scenes[k].name, ns, ratio,
+                   static_cast<double>(s.shadow_rays) / pixels, static_cast<double>(s.sphere_tests) / pixels,
+                   static_cast<double>(s.plane_tests) / pixels, stage_list(scenes[k]));
     }
-    if (!ratios)
-        fmt::print("\n  no ratios: the article's scene ran in {:.1f} ms, under 20 ms, too short to compare; use "
-                   "--w {} or more\n",
-                   article * 1e3, 2048);
+    if (!problems.empty()) fmt::print("\n");
+    for (const std::string& problem : problems) fmt::print("  {}\n", problem);
     fmt::print("\n  × article: the scene's time per pixel over the article's (1.00). Every pixel casts one primary "
                "ray;\n  the work columns count what the scene's stages add per pixel.\n");
     return 0;

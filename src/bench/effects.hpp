@@ -9,7 +9,7 @@
 namespace promyk::bench {
 
 struct EffectsOptions {
-    int w = 2048;         // pane side: the article's scene takes about 35 ms a run here (over 20 ms)
+    int w = 2048;         // pane side (runs shorter than 20 ms are repeated until they last long enough)
     int repetitions = 5;  // alternating rounds; medians are reported
 };
 

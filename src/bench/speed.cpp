@@ -13,8 +13,10 @@
 
 #include "bench/article_literal.hpp"
 #include "bench/cpu_pinning.hpp"
+#include "bench/timing.hpp"
 #include "render/quantize.hpp"
 #include "render/renderer.hpp"
+#include "trace/messages.hpp"
 #include "util/errors.hpp"
 #include "util/interrupt.hpp"
 
@@ -23,12 +25,6 @@ namespace promyk::bench {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
-}
 
 template <class F>
 double seconds_of(F&& work) {
@@ -56,16 +52,16 @@ private:
 class TraceFileSink final : public RenderSink {
 public:
     TraceFileSink() : file_(std::tmpfile(), &std::fclose) {
-        if (!file_) throw OutputError("bench: cannot create a temporary file for the traces");
+        if (!file_) throw OutputError(ui_message("bench_temp_create"));
     }
     void image_rows(const std::uint8_t*, int) override {}
     void trace_lines(std::string_view lines) override {
         if (std::fwrite(lines.data(), 1, lines.size(), file_.get()) != lines.size())
-            throw OutputError("bench: cannot write the temporary traces file");
+            throw OutputError(ui_message("bench_temp_write"));
         bytes_ += lines.size();
     }
     void finish() {
-        if (std::fflush(file_.get()) != 0) throw OutputError("bench: cannot write the temporary traces file");
+        if (std::fflush(file_.get()) != 0) throw OutputError(ui_message("bench_temp_write"));
     }
     double bytes() const { return static_cast<double>(bytes_); }
 
@@ -86,10 +82,6 @@ std::vector<std::uint8_t> to_bytes(const std::vector<double>& t) {
     return bytes;
 }
 
-// A ratio of two timings is meaningful only when each timed run is long
-// enough for the clock and the scheduler to be noise.
-constexpr double min_timed_seconds = 0.020;
-
 }  // namespace
 
 int run_speed_bench(const SpeedOptions& options) {
@@ -109,77 +101,93 @@ int run_speed_bench(const SpeedOptions& options) {
     std::vector<int> cpus = allowed_cpus();
     const bool pinned = !cpus.empty();
     if (!pinned) cpus = {-1};
-    struct CoreTimes {
-        std::vector<double> literal, engine;
-    };
-    std::vector<CoreTimes> per_core(cpus.size());
-    std::vector<double> ratios, threaded_times;
-
-    fmt::print("promyk bench speed: the article's scene, w = {} ({} pixels), {} alternating round{}, medians\n", w,
-               w * static_cast<long>(w), options.repetitions, options.repetitions == 1 ? "" : "s");
-    fmt::print(
-        "  literal: the article's program compiled from the pseudocode (one file, t[i, j] of doubles);\n"
-        "  engine: promyk's renderer, including the conversion of every intensity to an 8-bit grey level\n\n");
-    std::fflush(stdout);
-    for (int round = 0; round < options.repetitions; ++round) {
-        for (std::size_t c = 0; c < cpus.size(); ++c) {
-            throw_if_interrupted();
+    std::vector<TimedWork> jobs;  // per core: literal, engine; then the threaded engine
+    for (const int cpu : cpus) {
+        jobs.push_back([&, cpu](long count) {
             std::optional<PinnedToCpu> pin;
-            if (pinned) pin.emplace(cpus[c]);
-            const double t_literal = seconds_of([&] { literal_render(literal, w, literal_t); });
-            const double t_engine = seconds_of([&] {
+            if (pinned) pin.emplace(cpu);
+            for (long k = 0; k < count; ++k) literal_render(literal, w, literal_t);
+        });
+        jobs.push_back([&, cpu](long count) {
+            std::optional<PinnedToCpu> pin;
+            if (pinned) pin.emplace(cpu);
+            for (long k = 0; k < count; ++k) {
                 MemorySink sink(engine_image.data(), w);
                 render(scene, {w, 1}, PixelSelection{}, sink);
-            });
-            per_core[c].literal.push_back(t_literal);
-            per_core[c].engine.push_back(t_engine);
-            ratios.push_back(t_engine / t_literal);
-        }
-        threaded_times.push_back(seconds_of([&] {
-            MemorySink sink(threaded_image.data(), w);
-            render(scene, {w, threads}, PixelSelection{}, sink);
-        }));
+            }
+        });
     }
+    jobs.push_back(repeated([&] {
+        MemorySink sink(threaded_image.data(), w);
+        render(scene, {w, threads}, PixelSelection{}, sink);
+    }));
+
+    fmt::print("promyk bench speed: the article's scene, w = {} ({} pixels),\n  {} alternating round{}, medians\n", w,
+               w * static_cast<long>(w), options.repetitions, options.repetitions == 1 ? "" : "s");
+    fmt::print(
+        "  literal: the article's program compiled from the pseudocode (one file, t[i, j]\n"
+        "  of doubles); engine: promyk's renderer, including the conversion of every\n"
+        "  intensity to an 8-bit grey level; each timed run repeats the pane until it\n"
+        "  lasts at least {:.0f} ms\n\n",
+        TimingPolicy{}.min_run_seconds * 1e3);
+    std::fflush(stdout);
+    TimingPolicy policy;
+    policy.rounds = options.repetitions;
+    const std::vector<Timing> timings = time_side_by_side(jobs, policy);
+    const Timing& threaded = timings.back();
+
     const std::vector<std::uint8_t> literal_image = to_bytes(literal_t);
     const bool identical = engine_image == literal_image && threaded_image == literal_image;
-    const double t_threaded = median(threaded_times);
+    const auto ns_per_pixel = [&](const Timing& t) { return t.median_seconds_per_unit / pixels * 1e9; };
 
-    const auto ns_per_pixel = [&](double seconds) { return seconds / pixels * 1e9; };
-    double shortest = t_threaded;
-    for (const CoreTimes& core : per_core)
-        shortest = std::min({shortest, median(core.literal), median(core.engine)});
-    const bool timeable = shortest >= min_timed_seconds;
     fmt::print("  single thread          literal ns/pixel  engine ns/pixel  engine/literal\n");
-    double throughput_sum = 0;  // pixels per second, summed over cores
+    std::vector<double> ratios;
+    std::vector<std::string> problems;
+    double throughput_sum = 0;  // panes per second, summed over cores
+    bool all_timed = threaded.timed;
+    if (!threaded.timed) problems.push_back(ui_message("bench_speed_untimed_threaded", {{"why", threaded.problem}}));
     for (std::size_t c = 0; c < cpus.size(); ++c) {
-        const double t_literal = median(per_core[c].literal), t_engine = median(per_core[c].engine);
-        throughput_sum += 1 / t_engine;
-        fmt::print("  {:<22} {:>16.2f} {:>16.2f} {:>15}\n", pinned ? fmt::format("on core {}", cpus[c]) : "any core",
-                   ns_per_pixel(t_literal), ns_per_pixel(t_engine),
-                   timeable ? fmt::format("{:.3f}", t_engine / t_literal) : "-");
+        const Timing& lit = timings[2 * c];
+        const Timing& eng = timings[2 * c + 1];
+        const std::string where = pinned ? fmt::format("on core {}", cpus[c]) : "any core";
+        std::string ratio = "-";
+        if (lit.timed && eng.timed) {
+            // Per round, the two runs that were taken next to each other.
+            for (std::size_t r = 0; r < lit.seconds_per_unit.size(); ++r)
+                ratios.push_back(eng.seconds_per_unit[r] / lit.seconds_per_unit[r]);
+            throughput_sum += 1 / eng.median_seconds_per_unit;
+            ratio = fmt::format("{:.3f}", eng.median_seconds_per_unit / lit.median_seconds_per_unit);
+        } else {
+            all_timed = false;
+            for (const Timing* t : {&lit, &eng})
+                if (!t->timed)
+                    problems.push_back(ui_message("bench_speed_untimed_core",
+                                                  {{"what", t == &lit ? "literal" : "engine"},
+                                                   {"where", where},
+                                                   {"why", t->problem}}));
+        }
+        fmt::print("  {:<22} {:>16} {:>16} {:>15}\n", where,
+                   lit.timed ? fmt::format("{:.2f}", ns_per_pixel(lit)) : "-",
+                   eng.timed ? fmt::format("{:.2f}", ns_per_pixel(eng)) : "-", ratio);
     }
-    const double t_one = 1 / (throughput_sum / static_cast<double>(cpus.size()));  // the average core
-    fmt::print("  engine, {} thread{}: {:.2f} ns/pixel\n\n", threads, threads == 1 ? "" : "s",
-               ns_per_pixel(t_threaded));
+    if (threaded.timed)
+        fmt::print("  engine, {} thread{}: {:.2f} ns/pixel\n\n", threads, threads == 1 ? "" : "s",
+                   ns_per_pixel(threaded));
+    else
+        fmt::print("  engine, {} thread{}: -\n\n", threads, threads == 1 ? "" : "s");
 
-    if (!timeable) {
-        // Time grows with w²: the pane that would make the shortest run long enough.
-        const double needed = w * std::sqrt(min_timed_seconds / std::max(shortest, 1e-9));
-        const int suggestion = std::min(32768, (static_cast<int>(needed) / 256 + 1) * 256);
-        fmt::print(
-            "  no ratios: a timed run took {:.2f} ms, and a ratio needs every timed run to take at least {:.0f} ms;\n"
-            "  time a larger pane (--w {} or more)\n",
-            shortest * 1e3, min_timed_seconds * 1e3, suggestion);
-    } else {
-        fmt::print("  engine / literal, 1 thread (median over rounds and cores): {:.3f}   (target <= 1.05)\n",
-                   median(ratios));
-        fmt::print(
-            "  {} threads / 1 thread speed-up (1 thread: the average core): {:.2f}   (target >= 1.8 on 2 cores)\n",
-            threads, t_one / t_threaded);
+    if (!ratios.empty())
+        fmt::print("  engine / literal, 1 thread (median over rounds and cores): {:.3f}\n  (target <= 1.05)\n",
+                   median_of(ratios));
+    if (all_timed) {
+        const double t_one = 1 / (throughput_sum / static_cast<double>(cpus.size()));  // the average core
+        fmt::print("  {} threads / 1 thread speed-up (1 thread: the average core): {:.2f}\n  (target >= 1.8 on 2 cores)\n",
+                   threads, t_one / threaded.median_seconds_per_unit);
         if (pinned && threads == static_cast<int>(cpus.size()))
             fmt::print("  parallel efficiency (threaded throughput / sum of the cores' own): {:.2f}\n",
-                       (1 / t_threaded) / throughput_sum);
+                       (1 / threaded.median_seconds_per_unit) / throughput_sum);
     }
+    for (const std::string& problem : problems) fmt::print("  {}\n", problem);
     fmt::print("  images identical (engine, threaded, literal): {}\n\n", identical ? "yes" : "NO");
     std::fflush(stdout);
 

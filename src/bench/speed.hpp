@@ -8,7 +8,7 @@
 namespace promyk::bench {
 
 struct SpeedOptions {
-    int w = 4096;         // pane side for the image timings (each timed run well over 20 ms)
+    int w = 4096;         // pane side for the image timings (runs under 20 ms are repeated)
     int repetitions = 7;  // alternating rounds; medians are reported
     int threads = 0;      // 0: all cores
     int trace_w = 512;    // pane side for the traces' throughput

@@ -16,6 +16,7 @@
 #include "scene/scene_json.hpp"
 #include "util/atomic_file.hpp"
 #include "util/errors.hpp"
+#include "util/system_error_text.hpp"
 #include "trace/messages.hpp"
 
 namespace promyk {
@@ -37,13 +38,14 @@ constexpr std::size_t max_lesson_file_bytes = 8 << 20;
 
 std::string read_text(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path.string(), "", "cannot read the file: " + std::generic_category().message(errno));
+    if (!in) throw InputError(path.string(), "", ui_message("file_cannot_read", {{"reason", system_error_text(errno)}}));
     std::string text;
     char buffer[65536];
     while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
         text.append(buffer, static_cast<std::size_t>(in.gcount()));
         if (text.size() > max_lesson_file_bytes)
-            throw InputError(path.string(), "", fmt::format("the file is larger than the limit of {} bytes (8 MiB)", max_lesson_file_bytes));
+            throw InputError(path.string(), "",
+                             ui_message("file_too_large", {{"bytes", std::to_string(max_lesson_file_bytes)}}));
     }
     return text;
 }
@@ -58,7 +60,7 @@ LessonLibrary::LessonLibrary(const std::string& folder) {
         for (std::size_t k = 0; k < files_.size(); ++k) index.emplace(files_[k].path, k);
         std::error_code error;
         if (!fs::is_directory(folder, error))
-            throw InputError(folder, "", "--lessons needs a folder of lessons (as promyk lesson --dump writes it)");
+            throw InputError(folder, "", ui_message("lessons_need_folder"));
         for (auto it = fs::recursive_directory_iterator(folder, error); !error && it != fs::recursive_directory_iterator();
              it.increment(error)) {
             // Lexically: fs::relative would follow symlinks (and throw on a loop).
@@ -73,7 +75,8 @@ LessonLibrary::LessonLibrary(const std::string& folder) {
             std::error_code status_error;
             const bool regular = it->is_regular_file(status_error);
             if (status_error && status_error != std::errc::no_such_file_or_directory)
-                throw InputError(it->path().string(), "", "cannot read the file: " + status_error.message());
+                throw InputError(it->path().string(), "",
+                                 ui_message("file_cannot_read", {{"reason", system_error_text(status_error)}}));
             if (!regular) continue;
             LessonFile file{relative, it->path().string(), read_text(it->path())};
             // A file of the folder replaces the built-in one of the same path (a map: a folder may hold 10^4 files).
@@ -83,7 +86,7 @@ LessonLibrary::LessonLibrary(const std::string& folder) {
             else
                 files_[same->second] = std::move(file);
         }
-        if (error) throw InputError(folder, "", "cannot read the folder: " + error.message());
+        if (error) throw InputError(folder, "", ui_message("folder_cannot_read", {{"reason", system_error_text(error)}}));
     }
     std::sort(files_.begin(), files_.end(), [](const LessonFile& a, const LessonFile& b) { return a.path < b.path; });
 }
@@ -105,10 +108,12 @@ std::optional<Lesson> LessonLibrary::find(const std::string& name, Language lang
         if (lesson.header.name != name) continue;
         // Two files with one name (a renamed copy beside the built-in one): neither is the lesson.
         if (found)
-            throw InputError(file.shown, fmt::format("line {}", lesson.header.name_line),
+            throw InputError(file.shown, message(language, "location_line", {{"line", std::to_string(lesson.header.name_line)}}),
                              message(language, "error_name_twice", {{"name", name}, {"other", found->file}}));
         if (!problems.empty())
-            throw InputError(file.shown, fmt::format("line {}", problems.front().line), problems.front().message);
+            throw InputError(file.shown,
+                             message(language, "location_line", {{"line", std::to_string(problems.front().line)}}),
+                             problems.front().message);
         found = std::move(lesson);
     }
     return found;
@@ -118,7 +123,7 @@ Scene LessonLibrary::scene(const std::string& name) const {
     if (name == "article") return article_scene();
     for (const LessonFile& file : files_)
         if (file.path == "scenes/" + name) return parse_scene(file.text, file.shown);
-    throw InputError(name, "", "no such scene in lessons/scenes/ (the lesson's header names it)");
+    throw InputError(name, "", ui_message("lesson_no_scene"));
 }
 
 void LessonLibrary::dump_builtin(const std::string& folder) {
@@ -128,9 +133,7 @@ void LessonLibrary::dump_builtin(const std::string& folder) {
         const fs::path path = fs::path(folder) / std::string(file.path);
         std::error_code error;
         if (fs::exists(path, error))
-            throw UsageError(fmt::format("{} exists; --dump writes only into a new or empty folder, so that no "
-                                         "edited lesson is overwritten",
-                                         path.string()));
+            throw UsageError(ui_message("dump_folder_exists", {{"folder", path.string()}}));
     }
     // All or nothing: a failure (a full disk) removes the files written so
     // far, so that no half-filled folder is left for the next --dump to refuse.
@@ -140,7 +143,9 @@ void LessonLibrary::dump_builtin(const std::string& folder) {
             const fs::path path = fs::path(folder) / std::string(file.path);
             std::error_code error;
             fs::create_directories(path.parent_path(), error);
-            if (error) throw OutputError(fmt::format("cannot create {}: {}", path.parent_path().string(), error.message()));
+            if (error)
+                throw OutputError(ui_message("cannot_create", {{"path", path.parent_path().string()},
+                                                               {"reason", system_error_text(error)}}));
             AtomicFile out(path.string());
             out.write(file.text);
             out.commit();

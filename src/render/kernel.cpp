@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "render/samples.hpp"
+#include "trace/messages.hpp"
 #include "util/errors.hpp"
 
 namespace promyk {
@@ -33,8 +34,8 @@ std::unique_ptr<Kernel> make_kernel_in(const Scene& scene, const Stages& stages,
 
 std::unique_ptr<Kernel> make_kernel(const Scene& scene, RealType real, Formula formula, int spp) {
     if (!valid_spp(spp))
-        throw UsageError(fmt::format("samples per pixel must be a square from 1 to {} (1, 4, 9, 16, ...), not {}",
-                                     max_spp, spp));
+        throw UsageError(
+            ui_message("kernel_spp_square", {{"max", std::to_string(max_spp)}, {"spp", std::to_string(spp)}}));
     const Stages stages = plan_stages(scene);
     switch (real) {
         case RealType::float_:

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "trace/messages.hpp"
 #include "util/errors.hpp"
 
 namespace promyk {
@@ -16,7 +17,7 @@ std::string required_string(const nlohmann::json& object, const char* field, con
                             const std::string& pointer) {
     const auto it = object.find(field);
     if (it == object.end() || !it->is_string())
-        throw InputError(source, pointer + "/" + field, std::string("missing or not a string: ") + field);
+        throw InputError(source, pointer + "/" + field, ui_message("vocabulary_missing_field", {{"field", field}}));
     return it->get<std::string>();
 }
 
@@ -42,7 +43,7 @@ Vocabulary parse_vocabulary(std::string_view text, const std::string& source) {
         throw InputError(source, "", error.what());
     }
     if (!document.is_object() || !document.contains("keys") || !document["keys"].is_array())
-        throw InputError(source, "/keys", "the vocabulary needs an array of keys");
+        throw InputError(source, "/keys", ui_message("vocabulary_needs_keys"));
     Vocabulary vocabulary;
     for (std::size_t k = 0; k < document["keys"].size(); ++k) {
         const nlohmann::json& item = document["keys"][k];
@@ -58,15 +59,15 @@ Vocabulary parse_vocabulary(std::string_view text, const std::string& source) {
         entry.pl = required_string(item, "pl", source, pointer);
         entry.en = required_string(item, "en", source, pointer);
         if (const auto given = item.find("given"); given != item.end()) {
-            if (!given->is_boolean()) throw InputError(source, pointer + "/given", "given must be true or false");
+            if (!given->is_boolean()) throw InputError(source, pointer + "/given", ui_message("vocabulary_given_boolean"));
             entry.given = given->get<bool>();
         }
         if (const auto term = item.find("term_of_sum"); term != item.end()) {
             if (!term->is_boolean())
-                throw InputError(source, pointer + "/term_of_sum", "term_of_sum must be true or false");
+                throw InputError(source, pointer + "/term_of_sum", ui_message("vocabulary_term_of_sum_boolean"));
             entry.term_of_sum = term->get<bool>();
         }
-        if (vocabulary.find(entry.key)) throw InputError(source, pointer + "/key", "duplicate key '" + entry.key + "'");
+        if (vocabulary.find(entry.key)) throw InputError(source, pointer + "/key", ui_message("vocabulary_duplicate_key", {{"key", entry.key}}));
         vocabulary.keys.push_back(std::move(entry));
     }
     const auto branches = document.find("branches");

@@ -16,14 +16,16 @@
 
 #include <fmt/format.h>
 
+#include "trace/messages.hpp"
 #include "util/errors.hpp"
+#include "util/system_error_text.hpp"
 
 namespace promyk {
 namespace {
 
 // Every failure names the file the user asked for, not the temporary.
 [[noreturn]] void fail(const std::string& path, int err) {
-    throw OutputError(fmt::format("cannot write {}: {}", path, std::generic_category().message(err)));
+    throw OutputError(ui_message("output_cannot_write", {{"file", path}, {"reason", system_error_text(err)}}));
 }
 
 // errno after a stdio call that may fail without setting it.

@@ -14,13 +14,15 @@
 
 #include <fmt/format.h>
 
+#include "trace/messages.hpp"
 #include "util/errors.hpp"
+#include "util/system_error_text.hpp"
 
 namespace promyk {
 namespace {
 
 [[noreturn]] void fail(const std::string& name, int err) {
-    throw OutputError(fmt::format("cannot write {}: {}", name, std::generic_category().message(err)));
+    throw OutputError(ui_message("output_cannot_write", {{"file", name}, {"reason", system_error_text(err)}}));
 }
 
 int errno_or_eio() { return errno != 0 ? errno : EIO; }
@@ -68,7 +70,7 @@ std::string final_path_of_new_file(const std::string& path) {
 
 }  // namespace
 
-std::string OutputTarget::display_name() const { return kind == OutputKind::standard_output ? "standard output" : path; }
+std::string OutputTarget::display_name() const { return kind == OutputKind::standard_output ? ui_message("output_standard_output") : path; }
 
 OutputTarget inspect_output(const std::string& path) {
     OutputTarget target;
@@ -114,8 +116,10 @@ void require_distinct_outputs(const std::vector<std::pair<std::string, OutputTar
             const OutputTarget& second = outputs[b].second;
             const std::string names = first.path == second.path
                                           ? first.display_name()
-                                          : fmt::format("{} and {}", first.display_name(), second.display_name());
-            throw UsageError(fmt::format("{} and {} name the same file ({})", outputs[a].first, outputs[b].first, names));
+                                          : ui_message("output_two_names", {{"a", first.display_name()},
+                                                                            {"b", second.display_name()}});
+            throw UsageError(ui_message("output_same_file",
+                                        {{"a", outputs[a].first}, {"b", outputs[b].first}, {"names", names}}));
         }
     }
 }

@@ -6,8 +6,8 @@ usage: validate_accuracy.py SCHEMA FILE...
 Checks, besides the schema: every result names a scene of the file; there is
 one result per scene x spp x real x formula of the run (no gaps, no
 duplicates); the reference's own combination (quad/geometric) has no error
-and no differing branch; the ratios are null exactly when the run says it
-was too short to time. Exits 0 when every file is valid, 1 otherwise.
+and no differing branch; a ratio is null exactly when the result says why
+(untimed), and timeable says whether every ratio is given. Exits 0 when every file is valid, 1 otherwise.
 Needs Debian's python3-jsonschema.
 """
 import json
@@ -40,8 +40,10 @@ def problems_of(data, validator):
             problems.append(f"{where}: pixels {r['pixels']}, expected w² = {data['w'] ** 2}")
         if (r["real"], r["formula"]) == ("quad", "geometric") and (r["max_error"] != 0 or r["branch_differs"] != 0):
             problems.append(f"{where}: the reference's own combination differs from the reference")
-        if (r["ratio"] is None) == data["timeable"]:
-            problems.append(f"{where}: ratio {r['ratio']} but timeable is {data['timeable']}")
+        if (r["ratio"] is None) != ("untimed" in r):
+            problems.append(f"{where}: ratio {r['ratio']} but untimed is {r.get('untimed')!r}")
+    if data["timeable"] != all(r["ratio"] is not None for r in results):
+        problems.append(f"timeable is {data['timeable']} but the ratios say otherwise")
     return problems
 
 
