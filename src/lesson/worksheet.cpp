@@ -161,7 +161,7 @@ std::string Worksheet::answer_key() const {
              {"key", key},
              {"value", lesson_number_text(LessonNumber{blank.value, blank.real_text, blank.real}, kind, language,
                                           shown_digits_default, view_.digits)}});
-        out += (markdown ? "- " : "  ") + line + "\n";
+        out += markdown ? "- " + line + "\n" : wrap_text("  " + line, 6) + "\n";
     }
     return out;
 }

@@ -12,6 +12,7 @@
 #include "trace/digits_lost.hpp"
 #include "trace/messages.hpp"
 #include "util/text.hpp"
+#include "util/wrap.hpp"
 
 namespace promyk {
 
@@ -114,13 +115,14 @@ std::string kind_of(const Vocabulary& vocabulary, const std::string& key) {
 std::string header_text(const PixelTrace& trace, const Vocabulary& vocabulary, Language language) {
     const TraceHeader& h = trace.header;
     const std::string file = h.scene_file == "built-in" ? message(language, "trace_builtin") : h.scene_file;
-    std::string out = message(language, "trace_pixel",
+    std::string out = wrap_text(message(language, "trace_pixel",
                               {{"i", std::to_string(h.i)},
                                {"j", std::to_string(h.j)},
                                {"w", std::to_string(h.w)},
                                {"pane", pane_phrase(h.w)},
                                {"scene", h.scene_name},
-                               {"file", file}}) +
+                               {"file", file}}),
+                                2) +
                       "\n";
     out += message(language, "trace_numbers", {{"real", h.real}, {"formula", h.formula}, {"spp", std::to_string(h.spp)}}) +
            "\n";
