@@ -164,8 +164,15 @@ std::vector<std::string> lesson_names(const LessonLibrary& library, Language lan
 int run_answers(const LessonOptions& options, LessonView& view, const Kernel& kernel, const Scene& scene, const TraceHeader& header) {
     const std::string shown = options.answers == "-" ? "(stdin)" : options.answers;
     const LessonPixel first{view.traces.front().header.i, view.traces.front().header.j};
-    const std::vector<PixelAnswers> answers = parse_answers(cli::read_input_file(options.answers, "--answers reads"), shown, view.vocabulary,
-                                                            view.lesson.language, first, view.w, header.scene_hash, true);
+    // A bad line makes that answer unreadable, the rest are checked; a fraction is a number.
+    AnswerLimits limits;
+    limits.w = view.w;
+    limits.scene_hash = header.scene_hash;
+    limits.settings = true;
+    limits.forgiving = true;
+    limits.keys = lesson_keys(view.lesson, view.vocabulary);
+    const std::vector<PixelAnswers> answers = read_answers(cli::read_input_file(options.answers, "--answers reads"), shown,
+                                                           view.vocabulary, view.lesson.language, first, limits).pixels;
     // A heading may name a pixel the lesson did not choose: it is traced too.
     std::set<std::pair<int, int>> traced;
     for (const PixelTrace& trace : view.traces) traced.emplace(trace.header.i, trace.header.j);
@@ -174,8 +181,13 @@ int run_answers(const LessonOptions& options, LessonView& view, const Kernel& ke
             view.traces.push_back(kernel.trace(header, pixel.pixel.i, pixel.pixel.j));
     // Every pixel in every setting the answers or the lesson name (delta@float = …).
     std::vector<std::string> qualifiers;
+    // And each answer's exact value: the same pixel and formula in quad.
     for (const PixelAnswers& pixel : answers)
-        for (const Answer& answer : pixel.answers) qualifiers.push_back(split_settings(answer.key).second);
+        for (const Answer& answer : pixel.answers)
+            if (answer.unreadable.empty()) {
+                qualifiers.push_back(split_settings(answer.key).second);
+                qualifiers.push_back(exact_settings(split_settings(answer.key).second));
+            }
     for (const SettingsUse& use : settings_used(view.lesson)) qualifiers.push_back(use.settings);
     view.others.clear();
     trace_settings(view, scene, header, qualifiers, kernel.spp());

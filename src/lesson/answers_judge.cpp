@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <map>
 
 #include <fmt/format.h>
@@ -64,6 +65,61 @@ Rounded round_to(const TypedNumber& exact, int scale) {
 bool same_number(const TypedNumber& a, const TypedNumber& b) {
     const std::string x = strip_zeros(a.digits), y = strip_zeros(b.digits);
     return x == y && (x == "0" || a.negative == b.negative);
+}
+
+// `text` in lines of at most 80 columns, the first starting at column
+// `first`, the others indented by `indent` (a lesson's keys make a long line).
+std::string wrapped(const std::string& text, std::size_t first, std::size_t indent) {
+    constexpr std::size_t columns = 80;
+    std::string out;
+    std::size_t used = first;
+    for (std::size_t k = 0; k < text.size();) {
+        const std::size_t space = std::min(text.find(' ', k), text.size());
+        const std::string word = text.substr(k, space - k);
+        k = space + 1;
+        if (word.empty()) continue;
+        if (!out.empty() && used + 1 + display_width(word) > columns) {
+            out += "\n" + std::string(indent, ' ');
+            used = indent;
+        } else if (!out.empty()) {
+            out += ' ';
+            ++used;
+        }
+        out += word;
+        used += display_width(word);
+    }
+    return out;
+}
+
+bool is_right(Verdict verdict) {
+    return verdict == Verdict::right || verdict == Verdict::right_more_digits || verdict == Verdict::right_nearer;
+}
+
+// A number's exact value in its own type: a double's binary value, or a
+// float's, long double's or quad's read back from its exact text. Nothing
+// for a non-finite one.
+std::optional<TypedNumber> exact_of(const LessonNumber& number) {
+    const double approximate = std::get<double>(number.value);
+    if (!std::isfinite(approximate)) return std::nullopt;
+    if (number.real_text.empty()) return exact_decimal(approximate);
+    const RealType type = number.real == "float"         ? RealType::float_
+                          : number.real == "long-double" ? RealType::long_double
+                          : number.real == "quad"        ? RealType::quad_
+                                                         : RealType::double_;
+    if (std::optional<TypedNumber> exact = exact_value_of(number.real_text.front(), type)) return exact;
+    return exact_decimal(approximate);
+}
+
+// p/q at least as near `exact` as `computed` is: |p − q·exact| ≤ q·|computed − exact|.
+bool at_least_as_near(const TypedNumber& p, const TypedNumber& q, const TypedNumber& computed, const TypedNumber& exact) {
+    return compare_magnitude(absolute_difference(p, multiply(q, exact)), multiply(q, absolute_difference(computed, exact))) <= 0;
+}
+
+// A fraction p/q: right when it is the computed value, right_nearer when it
+// lies at least as near the exact value, else wrong.
+Verdict judge_fraction(const TypedNumber& p, const TypedNumber& q, const TypedNumber& computed, const TypedNumber& exact) {
+    if (is_zero(absolute_difference(p, multiply(q, computed)))) return Verdict::right;
+    return at_least_as_near(p, q, computed, exact) ? Verdict::right_nearer : Verdict::wrong;
 }
 
 std::string symbol_of(const Vocabulary& vocabulary, const Answer& answer, Language language) {
@@ -142,6 +198,23 @@ Verdict compare_number(const TypedNumber& reference, const TypedNumber& typed, T
     return Verdict::wrong;
 }
 
+int digits_held(const std::string& real) {
+    if (real == "float") return std::numeric_limits<float>::digits10;
+    if (real == "long-double") return std::numeric_limits<long double>::digits10;
+    if (real == "quad") return 33;  // FLT128_DIG
+    return std::numeric_limits<double>::digits10;
+}
+
+int significant_digits(const TypedNumber& number) {
+    const std::string digits = strip_zeros(number.digits);
+    return digits == "0" ? 0 : static_cast<int>(digits.size());
+}
+
+std::string exact_settings(const std::string& settings) {
+    const std::optional<SettingsQualifier> qualifier = parse_settings(settings);
+    return qualifier && !qualifier->formula.empty() ? "quad," + qualifier->formula : "quad";
+}
+
 std::vector<AnswerCheck> check_answers(const std::vector<PixelAnswers>& answers, const std::vector<PixelTrace>& traces,
                                        const std::vector<PixelTrace>& others) {
     const Vocabulary& vocabulary = builtin_vocabulary();
@@ -150,12 +223,21 @@ std::vector<AnswerCheck> check_answers(const std::vector<PixelAnswers>& answers,
     for (const PixelAnswers& pixel : answers) {
         const PixelTrace* trace = trace_of(pixel.pixel);
         if (trace == nullptr) throw std::logic_error("check_answers: no trace for an answered pixel");
+        // Unreadable answers last, in the file's order.
         std::vector<std::pair<std::size_t, const Answer*>> sorted;
-        for (const Answer& answer : pixel.answers) sorted.emplace_back(derivation_rank(*trace, vocabulary, answer.key), &answer);
+        for (const Answer& answer : pixel.answers)
+            sorted.emplace_back(answer.unreadable.empty() ? derivation_rank(*trace, vocabulary, answer.key)
+                                                          : std::numeric_limits<std::size_t>::max(),
+                                &answer);
         std::stable_sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
         for (const auto& [rank, answer_of] : sorted) {
             const Answer& answer = *answer_of;
             AnswerCheck check{pixel.pixel, answer, Verdict::right, {}};
+            if (!answer.unreadable.empty()) {
+                check.verdict = Verdict::unreadable;
+                checks.push_back(std::move(check));
+                continue;
+            }
             const std::optional<LessonNumber> number = lesson_number(*trace, answer.key, others);
             const std::optional<StepValue> value = number ? std::optional<StepValue>(number->value) : std::nullopt;
             // Three numbers for a point, a vector or a colour; one for a number or a component.
@@ -168,33 +250,47 @@ std::vector<AnswerCheck> check_answers(const std::vector<PixelAnswers>& answers,
             } else if (answer.numbers.size() != wanted || (answer.component != 0 && !vector_key)) {
                 check.verdict = Verdict::wrong_shape;
             } else {
-                // Each number's exact value in the trace's own type: a double's
-                // binary value, or a float's, long double's or quad's read back
-                // from its exact text.
-                std::vector<LessonNumber> reference;
-                if (vector_key && answer.component == 0)
-                    reference = {component_of(*number, 'x'), component_of(*number, 'y'), component_of(*number, 'z')};
-                else
-                    reference = {component_of(*number, answer.component)};
-                bool any_wrong = false, any_wrong_way = false;
+                // The exact value: the same pixel and formula in quad, when it was traced.
+                const auto [path, settings] = split_settings(answer.key);
+                const std::optional<LessonNumber> exact_number =
+                    lesson_number(*trace, qualified_path(path, 0, exact_settings(settings)), others);
+                const auto components = [&](const LessonNumber& of) {
+                    return vector_key && answer.component == 0
+                               ? std::vector<LessonNumber>{component_of(of, 'x'), component_of(of, 'y'), component_of(of, 'z')}
+                               : std::vector<LessonNumber>{component_of(of, answer.component)};
+                };
+                const std::vector<LessonNumber> reference = components(*number);
+                const std::vector<LessonNumber> truth =
+                    exact_number && exact_number->value.index() == number->value.index() ? components(*exact_number)
+                                                                                         : std::vector<LessonNumber>{};
+                std::vector<Verdict> verdicts;
                 for (std::size_t k = 0; k < reference.size(); ++k) {
                     TypedNumber expected;
-                    const double approximate = std::get<double>(reference[k].value);
-                    std::optional<TypedNumber> exact;
-                    if (!reference[k].real_text.empty() && std::isfinite(approximate)) {
-                        const std::string& real = reference[k].real;
-                        const RealType type = real == "float" ? RealType::float_
-                                              : real == "long-double" ? RealType::long_double
-                                              : real == "quad" ? RealType::quad_ : RealType::double_;
-                        exact = exact_value_of(reference[k].real_text.front(), type);
+                    const std::optional<TypedNumber> computed = exact_of(reference[k]);
+                    const std::optional<TypedNumber> exact = truth.empty() ? computed : exact_of(truth[k]);
+                    const TypedNumber* over = answer.over.empty() || answer.over[k].digits.empty() ? nullptr : &answer.over[k];
+                    if (!computed) {
+                        verdicts.push_back(Verdict::wrong);
+                    } else if (over != nullptr) {
+                        expected = *computed;
+                        verdicts.push_back(judge_fraction(answer.numbers[k], *over, *computed, exact.value_or(*computed)));
+                    } else {
+                        Verdict verdict = compare_number(*computed, answer.numbers[k], expected);
+                        // More digits than the type holds: judged by the distance to the exact value.
+                        if (verdict != Verdict::right && exact &&
+                            significant_digits(answer.numbers[k]) > digits_held(reference[k].real) &&
+                            at_least_as_near(answer.numbers[k], TypedNumber{false, "1", 0}, *computed, *exact))
+                            verdict = Verdict::right_more_digits;
+                        verdicts.push_back(verdict);
                     }
-                    const Verdict verdict = exact ? compare_number(*exact, answer.numbers[k], expected)
-                                                  : compare_number(approximate, answer.numbers[k], expected);
-                    any_wrong = any_wrong || verdict == Verdict::wrong;
-                    any_wrong_way = any_wrong_way || verdict == Verdict::wrong_way;
                     check.expected.push_back(expected);
                 }
-                check.verdict = any_wrong ? Verdict::wrong : any_wrong_way ? Verdict::wrong_way : Verdict::right;
+                // The worst of the numbers' verdicts.
+                for (const Verdict verdict : {Verdict::wrong, Verdict::wrong_way, Verdict::right_nearer, Verdict::right_more_digits})
+                    if (std::find(verdicts.begin(), verdicts.end(), verdict) != verdicts.end()) {
+                        check.verdict = verdict;
+                        break;
+                    }
             }
             checks.push_back(std::move(check));
         }
@@ -204,13 +300,13 @@ std::vector<AnswerCheck> check_answers(const std::vector<PixelAnswers>& answers,
 
 bool all_right(const std::vector<AnswerCheck>& checks) {
     return std::all_of(checks.begin(), checks.end(),
-                       [](const AnswerCheck& c) { return c.verdict == Verdict::right || c.verdict == Verdict::blank; });
+                       [](const AnswerCheck& c) { return is_right(c.verdict) || c.verdict == Verdict::blank; });
 }
 
 std::string answers_report(const std::vector<AnswerCheck>& checks, const std::vector<PixelTrace>& traces,
                            const Vocabulary& vocabulary, Language language, const std::vector<PixelTrace>& others) {
     std::string out;
-    int right = 0, wrong = 0, blank = 0;
+    int right = 0, wrong = 0, blank = 0, unreadable = 0;
     std::optional<LessonPixel> current;
     const TraceIndex trace_of(traces);
     for (const AnswerCheck& check : checks) {
@@ -225,6 +321,19 @@ std::string answers_report(const std::vector<AnswerCheck>& checks, const std::ve
                             {"branch", branch ? (language == Language::pl ? branch->pl : branch->en) : std::string(branch_name(trace->branch))}}) +
                    "\n";
         }
+        if (check.verdict == Verdict::unreadable) {
+            // Where it stands and what it says, since its key may be unknown.
+            const Answer& answer = check.answer;
+            const auto [path, settings] = split_settings(answer.key);
+            const std::string where =
+                answer.pointer.empty() ? message(language, "answers_line", {{"line", std::to_string(answer.line)}}) : answer.pointer;
+            const std::string text =
+                answer.key.empty() ? answer.text : qualified_path(path, answer.component, settings) + " = " + answer.text;
+            out += "  " + wrapped(message(language, "answers_unreadable", {{"where", where}, {"text", text}, {"reason", answer.unreadable}}),
+                                  2, 4) + "\n";
+            ++unreadable;
+            continue;
+        }
         const std::optional<LessonNumber> number = lesson_number(*trace, check.answer.key, others);
         const std::string kind =
             kind_of(vocabulary, check.answer, number ? std::optional<StepValue>(number->value) : std::nullopt);
@@ -234,6 +343,14 @@ std::string answers_report(const std::vector<AnswerCheck>& checks, const std::ve
             case Verdict::right:
                 id = "answers_right";
                 ++right;
+                break;
+            case Verdict::right_more_digits:
+            case Verdict::right_nearer:
+                id = check.verdict == Verdict::right_more_digits ? "answers_right_more_digits" : "answers_right_nearer";
+                args.emplace_back("real", message(language, "answers_real_" + (number ? number->real : std::string("double"))));
+                ++right;
+                break;
+            case Verdict::unreadable:
                 break;
             case Verdict::blank:
                 id = "answers_blank";
@@ -249,7 +366,9 @@ std::string answers_report(const std::vector<AnswerCheck>& checks, const std::ve
                 break;
             case Verdict::wrong:
             case Verdict::wrong_way: {
-                id = check.verdict == Verdict::wrong ? "answers_wrong" : "answers_wrong_way";
+                id = !check.answer.over.empty()              ? "answers_wrong_fraction"
+                     : check.verdict == Verdict::wrong ? "answers_wrong"
+                                                       : "answers_wrong_way";
                 ++wrong;
                 const LessonNumber exact = component_of(*number, check.answer.component);
                 const bool finite = std::all_of(check.expected.begin(), check.expected.end(),
@@ -260,12 +379,15 @@ std::string answers_report(const std::vector<AnswerCheck>& checks, const std::ve
                 break;
             }
         }
-        out += "  " + message(language, id, args) + "\n";
+        // The older verdicts' lines are kept as they were; the new ones fit 80 columns.
+        const bool wrap = id == "answers_right_more_digits" || id == "answers_right_nearer" || id == "answers_wrong_fraction";
+        out += "  " + (wrap ? wrapped(message(language, id, args), 2, 4) : message(language, id, args)) + "\n";
     }
     out += "\n" + message(language, "answers_summary",
-                          {{"right", std::to_string(right)}, {"count", std::to_string(right + wrong)},
-                           {"wrong", std::to_string(wrong)}, {"blank", std::to_string(blank)}}) + "\n";
-    return out;
+                          {{"right", std::to_string(right)}, {"count", std::to_string(right + wrong + unreadable)},
+                           {"wrong", std::to_string(wrong)}, {"blank", std::to_string(blank)}});
+    if (unreadable > 0) out += " " + message(language, "answers_summary_unreadable", {{"unreadable", std::to_string(unreadable)}});
+    return out + "\n";
 }
 
 }  // namespace promyk
