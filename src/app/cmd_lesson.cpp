@@ -74,9 +74,10 @@ std::optional<Formula> formula_named(const std::string& name) {
 }
 
 // The traces of the pixels in each other setting a qualifier names
-// ({delta@float}, delta@float = … in an answer file), added to view.others once a setting.
+// ({delta@float}, delta@float = … in an answer file), added to view.others once a setting;
+// with `only`, of those pixels alone.
 void trace_settings(LessonView& view, const Scene& scene, const TraceHeader& header, const std::vector<std::string>& qualifiers,
-                    int spp) {
+                    int spp, const std::set<std::pair<int, int>>* only = nullptr) {
     const TraceHeader& own = view.traces.front().header;
     std::set<std::pair<std::string, std::string>> done;
     for (const PixelTrace& other : view.others) done.emplace(other.header.real, other.header.formula);
@@ -86,7 +87,8 @@ void trace_settings(LessonView& view, const Scene& scene, const TraceHeader& hea
         const std::unique_ptr<Kernel> kernel = make_kernel(scene, *real_type_named(real), *formula_named(formula), spp);
         std::set<std::pair<int, int>> traced;
         for (const PixelTrace& trace : view.traces)
-            if (traced.emplace(trace.header.i, trace.header.j).second)
+            if ((only == nullptr || only->count({trace.header.i, trace.header.j}) > 0) &&
+                traced.emplace(trace.header.i, trace.header.j).second)
                 view.others.push_back(kernel->trace(header, trace.header.i, trace.header.j));
     }
 }
@@ -181,17 +183,26 @@ int run_answers(const LessonOptions& options, LessonView& view, const Kernel& ke
             view.traces.push_back(kernel.trace(header, pixel.pixel.i, pixel.pixel.j));
     // Every pixel in every setting the answers or the lesson name (delta@float = …).
     std::vector<std::string> qualifiers;
-    // And each answer's exact value: the same pixel and formula in quad.
     for (const PixelAnswers& pixel : answers)
         for (const Answer& answer : pixel.answers)
-            if (answer.unreadable.empty()) {
-                qualifiers.push_back(split_settings(answer.key).second);
-                qualifiers.push_back(exact_settings(split_settings(answer.key).second));
-            }
+            if (answer.unreadable.empty()) qualifiers.push_back(split_settings(answer.key).second);
     for (const SettingsUse& use : settings_used(view.lesson)) qualifiers.push_back(use.settings);
     view.others.clear();
     trace_settings(view, scene, header, qualifiers, kernel.spp());
-    const std::vector<AnswerCheck> checks = check_answers(answers, view.traces, view.others);
+    std::vector<AnswerCheck> checks = check_answers(answers, view.traces, view.others);
+    // A fraction or a number with more digits than the type holds, wrong against the computed value
+    // alone, is judged against the exact value: the same pixel and formula in quad, traced only for these.
+    std::vector<std::string> exact;
+    std::set<std::pair<int, int>> exact_pixels;
+    for (const AnswerCheck& check : checks)
+        if (check.needs_exact) {
+            exact.push_back(exact_settings(split_settings(check.answer.key).second));
+            exact_pixels.emplace(check.pixel.i, check.pixel.j);
+        }
+    if (!exact.empty()) {
+        trace_settings(view, scene, header, exact, kernel.spp(), &exact_pixels);
+        checks = check_answers(answers, view.traces, view.others);
+    }
     print(message(view.lesson.language, "answers_heading",
                   {{"file", shown}, {"lesson", view.lesson.header.name}, {"scene", view.scene_name}, {"w", std::to_string(view.w)},
                    {"pane", pane_phrase(view.w)}}) +

@@ -147,6 +147,11 @@ struct AnswerCheck {
     Answer answer;
     Verdict verdict = Verdict::right;
     std::vector<TypedNumber> expected;  // at the student's precision, one per number typed
+    // Judged wrong with no exact value at hand (`others` had no quad trace of
+    // the pixel), where the exact value could make it right: a fraction, or
+    // more digits than the type holds. Tracing the pixel in quad (exact_settings)
+    // and checking again settles it; only these need the quad trace.
+    bool needs_exact = false;
 };
 
 // Checks each answer against the trace of its pixel (`traces` must hold one

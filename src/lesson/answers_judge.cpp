@@ -274,13 +274,15 @@ std::vector<AnswerCheck> check_answers(const std::vector<PixelAnswers>& answers,
                     } else if (over != nullptr) {
                         expected = *computed;
                         verdicts.push_back(judge_fraction(answer.numbers[k], *over, *computed, exact.value_or(*computed)));
+                        check.needs_exact = check.needs_exact || (truth.empty() && verdicts.back() == Verdict::wrong);
                     } else {
                         Verdict verdict = compare_number(*computed, answer.numbers[k], expected);
                         // More digits than the type holds: judged by the distance to the exact value.
-                        if (verdict != Verdict::right && exact &&
-                            significant_digits(answer.numbers[k]) > digits_held(reference[k].real) &&
-                            at_least_as_near(answer.numbers[k], TypedNumber{false, "1", 0}, *computed, *exact))
-                            verdict = Verdict::right_more_digits;
+                        if (verdict != Verdict::right && significant_digits(answer.numbers[k]) > digits_held(reference[k].real)) {
+                            if (exact && at_least_as_near(answer.numbers[k], TypedNumber{false, "1", 0}, *computed, *exact))
+                                verdict = Verdict::right_more_digits;
+                            check.needs_exact = check.needs_exact || (truth.empty() && !is_right(verdict));
+                        }
                         verdicts.push_back(verdict);
                     }
                     check.expected.push_back(expected);
