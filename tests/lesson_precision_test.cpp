@@ -176,11 +176,17 @@ TEST_CASE("worksheet and answers in float, and qualified answers", "[lesson][pre
     CHECK_THAT(command, Catch::Contains("--pixel 3,4 --real float --lang en --answers"));
     CHECK_THAT(sheet.out, Catch::Contains("Δ/4 = 4.558   [delta]"));  // 4.5578117 to 4 digits
 
-    // Float's Δ/4 is 4.557811737060546875: to 7 decimals 4.5578117; double's 4.5578125 is wrong.
+    // Float's Δ/4 is 4.557811737060546875: to 7 decimals 4.5578117. The exact Δ/4 is 4.5578125000000028…:
+    // double's 4.5578125 has more digits than a float holds and lies nearer it, so it is right, and said so;
+    // 4.5578100, farther from it than float's value, is wrong.
     write(dir.file("right.txt"), "delta = " + promyk::real_text(f.delta) + "\n");
-    write(dir.file("wrong.txt"), "delta = 4.5578125\n");
+    write(dir.file("nearer.txt"), "delta = 4.5578125\n");
+    write(dir.file("wrong.txt"), "delta = 4.5578100\n");
     const Run right = run_promyk("lesson sphere --real float --pixel 3,4 --lang en --answers " + dir.file("right.txt"));
     CHECK(right.exit_code == 0);
+    const Run nearer = run_promyk("lesson sphere --real float --pixel 3,4 --lang en --answers " + dir.file("nearer.txt"));
+    CHECK(nearer.exit_code == 0);
+    CHECK_THAT(nearer.out, Catch::Contains("4.5578125: right, and more digits than a float holds"));
     const Run wrong = run_promyk("lesson sphere --real float --pixel 3,4 --lang en --answers " + dir.file("wrong.txt"));
     CHECK(wrong.exit_code == 1);
     CHECK_THAT(wrong.out, Catch::Contains("4.5578117"));
@@ -191,10 +197,12 @@ TEST_CASE("worksheet and answers in float, and qualified answers", "[lesson][pre
     CHECK_THAT(precision_sheet.out, Catch::Contains("delta_g@float,geometric = "));
     const float g = geometric_delta(8, 3, 4, 10000.0f, 10000.0f, 1.0f);
     write(dir.file("qualified_right.txt"), "[3,4]\ndelta@float = 0\ndelta_g@float,geometric = " + promyk::real_text(g) + "\n");
-    write(dir.file("qualified_wrong.txt"), "[3,4]\ndelta_g@float,geometric = 0.9687500000097656\n");  // double's
+    // Double's 0.9687500000097656 would be right (more digits than a float holds, nearer the exact value); this is not.
+    write(dir.file("qualified_wrong.txt"), "[3,4]\ndelta_g@float,geometric = 0.9697500000097656\n");
     write(dir.file("qualified_bad.txt"), "delta@floaty = 0\n");
     CHECK(run_promyk("lesson precision --lang en --answers " + dir.file("qualified_right.txt")).exit_code == 0);
     CHECK(run_promyk("lesson precision --lang en --answers " + dir.file("qualified_wrong.txt")).exit_code == 1);
+    // Nothing else to read: the file is refused at its unreadable line.
     const Run bad = run_promyk("lesson precision --lang en --answers " + dir.file("qualified_bad.txt"));
     CHECK(bad.exit_code == 3);
     CHECK_THAT(bad.out, Catch::Contains("qualified_bad.txt: line 1: \"delta@floaty\""));

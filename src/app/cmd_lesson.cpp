@@ -76,9 +76,10 @@ std::optional<Formula> formula_named(const std::string& name) {
 }
 
 // The traces of the pixels in each other setting a qualifier names
-// ({delta@float}, delta@float = … in an answer file), added to view.others once a setting.
+// ({delta@float}, delta@float = … in an answer file), added to view.others once a setting;
+// with `only`, of those pixels alone.
 void trace_settings(LessonView& view, const Scene& scene, const TraceHeader& header, const std::vector<std::string>& qualifiers,
-                    int spp) {
+                    int spp, const std::set<std::pair<int, int>>* only = nullptr) {
     const TraceHeader& own = view.traces.front().header;
     std::set<std::pair<std::string, std::string>> done;
     for (const PixelTrace& other : view.others) done.emplace(other.header.real, other.header.formula);
@@ -88,7 +89,8 @@ void trace_settings(LessonView& view, const Scene& scene, const TraceHeader& hea
         const std::unique_ptr<Kernel> kernel = make_kernel(scene, *real_type_named(real), *formula_named(formula), spp);
         std::set<std::pair<int, int>> traced;
         for (const PixelTrace& trace : view.traces)
-            if (traced.emplace(trace.header.i, trace.header.j).second)
+            if ((only == nullptr || only->count({trace.header.i, trace.header.j}) > 0) &&
+                traced.emplace(trace.header.i, trace.header.j).second)
                 view.others.push_back(kernel->trace(header, trace.header.i, trace.header.j));
     }
 }
@@ -169,8 +171,15 @@ std::vector<std::string> lesson_names(const LessonLibrary& library, Language lan
 int run_answers(const LessonOptions& options, LessonView& view, const Kernel& kernel, const Scene& scene, const TraceHeader& header) {
     const std::string shown = options.answers == "-" ? "(stdin)" : options.answers;
     const LessonPixel first{view.traces.front().header.i, view.traces.front().header.j};
-    const std::vector<PixelAnswers> answers = parse_answers(cli::read_input_file(options.answers, "--answers reads"), shown, view.vocabulary,
-                                                            view.lesson.language, first, view.w, header.scene_hash, true);
+    // A bad line makes that answer unreadable, the rest are checked; a fraction is a number.
+    AnswerLimits limits;
+    limits.w = view.w;
+    limits.scene_hash = header.scene_hash;
+    limits.settings = true;
+    limits.forgiving = true;
+    limits.keys = lesson_keys(view.lesson, view.vocabulary);
+    const std::vector<PixelAnswers> answers = read_answers(cli::read_input_file(options.answers, "--answers reads"), shown,
+                                                           view.vocabulary, view.lesson.language, first, limits).pixels;
     // A heading may name a pixel the lesson did not choose: it is traced too.
     std::set<std::pair<int, int>> traced;
     for (const PixelTrace& trace : view.traces) traced.emplace(trace.header.i, trace.header.j);
@@ -180,11 +189,25 @@ int run_answers(const LessonOptions& options, LessonView& view, const Kernel& ke
     // Every pixel in every setting the answers or the lesson name (delta@float = …).
     std::vector<std::string> qualifiers;
     for (const PixelAnswers& pixel : answers)
-        for (const Answer& answer : pixel.answers) qualifiers.push_back(split_settings(answer.key).second);
+        for (const Answer& answer : pixel.answers)
+            if (answer.unreadable.empty()) qualifiers.push_back(split_settings(answer.key).second);
     for (const SettingsUse& use : settings_used(view.lesson)) qualifiers.push_back(use.settings);
     view.others.clear();
     trace_settings(view, scene, header, qualifiers, kernel.spp());
-    const std::vector<AnswerCheck> checks = check_answers(answers, view.traces, view.others);
+    std::vector<AnswerCheck> checks = check_answers(answers, view.traces, view.others);
+    // A fraction or a number with more digits than the type holds, wrong against the computed value
+    // alone, is judged against the exact value: the same pixel and formula in quad, traced only for these.
+    std::vector<std::string> exact;
+    std::set<std::pair<int, int>> exact_pixels;
+    for (const AnswerCheck& check : checks)
+        if (check.needs_exact) {
+            exact.push_back(exact_settings(split_settings(check.answer.key).second));
+            exact_pixels.emplace(check.pixel.i, check.pixel.j);
+        }
+    if (!exact.empty()) {
+        trace_settings(view, scene, header, exact, kernel.spp(), &exact_pixels);
+        checks = check_answers(answers, view.traces, view.others);
+    }
     print(message(view.lesson.language, "answers_heading",
                   {{"file", shown}, {"lesson", view.lesson.header.name}, {"scene", view.scene_name}, {"w", std::to_string(view.w)},
                    {"pane", pane_phrase(view.w)}}) +

@@ -5,7 +5,10 @@
 // has several pixels; or a flat JSON object {"C": 6.4}, or a whole trace as
 // `promyk trace --format json` prints it. Numbers are kept as typed: an answer
 // is right when it equals the trace's value rounded (halves away from zero)
-// to the digits the student wrote, compared exactly in decimal.
+// to the digits the student wrote, compared exactly in decimal; or, with more
+// digits than the run's type holds, or as a fraction (1/2), when it lies at
+// least as near the exact value (the same pixel and formula in quad) as the
+// computed value does.
 #pragma once
 
 #include <optional>
@@ -24,6 +27,10 @@ namespace promyk {
 // '-', '−' (U+2212) or '–', an optional exponent (1.5e-3). Nothing if it is not one.
 std::optional<TypedNumber> parse_typed_number(std::string_view text);
 
+// The most bytes an answer file may have: a lesson of 10^5 pixels, every
+// number of each, fits many times over.
+constexpr std::size_t max_answer_bytes = 64u << 20;
+
 // The value rounded half away from zero to `scale` decimals, as the digits of
 // ±N (N × 10^-scale), exactly: the double's binary value is expanded in full.
 TypedNumber round_exactly(double value, int scale);
@@ -32,13 +39,28 @@ TypedNumber round_exactly(double value, int scale);
 std::string typed_number_text(const TypedNumber& number, Language language);
 
 enum class Verdict {
-    right,        // equals the value rounded to the digits written
+    right,        // equals the value rounded to the digits written (a fraction: equals the value)
+    right_more_digits,  // more digits than the run's type holds, at least as near the exact value as the computed one
+    right_nearer,       // a fraction at least as near the exact value as the computed one
     wrong_way,    // the other neighbour: rounded down where it rounds up, or up where it rounds down
     wrong,
     not_reached,  // the pixel's computation never reached this value (t for a miss)
     wrong_shape,  // three numbers for a single number, or one for a point or vector
     blank,        // "key =" with nothing after it: not answered
+    unreadable,   // a line the checker cannot read (Answer::unreadable says why)
 };
+
+// The significant digits `real` (float, double, long-double, quad) holds
+// faithfully (std::numeric_limits<T>::digits10): typed beyond them, a
+// number is judged by its distance to the exact value.
+int digits_held(const std::string& real);
+
+// Significant digits as typed: "0,0120" has 3, "1.3667504955662156" 17.
+int significant_digits(const TypedNumber& number);
+
+// The settings qualifier of the exact value of a key in `settings` ("",
+// "float", "geometric"): the same formula in quad ("quad", "quad,geometric").
+std::string exact_settings(const std::string& settings);
 
 // `typed` against the exact value: right, wrong_way or wrong; `expected` is
 // the value at the student's precision.
@@ -51,7 +73,11 @@ struct Answer {
     std::string key;     // a vocabulary key
     char component = 0;  // key.x, key.y, key.z
     std::string text;    // as typed (trimmed)
-    std::vector<TypedNumber> numbers;  // 1, or 3 for a point or vector; empty: blank
+    std::vector<TypedNumber> numbers;  // 1, or 3 for a point or vector; empty: blank (a fraction's numerator)
+    // Each number's denominator when one is a fraction ("1/2", "−3/4"); empty: no fractions.
+    std::vector<TypedNumber> over;
+    std::string pointer;     // JSON: where the answer stands ("/C")
+    std::string unreadable;  // not empty: why the answer cannot be read (then key may be empty, text is the line)
     // From a whole trace of a non-double type: each number's real_text (the
     // value's text in its own type), beside `numbers` (its double value).
     std::vector<std::string> real_text;
@@ -93,6 +119,14 @@ struct AnswerLimits {
     // A lesson's answers may qualify a key with other settings ("delta@float",
     // lesson.hpp); `promyk diff`'s may not.
     bool settings = false;
+    // A lesson's reader forgives: a bad line (unknown key, not a number,
+    // a key given twice, ...) is an unreadable answer and the rest are read;
+    // fractions are numbers. Without it (`promyk diff`) the first fault is an
+    // InputError. A forgiving read refuses (InputError) only a file that is not
+    // UTF-8, is larger than max_answer_bytes, is broken JSON, or has no readable answer.
+    bool forgiving = false;
+    // The lesson's own keys (lesson_check.hpp: lesson_keys), named with the nearest when a key is unknown.
+    std::vector<std::string> keys;
 };
 
 // Reads an answer file: `key = value` lines, a flat JSON object or a whole
@@ -113,6 +147,11 @@ struct AnswerCheck {
     Answer answer;
     Verdict verdict = Verdict::right;
     std::vector<TypedNumber> expected;  // at the student's precision, one per number typed
+    // Judged wrong with no exact value at hand (`others` had no quad trace of
+    // the pixel), where the exact value could make it right: a fraction, or
+    // more digits than the type holds. Tracing the pixel in quad (exact_settings)
+    // and checking again settles it; only these need the quad trace.
+    bool needs_exact = false;
 };
 
 // Checks each answer against the trace of its pixel (`traces` must hold one

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 
 #include "lesson/lesson_render.hpp"
 #include "trace/messages.hpp"
@@ -173,6 +174,32 @@ void check_lesson(const Lesson& lesson, const Vocabulary& vocabulary, std::vecto
             });
         }
     }
+}
+
+std::vector<std::string> lesson_keys(const Lesson& lesson, const Vocabulary& vocabulary) {
+    std::vector<std::string> out;
+    std::set<std::string> seen;
+    const auto add = [&](const std::string& qualified) {
+        std::string path = split_settings(qualified).first;
+        // P.x: the key is P.
+        if (path.size() > 2 && path[path.size() - 2] == '.' && std::string_view("xyz").find(path.back()) != std::string_view::npos)
+            path.resize(path.size() - 2);
+        const VocabularyEntry* entry = vocabulary.find(path_key(path));
+        if (entry == nullptr || entry->kind == "word" || is_scene_value(path)) return;
+        if (seen.insert(qualified).second) out.push_back(qualified);
+    };
+    for (const LessonStep& step : lesson.steps) {
+        for (const LessonPart& part : step.parts) {
+            if (part.kind == PartKind::values) {
+                for (const std::string& key : part.keys) add(key);
+                continue;
+            }
+            for (const Placeholder& placeholder : find_placeholders(part.text))
+                if (placeholder.valid && !placeholder.symbol && !(placeholder.path == placeholder.name && is_special(placeholder.name)))
+                    add(qualified_path(placeholder));
+        }
+    }
+    return out;
 }
 
 std::vector<SettingsUse> settings_used(const Lesson& lesson) {

@@ -49,6 +49,12 @@ struct SettingsUse {
 // Every settings qualifier in the lesson's value tables and placeholders, in order.
 std::vector<SettingsUse> settings_used(const Lesson& lesson);
 
+// The keys a lesson asks for (a worksheet's blanks): its placeholders and
+// value tables' keys that are pixel numbers, not the scene's values, words,
+// symbols or {i}, {j}, {w}, {branch}; qualified ("delta@float", "P.x"), each
+// once, in order. An answer file's unknown key is told these.
+std::vector<std::string> lesson_keys(const Lesson& lesson, const Vocabulary& vocabulary);
+
 // Every lesson exists in every language, with the same steps in the same order.
 void check_translations(const std::vector<Lesson>& lessons, std::vector<LessonProblem>& problems);
 

@@ -175,6 +175,23 @@ TypedNumber absolute_difference(const TypedNumber& a, const TypedNumber& b) {
     return out;
 }
 
+TypedNumber multiply(const TypedNumber& a, const TypedNumber& b) {
+    const std::string x = strip_zeros(a.digits), y = strip_zeros(b.digits);
+    std::vector<int> sum(x.size() + y.size(), 0);
+    for (std::size_t p = x.size(); p-- > 0;)
+        for (std::size_t q = y.size(); q-- > 0;) sum[p + q + 1] += (x[p] - '0') * (y[q] - '0');
+    for (std::size_t k = sum.size(); k-- > 1;) {
+        sum[k - 1] += sum[k] / 10;
+        sum[k] %= 10;
+    }
+    TypedNumber out;
+    for (const int digit : sum) out.digits += static_cast<char>('0' + digit);
+    out.digits = strip_zeros(out.digits);
+    out.scale = a.scale + b.scale;
+    out.negative = a.negative != b.negative && out.digits != "0";
+    return out;
+}
+
 quad to_quad(const TypedNumber& number) {
     const std::string text = (number.negative ? "-" : "") + strip_zeros(number.digits) + "e" + std::to_string(-number.scale);
     return strtoflt128(text.c_str(), nullptr);

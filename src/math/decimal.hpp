@@ -37,6 +37,9 @@ std::string strip_zeros(const std::string& digits);
 // |a − b|, exactly.
 TypedNumber absolute_difference(const TypedNumber& a, const TypedNumber& b);
 
+// a × b, exactly (a fraction's denominator times a value).
+TypedNumber multiply(const TypedNumber& a, const TypedNumber& b);
+
 // −1, 0 or 1 as |a| is less than, equal to or greater than |b|.
 int compare_magnitude(const TypedNumber& a, const TypedNumber& b);
 

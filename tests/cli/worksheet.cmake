@@ -14,3 +14,11 @@ promyk_cli_test(lesson_answers_missing ARGS lesson sphere --answers missing.txt 
 # Files a student writes: right, wrong, malformed, JSON.
 add_test(NAME cli.worksheet_answers COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cli/worksheet_test.sh $<TARGET_FILE:promyk>
                                             ${CMAKE_CURRENT_BINARY_DIR}/cli/worksheet_answers)
+
+# A bad line is one unreadable answer (exit 1, the rest checked); a file with no readable answer is refused (exit 3).
+promyk_cli_test(lesson_answers_unreadable ARGS lesson sphere --lang en
+                --answers ${CMAKE_CURRENT_SOURCE_DIR}/cli/lesson/answers_mixed.txt EXIT 1
+                STDOUT "✓ E·S \\(C\\) = 6,4: right.*✗ line 4: detla = 4,5578: unreadable: unknown key 'detla';.*'delta'\\?.*Unreadable: 3\\.")
+promyk_cli_test(lesson_answers_nothing_readable ARGS lesson sphere --lang pl
+                --answers ${CMAKE_CURRENT_SOURCE_DIR}/cli/lesson/answers_typos.txt EXIT 3
+                STDERR "answers_typos.txt: linia 2: nieznany klucz „detla”; czy chodziło o „delta”\\?.*w pliku nie ma żadnej czytelnej odpowiedzi")

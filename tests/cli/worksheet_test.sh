@@ -1,11 +1,14 @@
 #!/bin/sh
 # promyk lesson --answers FILE with the files a student would write: all
-# right (exit 0), one wrong (exit 1, named), malformed (exit 3 with the line),
-# JSON; and a worksheet's own form filled in from its key.
+# right (exit 0), one wrong (exit 1, named), unreadable lines (exit 1, each
+# marked), nothing readable or not UTF-8 (exit 3 with the line), fractions,
+# more digits than a double holds, JSON; and a worksheet's own form filled in from its key.
 # usage: worksheet_test.sh PROMYK WORKDIR
 set -u
 promyk=$1 dir=$2
 . "$(dirname "$0")/lib.sh"
+# The report with each long line joined again (it goes on, indented by four, on the next).
+joined() { awk '/^    /{ sub(/^ +/, ""); printf " %s", $0; next } NR > 1 { print "" } { printf "%s", $0 } END { print "" }' "$1"; }
 
 cat >right.txt <<'END'
 # pixel (3, 4), Polish and English styles mixed
@@ -35,13 +38,43 @@ printf '[0,0]\nt = 1,2\n' >miss.txt
 "$promyk" lesson sphere --lang en --answers miss.txt >out.txt 2>err.txt; code=$?
 [ "$code" = 1 ] && grep -q "✗ t = 1,2: pixel (0, 0) has no such value" out.txt && ok || bad "t of a miss: exit $code; $(cat out.txt)"
 
+# A bad line is one unreadable answer: the rest are checked, exit 1.
 printf 'C = 6,4\n\n# a point with decimal commas needs semicolons\nP = (0,132, 0,132, 2,116)\n' >malformed.txt
-"$promyk" lesson sphere --lang en --pixel 3,4 --answers malformed.txt >out.txt 2>err.txt; code=$?
-[ "$code" = 3 ] && grep -q "^promyk: malformed.txt: line 4: " err.txt && [ ! -s out.txt ] && ok ||
-  bad "malformed: exit $code; $(cat err.txt)"
+"$promyk" lesson sphere --lang en --pixel 3,4 --answers malformed.txt >wrapped.txt 2>err.txt; code=$?
+joined wrapped.txt >out.txt
+[ "$code" = 1 ] && grep -q "✓ E·S (C) = 6,4: right" out.txt &&
+  grep -q '✗ line 4: P = (0,132, 0,132, 2,116): unreadable: "(0,132, 0,132, 2,116)" is not a number' out.txt &&
+  grep -q "Unreadable: 1\.$" out.txt && [ ! -s err.txt ] && ok ||
+  bad "malformed: exit $code; $(cat out.txt err.txt)"
 printf 'C = 6,4\nEPS = 1\n' >unknown.txt
-"$promyk" lesson sphere --lang pl --pixel 3,4 --answers unknown.txt >out.txt 2>err.txt; code=$?
-[ "$code" = 3 ] && grep -q "^promyk: unknown.txt: linia 2: nieznany klucz „EPS”" err.txt && ok || bad "unknown key: exit $code; $(cat err.txt)"
+"$promyk" lesson sphere --lang pl --pixel 3,4 --answers unknown.txt >wrapped.txt 2>err.txt; code=$?
+joined wrapped.txt >out.txt
+[ "$code" = 1 ] && grep -q "✗ linia 2: EPS = 1: nieczytelne: nieznany klucz „EPS”; czy chodziło o „.*”? Klucze tej lekcji: .*delta" out.txt &&
+  ! grep -q "t_plane" out.txt && ok || bad "unknown key: exit $code; $(cat out.txt err.txt)"
+# One right, one unknown key, one key given twice, one wrong: each marked.
+printf '[3,4]\nC = 6,4\ndetla = 4,5578\nt = 1.058\nt = 1,06\nEE = 9\n' >mixed.txt
+"$promyk" lesson sphere --lang en --answers mixed.txt >wrapped.txt 2>err.txt; code=$?
+joined wrapped.txt >out.txt
+[ "$code" = 1 ] && grep -q "✓ E·S (C) = 6,4: right" out.txt &&
+  grep -q "✗ line 3: detla = 4,5578: unreadable: unknown key 'detla'; did you mean 'delta'? This lesson's keys: " out.txt &&
+  grep -q "✗ line 4: t = 1.058: unreadable: \"t\" for pixel (3, 4) is given more than once (lines 4, 5)" out.txt &&
+  grep -q "✗ line 5: t = 1,06: unreadable: " out.txt && grep -q "✗ |E|² (EE) = 9: wrong" out.txt &&
+  grep -q "^Right: 1 of 5; wrong: 1; left blank: 0. Unreadable: 3.$" out.txt && ok ||
+  bad "mixed: exit $code; $(cat out.txt err.txt)"
+# Nothing readable, or not text: the file is refused (exit 3, with the line).
+printf '# only typos\ndetla = 4,5578\n' >typos.txt
+"$promyk" lesson sphere --lang en --answers typos.txt >out.txt 2>err.txt; code=$?
+[ "$code" = 3 ] && grep -q "^promyk: typos.txt: line 2: unknown key 'detla'; did you mean 'delta'?.*no answer in the file can be read" err.txt &&
+  [ ! -s out.txt ] && ok || bad "nothing readable: exit $code; $(cat out.txt err.txt)"
+printf 'C = 6,4\n# caf\351\n' >latin1.txt
+"$promyk" lesson sphere --lang en --answers latin1.txt >out.txt 2>err.txt; code=$?
+[ "$code" = 3 ] && grep -q "^promyk: latin1.txt: line 2: the file is not UTF-8 text" err.txt && ok ||
+  bad "not UTF-8: exit $code; $(cat out.txt err.txt)"
+# Fractions, and more digits than a double holds (t of pixel (5, 1) is 1.36675049556621551840... exactly).
+printf '[3,4]\nE.x = 1/8\nE = (1/8; 0,125; 4/2)\n[5,1]\nE.y = \342\210\2223/8\nt = 1.3667504955662156\n' >exact.txt
+"$promyk" lesson sphere --lang en --answers exact.txt >out.txt 2>err.txt; code=$?
+[ "$code" = 0 ] && grep -q "✓ t = 1.3667504955662156: right, and more digits than a double holds" out.txt &&
+  grep -q "^Right: 4 of 4" out.txt && ok || bad "fractions and digits: exit $code; $(cat out.txt err.txt)"
 
 # JSON: a flat object, and a whole trace as promyk trace prints it.
 printf '{"C": 6.40, "delta": "4,5578", "P": [0.132, 0.132, 2.116]}\n' >flat.json

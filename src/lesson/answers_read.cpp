@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <set>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -22,52 +23,6 @@ namespace {
 
 constexpr int max_typed_scale = 1100;
 
-// --- exact decimals (math/decimal.hpp) ---------------------------------
-
-std::string plus_one(std::string digits) {
-    for (std::size_t k = digits.size(); k-- > 0;) {
-        if (digits[k] != '9') {
-            ++digits[k];
-            return digits;
-        }
-        digits[k] = '0';
-    }
-    return "1" + digits;
-}
-
-struct Rounded {
-    TypedNumber nearest;               // halves away from zero
-    std::optional<TypedNumber> other;  // the other neighbour, when the value is not exact at this scale
-};
-
-Rounded round_to(const TypedNumber& exact, int scale) {
-    std::string digits = exact.digits;
-    const int exact_scale = exact.scale;
-    Rounded out;
-    out.nearest.negative = exact.negative;
-    out.nearest.scale = scale;
-    if (scale >= exact_scale) {
-        out.nearest.digits = digits + std::string(static_cast<std::size_t>(scale - exact_scale), '0');
-        return out;
-    }
-    const std::size_t drop = static_cast<std::size_t>(exact_scale - scale);
-    if (digits.size() < drop + 1) digits.insert(0, drop + 1 - digits.size(), '0');
-    const std::string kept = digits.substr(0, digits.size() - drop);
-    const std::string rest = digits.substr(digits.size() - drop);
-    const bool up = rest[0] >= '5';
-    out.nearest.digits = up ? plus_one(kept) : kept;
-    if (rest.find_first_not_of('0') != std::string::npos) {
-        out.other = out.nearest;
-        out.other->digits = up ? kept : plus_one(kept);
-    }
-    return out;
-}
-
-bool same_number(const TypedNumber& a, const TypedNumber& b) {
-    const std::string x = strip_zeros(a.digits), y = strip_zeros(b.digits);
-    return x == y && (x == "0" || a.negative == b.negative);
-}
-
 // --- reading what a student typed -----------------------------------------
 
 // The message quotes what the student typed: printable() here, since a NUL
@@ -80,31 +35,78 @@ bool same_number(const TypedNumber& a, const TypedNumber& b) {
     throw InputError(file, printable(pointer), printable(what));
 }
 
+// The numbers of one value: numerators, and denominators where one is a
+// fraction (empty digits where none is).
+struct ValueRead {
+    std::vector<TypedNumber> numbers;
+    std::vector<TypedNumber> over;
+};
+
+// "6,4" or, with `fractions`, "−3/4" (the denominator's sign moves to the
+// numerator; a zero denominator is no number).
+bool parse_component(const std::string& text, bool fractions, ValueRead& out) {
+    const std::size_t slash = fractions ? text.find('/') : std::string::npos;
+    if (slash == std::string::npos) {
+        const std::optional<TypedNumber> number = parse_typed_number(text);
+        if (!number) return false;
+        out.numbers.push_back(*number);
+        out.over.push_back(TypedNumber{false, "", 0});
+        return true;
+    }
+    std::optional<TypedNumber> p = parse_typed_number(trim(text.substr(0, slash)));
+    const std::optional<TypedNumber> q = parse_typed_number(trim(text.substr(slash + 1)));
+    if (!p || !q || is_zero(*q)) return false;
+    p->negative = p->negative != q->negative;
+    out.numbers.push_back(*p);
+    out.over.push_back(TypedNumber{false, q->digits, q->scale});
+    return true;
+}
+
 // "6,4" -> one number; "(0,1; 0,2; 3)", "[0.1, 0.2, 3]" -> three. Nothing if malformed.
-std::optional<std::vector<TypedNumber>> parse_value(const std::string& text) {
-    if (text.empty()) return std::vector<TypedNumber>{};
+std::optional<ValueRead> parse_value(const std::string& text, bool fractions) {
+    ValueRead out;
+    if (text.empty()) return out;
     if (text.front() == '(' || text.front() == '[') {
         if (text.size() < 2 || (text.back() != ')' && text.back() != ']')) return std::nullopt;
         const std::string inner = text.substr(1, text.size() - 2);
         // With a semicolon the commas are decimal commas; without one, commas separate.
         const char separator = inner.find(';') != std::string::npos ? ';' : ',';
-        std::vector<TypedNumber> numbers;
         std::size_t at = 0;
         while (true) {
             const std::size_t end = inner.find(separator, at);
-            const std::optional<TypedNumber> number =
-                parse_typed_number(trim(inner.substr(at, end == std::string::npos ? std::string::npos : end - at)));
-            if (!number) return std::nullopt;
-            numbers.push_back(*number);
+            if (out.numbers.size() == 3 ||
+                !parse_component(trim(inner.substr(at, end == std::string::npos ? std::string::npos : end - at)), fractions, out))
+                return std::nullopt;
             if (end == std::string::npos) break;
             at = end + 1;
         }
-        if (numbers.size() != 3) return std::nullopt;
-        return numbers;
+        if (out.numbers.size() != 3) return std::nullopt;
+    } else if (!parse_component(text, fractions, out)) {
+        return std::nullopt;
     }
-    const std::optional<TypedNumber> number = parse_typed_number(text);
-    if (!number) return std::nullopt;
-    return std::vector<TypedNumber>{*number};
+    // No fraction: no denominators at all.
+    if (std::all_of(out.over.begin(), out.over.end(), [](const TypedNumber& q) { return q.digits.empty(); })) out.over.clear();
+    return out;
+}
+
+// Edits (insertions, deletions, substitutions) from a to b, in halves: a
+// letter of the other case is half an edit, so "detla" is nearer "delta"
+// than "Delta".
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+    const auto lower = [](char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; };
+    const auto substitution = [&](char x, char y) -> std::size_t { return x == y ? 0 : lower(x) == lower(y) ? 1 : 2; };
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t k = 0; k <= b.size(); ++k) row[k] = 2 * k;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = 2 * i;
+        for (std::size_t k = 1; k <= b.size(); ++k) {
+            const std::size_t above = row[k];
+            row[k] = std::min({row[k] + 2, row[k - 1] + 2, diagonal + substitution(a[i - 1], b[k - 1])});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
 }
 
 std::string keys_list(const Vocabulary& vocabulary) {
@@ -134,11 +136,23 @@ std::optional<std::pair<std::string, char>> split_key(const std::string& qualifi
 }
 
 // The message for a key split_key refused: a bad settings qualifier, or an unknown key.
-std::string key_error(const std::string& key_text, const Vocabulary& vocabulary, Language language, bool settings_allowed) {
-    if (settings_allowed && key_text.find('@') != std::string::npos &&
+// A lesson's reader names the lesson's own keys and the nearest of them
+// (a typo, "detla"), not the whole vocabulary.
+std::string key_error(const std::string& key_text, const Vocabulary& vocabulary, Language language, const AnswerLimits& limits) {
+    if (limits.settings && key_text.find('@') != std::string::npos &&
         !parse_settings(split_settings(key_text).second))
         return message(language, "answers_error_settings", {{"key", key_text}});
-    return message(language, "answers_error_key", {{"key", key_text}, {"keys", keys_list(vocabulary)}});
+    if (limits.keys.empty())
+        return message(language, "answers_error_key", {{"key", key_text}, {"keys", keys_list(vocabulary)}});
+    std::string keys;
+    const std::string* nearest = nullptr;
+    std::size_t best = 0;
+    for (const std::string& key : limits.keys) {
+        keys += (keys.empty() ? "" : ", ") + key;
+        const std::size_t distance = edit_distance(key_text.substr(0, 200), key);
+        if (nearest == nullptr || distance < best) nearest = &key, best = distance;
+    }
+    return message(language, "answers_error_key_lesson", {{"key", key_text}, {"nearest", *nearest}, {"keys", keys}});
 }
 
 // A word (what a test found, the nearest object) is shown filled in on a
@@ -156,6 +170,27 @@ PixelAnswers& section(std::vector<PixelAnswers>& sections, std::map<std::pair<in
     return sections[it->second];
 }
 
+// Where `text` first is not well-formed UTF-8 (an overlong form, a
+// surrogate, beyond U+10FFFF, a cut sequence), or npos.
+std::size_t invalid_utf8(std::string_view text) {
+    for (std::size_t k = 0; k < text.size();) {
+        const auto byte = [&](std::size_t at) { return at < text.size() ? static_cast<unsigned char>(text[at]) : 0u; };
+        const unsigned lead = byte(k);
+        std::size_t length = lead < 0x80 ? 1 : lead >= 0xC2 && lead <= 0xDF ? 2 : lead >= 0xE0 && lead <= 0xEF ? 3
+                             : lead >= 0xF0 && lead <= 0xF4 ? 4 : 0;
+        if (length == 0) return k;
+        for (std::size_t c = 1; c < length; ++c)
+            if ((byte(k + c) & 0xC0u) != 0x80u) return k;
+        // The second byte's range rules out overlong forms, surrogates and code points past U+10FFFF.
+        const unsigned second = byte(k + 1);
+        if ((lead == 0xE0 && second < 0xA0) || (lead == 0xED && second > 0x9F) || (lead == 0xF0 && second < 0x90) ||
+            (lead == 0xF4 && second > 0x8F))
+            return k;
+        k += length;
+    }
+    return std::string_view::npos;
+}
+
 // "[3,4]", "[ 3, 4 ]" -> the pixel.
 std::optional<LessonPixel> parse_heading(const std::string& line) {
     if (line.size() < 5 || line.front() != '[' || line.back() != ']') return std::nullopt;
@@ -171,11 +206,33 @@ std::optional<LessonPixel> parse_heading(const std::string& line) {
     return LessonPixel{*i, *j};
 }
 
+// Forgiving: every readable answer of a pixel whose key is given more than
+// once is unreadable, each saying where the others are (which one counts?).
+void mark_repeated(std::vector<PixelAnswers>& sections, Language language) {
+    for (PixelAnswers& section : sections) {
+        std::map<std::pair<std::string, char>, std::vector<Answer*>> by_key;
+        for (Answer& answer : section.answers)
+            if (answer.unreadable.empty()) by_key[{answer.key, answer.component}].push_back(&answer);
+        for (const auto& [key, given] : by_key) {
+            if (given.size() < 2) continue;
+            std::string lines;
+            for (const Answer* answer : given) lines += (lines.empty() ? "" : ", ") + std::to_string(answer->line);
+            const auto [path, settings] = split_settings(key.first);
+            for (Answer* answer : given)
+                answer->unreadable = message(language, "answers_error_repeated",
+                                             {{"key", qualified_path(path, key.second, settings)}, {"lines", lines},
+                                              {"i", std::to_string(section.pixel.i)}, {"j", std::to_string(section.pixel.j)}});
+        }
+    }
+}
+
 std::vector<PixelAnswers> parse_lines(std::string_view text, const std::string& file, const Vocabulary& vocabulary,
-                                      Language language, LessonPixel first, int w, bool settings_allowed) {
+                                      Language language, LessonPixel first, const AnswerLimits& limits) {
+    const int w = limits.w;
     std::vector<PixelAnswers> sections;
     std::map<std::pair<int, int>, std::size_t> index;
     LessonPixel pixel = first;
+    int bad_heading = 0;  // forgiving: the unreadable heading the lines below stand under
     int line_number = 0;
     std::size_t at = 0;
     while (at < text.size()) {
@@ -186,41 +243,74 @@ std::vector<PixelAnswers> parse_lines(std::string_view text, const std::string& 
         if (const std::size_t hash = raw.find('#'); hash != std::string_view::npos) raw = raw.substr(0, hash);
         const std::string line = trim(raw);
         if (line.empty()) continue;
+        // A line that cannot be read: a strict read's fault; a forgiving
+        // read's unreadable answer, under the pixel it stands under.
+        const auto unreadable = [&](const std::string& why) {
+            if (!limits.forgiving) fail(file, language, line_number, why);
+            Answer answer;
+            answer.line = line_number;
+            answer.text = printable(line);
+            answer.unreadable = printable(why);
+            section(sections, index, pixel).answers.push_back(std::move(answer));
+        };
         const std::size_t equals = line.find('=');
         if (equals == std::string::npos) {
-            if (line.front() != '[') fail(file, language, line_number, message(language, "answers_error_line"));
+            if (line.front() != '[') {
+                unreadable(message(language, "answers_error_line"));
+                continue;
+            }
             const std::optional<LessonPixel> heading = parse_heading(line);
-            if (!heading) fail(file, language, line_number, message(language, "answers_error_heading", {{"text", line}}));
-            if (w > 0 && (heading->i >= w || heading->j >= w))
-                fail(file, language, line_number,
-                     message(language, "answers_error_outside",
-                             {{"i", std::to_string(heading->i)}, {"j", std::to_string(heading->j)}, {"w", std::to_string(w)}}));
+            if (!heading || (w > 0 && (heading->i >= w || heading->j >= w))) {
+                bad_heading = line_number;
+                unreadable(!heading ? message(language, "answers_error_heading", {{"text", line}})
+                                    : message(language, "answers_error_outside",
+                                              {{"i", std::to_string(heading->i)}, {"j", std::to_string(heading->j)},
+                                               {"w", std::to_string(w)}}));
+                continue;
+            }
             pixel = *heading;
+            bad_heading = 0;
             section(sections, index, pixel);
             continue;
         }
+        if (bad_heading > 0) {
+            unreadable(message(language, "answers_error_under_heading", {{"line", std::to_string(bad_heading)}}));
+            continue;
+        }
         const std::string key_text = trim(line.substr(0, equals));
-        const std::optional<std::pair<std::string, char>> key = split_key(key_text, vocabulary, settings_allowed);
-        if (!key) fail(file, language, line_number, key_error(key_text, vocabulary, language, settings_allowed));
-        if (is_word(key->first, vocabulary))
-            fail(file, language, line_number, message(language, "answers_error_word", {{"key", key_text}}));
+        const std::optional<std::pair<std::string, char>> key = split_key(key_text, vocabulary, limits.settings);
+        if (!key) {
+            unreadable(key_error(key_text, vocabulary, language, limits));
+            continue;
+        }
+        if (is_word(key->first, vocabulary)) {
+            unreadable(message(language, "answers_error_word", {{"key", key_text}}));
+            continue;
+        }
         Answer answer;
         answer.line = line_number;
         answer.key = key->first;
         answer.component = key->second;
         answer.text = trim(line.substr(equals + 1));
-        const std::optional<std::vector<TypedNumber>> numbers = parse_value(answer.text);
-        if (!numbers) fail(file, language, line_number, message(language, "answers_error_number", {{"text", answer.text}}));
-        answer.numbers = *numbers;
+        std::optional<ValueRead> value = parse_value(answer.text, limits.forgiving);
+        if (!value) {
+            unreadable(message(language, limits.forgiving ? "answers_error_number_fraction" : "answers_error_number",
+                               {{"text", answer.text}}));
+            continue;
+        }
+        answer.numbers = std::move(value->numbers);
+        answer.over = std::move(value->over);
         PixelAnswers& mine = section(sections, index, pixel);
-        for (const Answer& earlier : mine.answers)
-            if (earlier.key == answer.key && earlier.component == answer.component)
-                fail(file, language, line_number,
-                     message(language, "answers_error_twice",
-                             {{"key", key_text}, {"line", std::to_string(earlier.line)},
-                              {"i", std::to_string(pixel.i)}, {"j", std::to_string(pixel.j)}}));
+        if (!limits.forgiving)
+            for (const Answer& earlier : mine.answers)
+                if (earlier.key == answer.key && earlier.component == answer.component)
+                    fail(file, language, line_number,
+                         message(language, "answers_error_twice",
+                                 {{"key", key_text}, {"line", std::to_string(earlier.line)},
+                                  {"i", std::to_string(pixel.i)}, {"j", std::to_string(pixel.j)}}));
         mine.answers.push_back(std::move(answer));
     }
+    if (limits.forgiving) mark_repeated(sections, language);
     return sections;
 }
 
@@ -242,6 +332,8 @@ struct RawNumbers {
     std::size_t error_position = 0;
     bool too_deep = false;
     std::optional<std::string> twice;  // a key given twice in the top object
+    bool forgiving = false;            // then a key given twice is noted in `repeated`, and reading goes on
+    std::set<std::string> repeated;
 
     json* add(json value) {
         if (stack.empty()) {
@@ -270,7 +362,10 @@ struct RawNumbers {
     }
     bool start_object(std::size_t) { return open(json::object()); }
     bool key(std::string& key) {
-        if (stack.size() == 1 && stack.back()->contains(key)) return twice = key, false;
+        if (stack.size() == 1 && stack.back()->contains(key)) {
+            if (!forgiving) return twice = key, false;
+            repeated.insert(key);
+        }
         return pending_key = key, true;
     }
     bool end_object() { return stack.pop_back(), true; }
@@ -306,20 +401,19 @@ int line_deeper_than(std::string_view text, std::size_t depth) {
 
 std::string pointer_of(const std::string& key) { return (json::json_pointer() / key).to_string(); }
 
-std::optional<std::vector<TypedNumber>> json_value(const json& value) {
+std::optional<ValueRead> json_value(const json& value, bool fractions) {
     if (value.is_string()) {
-        const std::optional<std::vector<TypedNumber>> numbers = parse_value(trim(value.get<std::string>()));
-        if (numbers && numbers->empty()) return std::nullopt;
+        std::optional<ValueRead> numbers = parse_value(trim(value.get<std::string>()), fractions);
+        if (numbers && numbers->numbers.empty()) return std::nullopt;
         return numbers;
     }
     if (value.is_array() && value.size() == 3) {
-        std::vector<TypedNumber> numbers;
-        for (const json& component : value) {
-            if (!component.is_string()) return std::nullopt;
-            const std::optional<TypedNumber> number = parse_typed_number(trim(component.get<std::string>()));
-            if (!number) return std::nullopt;
-            numbers.push_back(*number);
-        }
+        ValueRead numbers;
+        for (const json& component : value)
+            if (!component.is_string() || !parse_component(trim(component.get<std::string>()), fractions, numbers))
+                return std::nullopt;
+        if (std::all_of(numbers.over.begin(), numbers.over.end(), [](const TypedNumber& q) { return q.digits.empty(); }))
+            numbers.over.clear();
         return numbers;
     }
     return std::nullopt;
@@ -339,6 +433,7 @@ AnswerFile parse_json(std::string_view text, const std::string& file, const Voca
                       LessonPixel first, const AnswerLimits& limits) {
     const int w = limits.w;
     RawNumbers builder;
+    builder.forgiving = limits.forgiving;
     if (!json::sax_parse(text, &builder)) {
         if (builder.twice) fail_at(file, pointer_of(*builder.twice), message(language, "answers_error_twice_json", {{"key", *builder.twice}}));
         if (builder.too_deep) fail(file, language, line_deeper_than(text, RawNumbers::max_depth), message(language, "answers_error_deep", {{"depth", std::to_string(RawNumbers::max_depth)}}));
@@ -349,21 +444,38 @@ AnswerFile parse_json(std::string_view text, const std::string& file, const Voca
     const json& root = builder.root;
     PixelAnswers answers{first, {}};
     std::optional<TraceSummary> summary;
+    // An answer that cannot be read: a strict read's fault; a forgiving read's unreadable answer.
+    const auto unreadable = [&](const json& value, const std::string& pointer, const std::string& why) {
+        if (!limits.forgiving) fail_at(file, pointer, why);
+        Answer answer;
+        answer.pointer = printable(pointer);
+        answer.text = printable(json_text_of(value));
+        answer.unreadable = printable(why);
+        answers.answers.push_back(std::move(answer));
+    };
     const auto add = [&](const std::string& key_text, const json& value, const std::string& pointer,
-                         const json& real_text = json()) {
+                         const json& real_text = json(), bool top = false) {
+        if (top && builder.repeated.count(key_text) > 0)
+            return unreadable(value, pointer, message(language, "answers_error_repeated_json", {{"key", key_text}}));
         const std::optional<std::pair<std::string, char>> key = split_key(key_text, vocabulary, limits.settings);
-        if (!key) fail_at(file, pointer, key_error(key_text, vocabulary, language, limits.settings));
-        if (is_word(key->first, vocabulary)) fail_at(file, pointer, message(language, "answers_error_word", {{"key", key_text}}));
-        const std::optional<std::vector<TypedNumber>> numbers = json_value(value);
-        if (!numbers) fail_at(file, pointer, message(language, "answers_error_number", {{"text", json_text_of(value)}}));
+        if (!key) return unreadable(value, pointer, key_error(key_text, vocabulary, language, limits));
+        if (is_word(key->first, vocabulary))
+            return unreadable(value, pointer, message(language, "answers_error_word", {{"key", key_text}}));
+        std::optional<ValueRead> numbers = json_value(value, limits.forgiving);
+        if (!numbers)
+            return unreadable(value, pointer,
+                              message(language, limits.forgiving ? "answers_error_number_fraction" : "answers_error_number",
+                                      {{"text", json_text_of(value)}}));
         Answer answer;
         answer.key = key->first;
         answer.component = key->second;
+        answer.pointer = pointer;
         answer.text = json_text_of(value);
-        answer.numbers = *numbers;
+        answer.numbers = std::move(numbers->numbers);
+        answer.over = std::move(numbers->over);
         // A non-double trace's text of each value in its own type.
-        if (real_text.is_string() && numbers->size() == 1) answer.real_text = {real_text.get<std::string>()};
-        if (real_text.is_array() && real_text.size() == numbers->size() &&
+        if (real_text.is_string() && answer.numbers.size() == 1) answer.real_text = {real_text.get<std::string>()};
+        if (real_text.is_array() && real_text.size() == answer.numbers.size() &&
             std::all_of(real_text.begin(), real_text.end(), [](const json& t) { return t.is_string(); }))
             for (const json& t : real_text) answer.real_text.push_back(t.get<std::string>());
         answers.answers.push_back(std::move(answer));
@@ -450,54 +562,12 @@ AnswerFile parse_json(std::string_view text, const std::string& file, const Voca
         if (root.contains("result") && (root.at("result").is_string() || root.at("result").is_array()))
             add("I_P", root.at("result"), "/result", root.value("result_real_text", json()));
     } else if (root.is_object()) {
-        for (const auto& [key, value] : root.items()) add(key, value, pointer_of(key));
+        for (const auto& [key, value] : root.items()) add(key, value, pointer_of(key), json(), true);
     } else {
         fail(file, language, 1, message(language, "answers_error_json"));
     }
     return {{answers}, summary};
 }
-
-std::string symbol_of(const Vocabulary& vocabulary, const Answer& answer, Language language) {
-    const VocabularyEntry* entry = vocabulary.find(path_key(answer.key));
-    const auto [path, settings] = split_settings(answer.key);
-    std::string symbol = entry ? optional_message(language, "symbol_" + entry->key).value_or(entry->symbol) : path;
-    if (answer.component != 0) symbol += std::string(".") + answer.component;
-    const std::string key = qualified_path(path, answer.component, settings);
-    return symbol == key ? symbol : symbol + " (" + key + ")";
-}
-
-// As the value is written: a point, a vector, a colour (three numbers where
-// one is meant: I_P and a light's contribution in a coloured scene) or one number.
-std::string kind_of(const Vocabulary& vocabulary, const Answer& answer, const std::optional<StepValue>& value) {
-    if (answer.component != 0) return "scalar";
-    const VocabularyEntry* entry = vocabulary.find(path_key(answer.key));
-    const std::string kind = entry ? entry->kind : "scalar";
-    if (value && std::holds_alternative<Vec3d>(*value) && kind != "point" && kind != "vector") return "colour";
-    return kind;
-}
-
-std::string numbers_text(const std::vector<TypedNumber>& numbers, const std::string& kind, Language language) {
-    if (numbers.size() == 1) return typed_number_text(numbers[0], language);
-    std::string out = kind == "point" ? "(" : "[";
-    for (std::size_t k = 0; k < numbers.size(); ++k)
-        out += (k ? (language == Language::pl ? "; " : ", ") : "") + typed_number_text(numbers[k], language);
-    return out + (kind == "point" ? ")" : "]");
-}
-
-// Each pixel's trace, looked up once a check rather than searched for.
-class TraceIndex {
-public:
-    explicit TraceIndex(const std::vector<PixelTrace>& traces) {
-        for (const PixelTrace& trace : traces) index_.emplace(std::make_pair(trace.header.i, trace.header.j), &trace);
-    }
-    const PixelTrace* operator()(LessonPixel pixel) const {
-        const auto it = index_.find({pixel.i, pixel.j});
-        return it == index_.end() ? nullptr : it->second;
-    }
-
-private:
-    std::map<std::pair<int, int>, const PixelTrace*> index_;
-};
 
 }  // namespace
 
@@ -544,48 +614,36 @@ std::optional<TypedNumber> parse_typed_number(std::string_view text) {
     return number;
 }
 
-TypedNumber round_exactly(double value, int scale) { return round_to(exact_decimal(value), scale).nearest; }
-
-std::string typed_number_text(const TypedNumber& number, Language language) {
-    std::string digits = strip_zeros(number.digits);
-    std::string text;
-    if (number.scale <= 0) {
-        text = digits == "0" ? digits : digits + std::string(static_cast<std::size_t>(-number.scale), '0');
-    } else {
-        const std::size_t scale = static_cast<std::size_t>(number.scale);
-        if (digits.size() < scale + 1) digits.insert(0, scale + 1 - digits.size(), '0');
-        text = digits.substr(0, digits.size() - scale) + (language == Language::pl ? "," : ".") + digits.substr(digits.size() - scale);
-    }
-    if (number.negative && strip_zeros(number.digits) != "0") text = (language == Language::pl ? "\u2212" : "-") + text;
-    return text;
-}
-
-Verdict compare_number(double reference, const TypedNumber& typed, TypedNumber& expected) {
-    if (!std::isfinite(reference)) {
-        expected = TypedNumber{};
-        return Verdict::wrong;
-    }
-    return compare_number(exact_decimal(reference), typed, expected);
-}
-
-Verdict compare_number(const TypedNumber& reference, const TypedNumber& typed, TypedNumber& expected) {
-    const Rounded rounded = round_to(reference, typed.scale);
-    expected = rounded.nearest;
-    if (same_number(typed, rounded.nearest)) return Verdict::right;
-    if (rounded.other && same_number(typed, *rounded.other)) return Verdict::wrong_way;
-    return Verdict::wrong;
-}
-
 AnswerFile read_answers(std::string_view text, const std::string& file, const Vocabulary& vocabulary, Language language,
                         LessonPixel first, const AnswerLimits& limits) {
+    if (limits.forgiving) {
+        // What no line can be read from: a file that is too large or not text.
+        if (text.size() > max_answer_bytes)
+            fail(file, language, 0, message(language, "answers_error_size", {{"mib", std::to_string(max_answer_bytes >> 20)}}));
+        if (const std::size_t bad = invalid_utf8(text); bad != std::string_view::npos)
+            fail(file, language, 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(bad), '\n')),
+                 message(language, "answers_error_utf8"));
+    }
     if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // a byte order mark some editors write
     const std::size_t start = text.find_first_not_of(" \t\r\n");
     AnswerFile answers = start != std::string_view::npos && text[start] == '{'
                              ? parse_json(text, file, vocabulary, language, first, limits)
-                             : AnswerFile{parse_lines(text, file, vocabulary, language, first, limits.w, limits.settings), std::nullopt};
-    const bool any = std::any_of(answers.pixels.begin(), answers.pixels.end(), [](const PixelAnswers& pixel) {
-        return std::any_of(pixel.answers.begin(), pixel.answers.end(), [](const Answer& a) { return !a.numbers.empty(); });
-    });
+                             : AnswerFile{parse_lines(text, file, vocabulary, language, first, limits), std::nullopt};
+    const Answer* first_unreadable = nullptr;
+    bool any = false;
+    for (const PixelAnswers& pixel : answers.pixels) {
+        for (const Answer& answer : pixel.answers) {
+            any = any || (answer.unreadable.empty() && !answer.numbers.empty());
+            if (!answer.unreadable.empty() && (first_unreadable == nullptr || answer.line < first_unreadable->line))
+                first_unreadable = &answer;
+        }
+    }
+    if (!any && first_unreadable != nullptr) {
+        // Nothing to check: the file is refused at its first unreadable line.
+        const std::string why = first_unreadable->unreadable + "; " + message(language, "answers_error_nothing_readable");
+        if (!first_unreadable->pointer.empty()) fail_at(file, first_unreadable->pointer, why);
+        fail(file, language, first_unreadable->line, why);
+    }
     if (!any) fail(file, language, 0, message(language, "answers_error_empty"));
     return answers;
 }
@@ -593,133 +651,11 @@ AnswerFile read_answers(std::string_view text, const std::string& file, const Vo
 std::vector<PixelAnswers> parse_answers(std::string_view text, const std::string& file, const Vocabulary& vocabulary,
                                         Language language, LessonPixel first, int w, const std::string& scene_hash,
                                         bool settings) {
-    return read_answers(text, file, vocabulary, language, first, AnswerLimits{w, scene_hash, settings}).pixels;
-}
-
-std::vector<AnswerCheck> check_answers(const std::vector<PixelAnswers>& answers, const std::vector<PixelTrace>& traces,
-                                       const std::vector<PixelTrace>& others) {
-    const Vocabulary& vocabulary = builtin_vocabulary();
-    std::vector<AnswerCheck> checks;
-    const TraceIndex trace_of(traces);
-    for (const PixelAnswers& pixel : answers) {
-        const PixelTrace* trace = trace_of(pixel.pixel);
-        if (trace == nullptr) throw std::logic_error("check_answers: no trace for an answered pixel");
-        std::vector<std::pair<std::size_t, const Answer*>> sorted;
-        for (const Answer& answer : pixel.answers) sorted.emplace_back(derivation_rank(*trace, vocabulary, answer.key), &answer);
-        std::stable_sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-        for (const auto& [rank, answer_of] : sorted) {
-            const Answer& answer = *answer_of;
-            AnswerCheck check{pixel.pixel, answer, Verdict::right, {}};
-            const std::optional<LessonNumber> number = lesson_number(*trace, answer.key, others);
-            const std::optional<StepValue> value = number ? std::optional<StepValue>(number->value) : std::nullopt;
-            // Three numbers for a point, a vector or a colour; one for a number or a component.
-            const bool vector_key = value && std::holds_alternative<Vec3d>(*value);
-            const std::size_t wanted = vector_key && answer.component == 0 ? 3 : 1;
-            if (answer.numbers.empty()) {
-                check.verdict = Verdict::blank;
-            } else if (!value || std::holds_alternative<std::string>(*value)) {
-                check.verdict = Verdict::not_reached;
-            } else if (answer.numbers.size() != wanted || (answer.component != 0 && !vector_key)) {
-                check.verdict = Verdict::wrong_shape;
-            } else {
-                // Each number's exact value in the trace's own type: a double's
-                // binary value, or a float's, long double's or quad's read back
-                // from its exact text.
-                std::vector<LessonNumber> reference;
-                if (vector_key && answer.component == 0)
-                    reference = {component_of(*number, 'x'), component_of(*number, 'y'), component_of(*number, 'z')};
-                else
-                    reference = {component_of(*number, answer.component)};
-                bool any_wrong = false, any_wrong_way = false;
-                for (std::size_t k = 0; k < reference.size(); ++k) {
-                    TypedNumber expected;
-                    const double approximate = std::get<double>(reference[k].value);
-                    std::optional<TypedNumber> exact;
-                    if (!reference[k].real_text.empty() && std::isfinite(approximate)) {
-                        const std::string& real = reference[k].real;
-                        const RealType type = real == "float" ? RealType::float_
-                                              : real == "long-double" ? RealType::long_double
-                                              : real == "quad" ? RealType::quad_ : RealType::double_;
-                        exact = exact_value_of(reference[k].real_text.front(), type);
-                    }
-                    const Verdict verdict = exact ? compare_number(*exact, answer.numbers[k], expected)
-                                                  : compare_number(approximate, answer.numbers[k], expected);
-                    any_wrong = any_wrong || verdict == Verdict::wrong;
-                    any_wrong_way = any_wrong_way || verdict == Verdict::wrong_way;
-                    check.expected.push_back(expected);
-                }
-                check.verdict = any_wrong ? Verdict::wrong : any_wrong_way ? Verdict::wrong_way : Verdict::right;
-            }
-            checks.push_back(std::move(check));
-        }
-    }
-    return checks;
-}
-
-bool all_right(const std::vector<AnswerCheck>& checks) {
-    return std::all_of(checks.begin(), checks.end(),
-                       [](const AnswerCheck& c) { return c.verdict == Verdict::right || c.verdict == Verdict::blank; });
-}
-
-std::string answers_report(const std::vector<AnswerCheck>& checks, const std::vector<PixelTrace>& traces,
-                           const Vocabulary& vocabulary, Language language, const std::vector<PixelTrace>& others) {
-    std::string out;
-    int right = 0, wrong = 0, blank = 0;
-    std::optional<LessonPixel> current;
-    const TraceIndex trace_of(traces);
-    for (const AnswerCheck& check : checks) {
-        const PixelTrace* trace = trace_of(check.pixel);
-        const std::string pixel = message(language, "pixel_label", {{"i", std::to_string(check.pixel.i)}, {"j", std::to_string(check.pixel.j)}});
-        if (!current || current->i != check.pixel.i || current->j != check.pixel.j) {
-            current = check.pixel;
-            const BranchEntry* branch = vocabulary.find_branch(branch_name(trace->branch));
-            out += (out.empty() ? "" : "\n") +
-                   message(language, "answers_pixel",
-                           {{"pixel", pixel},
-                            {"branch", branch ? (language == Language::pl ? branch->pl : branch->en) : std::string(branch_name(trace->branch))}}) +
-                   "\n";
-        }
-        const std::optional<LessonNumber> number = lesson_number(*trace, check.answer.key, others);
-        const std::string kind =
-            kind_of(vocabulary, check.answer, number ? std::optional<StepValue>(number->value) : std::nullopt);
-        MessageArgs args = {{"symbol", symbol_of(vocabulary, check.answer, language)}, {"typed", check.answer.text}, {"pixel", pixel}};
-        std::string id;
-        switch (check.verdict) {
-            case Verdict::right:
-                id = "answers_right";
-                ++right;
-                break;
-            case Verdict::blank:
-                id = "answers_blank";
-                ++blank;
-                break;
-            case Verdict::not_reached:
-                id = "answers_not_reached";
-                ++wrong;
-                break;
-            case Verdict::wrong_shape:
-                id = kind == "scalar" ? "answers_shape_one" : "answers_shape_three";
-                ++wrong;
-                break;
-            case Verdict::wrong:
-            case Verdict::wrong_way: {
-                id = check.verdict == Verdict::wrong ? "answers_wrong" : "answers_wrong_way";
-                ++wrong;
-                const LessonNumber exact = component_of(*number, check.answer.component);
-                const bool finite = std::all_of(check.expected.begin(), check.expected.end(),
-                                                [](const TypedNumber& n) { return !n.digits.empty(); });
-                const std::string exact_text = lesson_number_text(exact, kind, language);
-                args.emplace_back("expected", finite ? numbers_text(check.expected, kind, language) : exact_text);
-                args.emplace_back("exact", exact_text);
-                break;
-            }
-        }
-        out += "  " + message(language, id, args) + "\n";
-    }
-    out += "\n" + message(language, "answers_summary",
-                          {{"right", std::to_string(right)}, {"count", std::to_string(right + wrong)},
-                           {"wrong", std::to_string(wrong)}, {"blank", std::to_string(blank)}}) + "\n";
-    return out;
+    AnswerLimits limits;
+    limits.w = w;
+    limits.scene_hash = scene_hash;
+    limits.settings = settings;
+    return read_answers(text, file, vocabulary, language, first, limits).pixels;
 }
 
 }  // namespace promyk
