@@ -202,9 +202,9 @@ TEST_CASE("every legend name, title and number in both languages has its glyphs"
 }
 
 TEST_CASE("legend numbers are short, and Polish ones take a comma and a minus sign", "[image][legend]") {
-    CHECK(legend_number(1e-16, Language::en) == "1e-16");
+    CHECK(legend_number(1e-16, Language::en) == "1e−16");  // U+2212, as every number shown
     CHECK(legend_number(1e-16, Language::pl) == "1e−16");
-    CHECK(legend_number(2.5e-7, Language::en) == "2.5e-7");
+    CHECK(legend_number(2.5e-7, Language::en) == "2.5e−7");
     CHECK(legend_number(2.5e-7, Language::pl) == "2,5e−7");
     CHECK(legend_number(1e20, Language::en) == "1e20");
     CHECK(legend_number(1, Language::pl) == "1");

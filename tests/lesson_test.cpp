@@ -269,6 +269,7 @@ TEST_CASE("a lesson's value tables show the trace's values", "[lesson]") {
     for (const Lesson& lesson : library.lessons(problems)) {
         const Scene scene = library.scene(lesson.header.scene);
         LessonView view{lesson, builtin_vocabulary(), {}, scene.name, 8};
+        view.digits = lesson.header.digits;  // as promyk lesson sets it
         for (const auto& [i, j] : std::vector<std::pair<int, int>>{{0, 0}, {5, 1}, {3, 4}})
             view.traces.push_back(trace_pixel(scene, 8, i, j));
         for (std::size_t k = 0; k < lesson.steps.size(); ++k) {

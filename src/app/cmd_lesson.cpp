@@ -142,7 +142,14 @@ int run_list(const LessonLibrary& library, Language language) {
         if (lesson.language == language) lessons.push_back(std::move(lesson));
     for (const Lesson& lesson : lessons) width = std::max(width, lesson.header.name.size());
     // Each summary wrapped under itself, so the list fits 80 columns.
+    // A name too long for a column of its own (a teacher's own lesson) puts
+    // every summary under its name instead.
+    const bool column = width <= 24;
     for (const Lesson& lesson : lessons) {
+        if (!column) {
+            out += "  " + lesson.header.name + "\n" + wrap_text("      " + lesson.header.summary, 6) + "\n";
+            continue;
+        }
         std::string line = wrap_text(std::string(width + 4, ' ') + lesson.header.summary, width + 4);
         out += line.replace(0, width + 4, fmt::format("  {:<{}}  ", lesson.header.name, width)) + "\n";
     }
