@@ -10,13 +10,14 @@
 #include "app/common_options.hpp"
 #include "render/scene_report.hpp"
 #include "scene/scene_json.hpp"
+#include "trace/messages.hpp"
 #include "util/printable.hpp"
 
 namespace promyk::app {
 
 namespace {
 
-void print_list(std::string& out, const char* heading, const std::vector<std::string>& items) {
+void print_list(std::string& out, const std::string& heading, const std::vector<std::string>& items) {
     if (items.empty()) return;
     out += fmt::format("{}:\n", heading);
     for (const std::string& item : items) out += fmt::format("  - {}\n", printable(item));
@@ -25,11 +26,11 @@ void print_list(std::string& out, const char* heading, const std::vector<std::st
 int run_check(const std::string& file) {
     const Scene scene = load_scene_file(file);
     const SceneReport report = report_scene(scene);
-    std::string out = fmt::format("{}: a valid scene\n", printable(file));
-    print_list(out, "contains", report.contents);
-    print_list(out, "the engine runs, for every pixel", report.stages);
-    print_list(out, "and skips", report.skipped);
-    print_list(out, "warnings (legal, but surprising)", report.warnings);
+    std::string out = ui_message("scene_check_valid", {{"file", printable(file)}}) + "\n";
+    print_list(out, ui_message("scene_check_contains"), report.contents);
+    print_list(out, ui_message("scene_check_runs"), report.stages);
+    print_list(out, ui_message("scene_check_skips"), report.skipped);
+    print_list(out, ui_message("scene_check_warnings"), report.warnings);
     std::fputs(out.c_str(), stdout);
     return 0;
 }
