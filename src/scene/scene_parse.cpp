@@ -20,6 +20,9 @@ namespace {
 // The format nests 4 levels deep ({"spheres": [{"S": [...]}]}); anything much
 // deeper is not a scene, and the limit keeps the parser's memory bounded.
 constexpr std::size_t max_nesting = 64;
+// The format's values are at most this deep ("/spheres/0/S/1": 4); the
+// places of deeper ones are not recorded.
+constexpr std::size_t deepest_level = 4;
 
 // SceneParser builds the value from the parser's events (nlohmann's SAX
 // interface) and tracks the path, so that duplicate keys, out-of-range
@@ -111,13 +114,14 @@ private:
         Json* value;             // the object or array being read
         std::string key;         // objects: the last key read
         Json* member = nullptr;  // objects: the value of that key, to be filled
+        std::string pointer;     // the format's levels: where the container is
     };
 
     // Stores a value where the parser is: the root, the next element of an
     // array, the value of an object's last key.
     template <class Value>
     Json* place(Value&& value) {
-        if (frames_.size() <= 4) parsed_.order.emplace(pending_pointer(), parsed_.order.size());
+        if (frames_.size() <= deepest_level) parsed_.order.emplace(pending_pointer(), places_++);
         if (frames_.empty()) {
             parsed_.root = Json(std::forward<Value>(value));
             return &parsed_.root;
@@ -141,11 +145,14 @@ private:
     bool start(Json::value_t type) {
         if (frames_.size() >= max_nesting)
             reject(source_, pending_pointer(), ui_message("scene_nesting", {{"max", std::to_string(max_nesting)}}));
-        frames_.push_back(Frame{place(type), {}});
+        std::string pointer = frames_.size() <= deepest_level ? pending_pointer() : std::string();
+        Json* value = place(type);
+        frames_.push_back(Frame{value, {}, nullptr, std::move(pointer)});
         return true;
     }
 
     bool end() {
+        if (frames_.size() - 1 <= deepest_level) parsed_.ends.emplace(std::move(frames_.back().pointer), places_++);
         frames_.pop_back();
         return true;
     }
@@ -184,6 +191,7 @@ private:
     const std::string& source_;
     std::vector<Frame> frames_;
     ParsedJson parsed_;
+    std::size_t places_ = 0;  // the values and ends of containers seen so far
 };
 
 // The whole file is the JSON text, with at most one UTF-8 byte order mark at

@@ -28,6 +28,9 @@ struct ParsedJson {
     // The place of each value of the format's levels (depth 4 at most) in
     // the file, by its pointer: faults are reported in this order.
     std::unordered_map<std::string, std::size_t> order;
+    // The place of the end of each object and array ('}' or ']'), by its
+    // pointer: a missing key is reported where its object ends.
+    std::unordered_map<std::string, std::size_t> ends;
     // Faults found while parsing that do not stop it (a duplicate key).
     std::vector<SceneFault> faults;
 };

@@ -360,14 +360,15 @@ private:
     std::vector<SceneFault> faults_;
 };
 
-// The place in the file of the value at `pointer`, or of its nearest
-// ancestor that the file has (a missing key sorts with its object).
+// The place in the file of the value at `pointer`; for a value the file
+// lacks (a missing key), the end of its nearest ancestor that it has.
 std::size_t place_in_file(const ParsedJson& parsed, std::string pointer) {
+    if (const auto it = parsed.order.find(pointer); it != parsed.order.end()) return it->second;
     for (;;) {
-        if (const auto it = parsed.order.find(pointer); it != parsed.order.end()) return it->second;
         const std::size_t slash = pointer.rfind('/');
-        if (slash == std::string::npos) return 0;
+        if (slash == std::string::npos) return parsed.order.size() + parsed.ends.size();
         pointer.resize(slash);
+        if (const auto it = parsed.ends.find(pointer); it != parsed.ends.end()) return it->second;
     }
 }
 
