@@ -83,6 +83,13 @@ TEST_CASE("at most 20 faults are reported, then how many more", "[scene][faults]
     const auto errors = errors_of(spheres_with_bad_radius(25));
     REQUIRE(errors);
     CHECK(errors->more == 5);
+    CHECK(errors->counted);
+    // A file of thousands of faults is read up to the max_collected_faults-th.
+    const auto many = errors_of(spheres_with_bad_radius(3000));
+    REQUIRE(many);
+    CHECK(many->faults.size() == promyk::max_reported_faults);
+    CHECK(many->more == promyk::max_collected_faults - promyk::max_reported_faults);
+    CHECK(!many->counted);
     CHECK(promyk::ui_message("scene_more_faults", {{"count", "5"}}) == "and 5 more");
 }
 
@@ -116,7 +123,8 @@ TEST_CASE("'color' says the right thing in a light, a material and anywhere else
         const std::string hint = hint_for("{" + object + R"(, "lights": [)" + light + "]}");
         CHECK_THAT(hint, Catch::Matchers::StartsWith("unknown key 'color'; promyk spells it 'colour', and 'colour' "
                                                      "belongs in a light, inside \"lights\", or in a material, inside "
-                                                     "\"materials\"; an object names its material by index"));
+                                                     "\"materials\"; a "));
+        CHECK_THAT(hint, Catch::Matchers::EndsWith("names its material by index, as \"material\": 0"));
         CHECK_THAT(hint, !Catch::Matchers::Contains("did you mean"));
     }
 }

@@ -511,7 +511,7 @@ TEST_CASE("unknown keys of the new objects get hints", "[scene]") {
                    {"'colour' belongs in a light, inside \"lights\", or in a material, inside \"materials\"",
                     "a sphere names its material by index, as \"material\": 0"});
     check_rejected(scene_text("", R"({"S": [0, 0, 3.2], "r": 1.1, "color": [1, 0, 0]})"), "/spheres/0/color",
-                   {"did you mean 'colour'? 'colour' belongs in a light", "names its material by index"});
+                   {"promyk spells it 'colour', and 'colour' belongs in a light", "names its material by index"});
     check_rejected(scene_text(R"("planes": [{"Q": [0, 0, 0], "n": [0, 1, 0], "diffuse": 0.5}],)"),
                    "/planes/0/diffuse", {"belongs in a material", "a plane names its material by index"});
     // Far from every key: the keys allowed there.

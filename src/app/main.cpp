@@ -113,9 +113,11 @@ int exit_code_for_failure(const std::string& path) {
         for (const promyk::SceneFault& fault : errors.faults)
             report(fault.where.empty() ? fmt::format("{}: {}", errors.file, fault.what)
                                        : fmt::format("{}: {}: {}", errors.file, fault.where, fault.what));
-        if (errors.more > 0)
+        if (errors.more > 0 || !errors.counted)
             report(fmt::format("{}: {}", errors.file,
-                               promyk::ui_message("scene_more_faults", {{"count", std::to_string(errors.more)}})));
+                               promyk::ui_message(errors.counted ? "scene_more_faults" : "scene_more_faults_at_least",
+                                                  {{"count", std::to_string(errors.more)},
+                                                   {"limit", std::to_string(promyk::max_collected_faults)}})));
         return 3;
     } catch (const promyk::InputError& error) {
         report(fmt::format("{}: {}", where_of(error), error.what()));
@@ -179,7 +181,10 @@ int main(int argc, char** argv) {
         promyk::app::take_global_options(args);
     } catch (const promyk::UsageError& error) {
         report(error.what());
-        fmt::print(stderr, "{}\n", promyk::app::run_help_line("promyk"));
+        const auto command = std::find_if(args.begin(), args.end(), [&](const std::string& arg) {
+            return std::find(commands.begin(), commands.end(), arg) != commands.end();
+        });
+        fmt::print(stderr, "{}\n", promyk::app::run_help_line(command == args.end() ? "promyk" : "promyk " + *command));
         return 2;
     }
 

@@ -37,7 +37,7 @@ std::string belongs_hint(std::string_view key, const Level& level) {
     }
     if (homes.empty()) return "";
     std::string hint = ui_message("scene_hint_belongs", {{"key", std::string(key)}, {"homes", homes}});
-    if (in_material && level.has_material) hint += ui_message("scene_hint_by_index");
+    if (in_material && level.has_material) hint += ui_message("scene_hint_by_index_" + std::string(level.id));
     return hint;
 }
 

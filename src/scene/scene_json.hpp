@@ -43,17 +43,23 @@ struct SceneFault {
 
 // The most faults one error reports; the rest are counted ("and 5 more").
 inline constexpr std::size_t max_reported_faults = 20;
+// The reading stops after this many faults (a hostile file can hold 400,000):
+// the rest are not counted ("and at least 980 more").
+inline constexpr std::size_t max_collected_faults = 1000;
 
 // A scene whose fields have faults: the first max_reported_faults of them in
-// document order (a missing key at its object's place), and how many more.
+// document order (a missing key where its object ends), and how many more
+// (at least that many when the reading stopped at max_collected_faults).
 // As an InputError it is the first fault.
 struct SceneErrors : InputError {
-    SceneErrors(std::string file_name, std::vector<SceneFault> all, std::size_t more_faults)
+    SceneErrors(std::string file_name, std::vector<SceneFault> all, std::size_t more_faults, bool all_counted)
         : InputError(std::move(file_name), all.front().where, all.front().what),
           faults(std::move(all)),
-          more(more_faults) {}
+          more(more_faults),
+          counted(all_counted) {}
     std::vector<SceneFault> faults;
     std::size_t more;
+    bool counted;  // false: the reading stopped, and there may be more than `more`
 };
 
 // Reads and parses the scene file at `path`; the scene's `source` is `path`.

@@ -90,7 +90,9 @@ public:
         frame.key = key;
         // A duplicate is a fault that does not stop the reading: its last
         // value is the one read.
-        if (!inserted)
+        if (!inserted && parsed_.faults.size() >= max_collected_faults)
+            parsed_.faults_cut = true;
+        else if (!inserted)
             parsed_.faults.push_back(
                 {printable(pending_pointer()), printable(ui_message("scene_duplicate_key", {{"key", shown_key(key)}}))});
         frame.member = &member->second;

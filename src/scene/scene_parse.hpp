@@ -31,8 +31,10 @@ struct ParsedJson {
     // The place of the end of each object and array ('}' or ']'), by its
     // pointer: a missing key is reported where its object ends.
     std::unordered_map<std::string, std::size_t> ends;
-    // Faults found while parsing that do not stop it (a duplicate key).
+    // Faults found while parsing that do not stop it (a duplicate key), at
+    // most max_collected_faults; faults_cut when there were more.
     std::vector<SceneFault> faults;
+    bool faults_cut = false;
 };
 
 // Throws InputError for a fault that stops the reading: too large, empty,

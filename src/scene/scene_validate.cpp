@@ -33,6 +33,9 @@ struct Fault {
     std::string where, what;
 };
 
+// Thrown when max_collected_faults are found: the reading stops.
+struct Enough {};
+
 std::string number(double value) { return fmt::format("{}", value); }
 
 // "1 element", "2 elements"; in Polish 1 element, 2–4 elementy, 5 elementów.
@@ -109,6 +112,7 @@ private:
             return true;
         } catch (const Fault& fault) {
             faults_.push_back({printable(fault.where), printable(fault.what)});
+            if (faults_.size() + parsed_.faults.size() >= max_collected_faults) throw Enough{};
             return false;
         }
     }
@@ -377,11 +381,14 @@ std::size_t place_in_file(const ParsedJson& parsed, std::string pointer) {
 Scene validate_scene(const ParsedJson& parsed, const std::string& source) {
     SceneReader reader(parsed);
     std::vector<SceneFault> faults = parsed.faults;
+    bool counted = !parsed.faults_cut;
     Scene scene;
     try {
-        scene = reader.read(parsed.root);
+        if (counted) scene = reader.read(parsed.root);
     } catch (const Fault& fault) {  // the root is not an object
         reject(source, fault.where, fault.what);
+    } catch (const Enough&) {
+        counted = false;
     }
     for (SceneFault& fault : reader.faults()) faults.push_back(std::move(fault));
     if (faults.empty()) {
@@ -394,7 +401,7 @@ Scene validate_scene(const ParsedJson& parsed, const std::string& source) {
     std::stable_sort(order.begin(), order.end());
     std::vector<SceneFault> sorted;
     for (std::size_t k = 0; k < order.size() && k < max_reported_faults; ++k) sorted.push_back(faults[order[k].second]);
-    throw SceneErrors(source, std::move(sorted), faults.size() > max_reported_faults ? faults.size() - max_reported_faults : 0);
+    throw SceneErrors(source, std::move(sorted), faults.size() - sorted.size(), counted);
 }
 
 }  // namespace promyk::scene_detail

@@ -2,18 +2,19 @@
 # "did you mean" for typos, CLI11's errors reworded with the right command
 # path, --lang and --digits as options of every command, pixels' ranges, and
 # a scene's faults all in one run. Included from tests/CMakeLists.txt.
+# (A ';' in a pattern would split CMake's list: '.' stands for it.)
 
 # Enumerated options take names only; a typo gets the name probably meant.
 promyk_cli_test(real_number_refused ARGS trace --real 0 EXIT 2
-                STDERR "promyk: unknown value '0' for --real; the values are float, double, long-double, quad\nRun 'promyk trace --help' for the options.\n$")
+                STDERR "promyk: unknown value '0' for --real. the values are float, double, long-double, quad\nRun 'promyk trace --help' for the options.\n$")
 promyk_cli_test(real_typo ARGS trace --real flaot EXIT 2
-                STDERR "unknown value 'flaot' for --real; did you mean 'float'\\? \\(float, double, long-double, quad\\)")
+                STDERR "unknown value 'flaot' for --real. did you mean 'float'\\? \\(float, double, long-double, quad\\)")
 promyk_cli_test(formula_typo ARGS render --formula stabel EXIT 2 EMPTY
-                STDERR "unknown value 'stabel' for --formula; did you mean 'stable'\\?")
-promyk_cli_test(format_typo ARGS trace --format JSON EXIT 2 STDERR "unknown value 'JSON' for --format; did you mean 'json'\\?")
+                STDERR "unknown value 'stabel' for --formula. did you mean 'stable'\\?")
+promyk_cli_test(format_typo ARGS trace --format JSON EXIT 2 STDERR "unknown value 'JSON' for --format. did you mean 'json'\\?")
 promyk_cli_test(diff_format_typo ARGS diff a b --format jsn EXIT 2 STDERR "did you mean 'json'\\?")
-promyk_cli_test(lang_unknown ARGS trace --lang english EXIT 2 STDERR "unknown value 'english' for --lang; the values are pl, en")
-promyk_cli_test(compare_typo ARGS trace --compare float,dobule EXIT 2 STDERR "unknown value 'dobule' for --compare; did you mean 'double'\\?")
+promyk_cli_test(lang_unknown ARGS trace --lang english EXIT 2 STDERR "unknown value 'english' for --lang. the values are pl, en")
+promyk_cli_test(compare_typo ARGS trace --compare float,dobule EXIT 2 STDERR "unknown value 'dobule' for --compare. did you mean 'double'\\?")
 # Help shows the names, not CLI11's internals.
 promyk_cli_test(trace_help_names ARGS trace --help EXIT 0
                 STDOUT "--real float\\|double\\|long-double\\|quad.*--formula article\\|stable\\|fma\\|geometric.*--format text\\|json.*--lang pl\\|en.*--digits N"
@@ -27,7 +28,7 @@ promyk_cli_test(top_help_lang ARGS --help EXIT 0 STDOUT "--lang pl\\|en.*--help 
 
 # CLI11's errors in promyk's words, with the command they belong to.
 promyk_cli_test(unknown_option_suggested ARGS trace --pixle 3,4 EXIT 2
-                STDERR "^promyk: unknown option '--pixle' for promyk trace; did you mean '--pixel'\\?\nRun 'promyk trace --help' for the options.\n$")
+                STDERR "^promyk: unknown option '--pixle' for promyk trace. did you mean '--pixel'\\?\nRun 'promyk trace --help' for the options.\n$")
 promyk_cli_test(unknown_option ARGS render --zzzzzz EXIT 2 STDERR "unknown option '--zzzzzz' for promyk render\n")
 promyk_cli_test(extra_argument ARGS trace extra EXIT 2 STDERR "unexpected argument 'extra' for promyk trace")
 promyk_cli_test(missing_value ARGS trace --w EXIT 2 STDERR "^promyk: --w needs a value\n")
@@ -44,12 +45,12 @@ promyk_cli_test(tol_not_a_number ARGS diff a b --tol abc EXIT 2 STDERR "--tol ex
 # --lang and --digits: before or after the command's name; the errors of
 # the command line and of a scene in the chosen language.
 promyk_cli_test(lang_pl_before ARGS --lang pl trace --pixle 3,4 EXIT 2
-                STDERR "nieznana opcja '--pixle' polecenia promyk trace; czy chodziło o '--pixel'\\?\nOpcje polecenia pokaże 'promyk trace --help'.")
+                STDERR "nieznana opcja '--pixle' polecenia promyk trace. czy chodziło o '--pixel'\\?\nOpcje polecenia pokaże 'promyk trace --help'.")
 promyk_cli_test(lang_pl_after ARGS trace --pixel 9,0 --lang=pl EXIT 2 STDERR "leży poza okienkiem 8 × 8")
 promyk_cli_test(lang_pl_scene ARGS trace --lang pl --scene ${scenes}/zero_normal.json EXIT 3
                 STDERR "zero_normal.json: /planes/0/n: n \\(wektor normalny płaszczyzny\\) nie może być wektorem zerowym")
 promyk_cli_test(lang_pl_real ARGS render --real flaot --lang pl EXIT 2 EMPTY
-                STDERR "nieznana wartość 'flaot' opcji --real; czy chodziło o 'float'\\?")
+                STDERR "nieznana wartość 'flaot' opcji --real. czy chodziło o 'float'\\?")
 promyk_cli_test(lang_en_text ARGS trace --lang en EXIT 0 STDOUT "branch: lit")
 promyk_cli_test(digits_zero ARGS trace --digits 0 EXIT 2 STDERR "--digits expects a whole number from 1 to 40, got 0")
 promyk_cli_test(digits_missing ARGS trace --digits EXIT 2 STDERR "--digits needs a value")
@@ -67,11 +68,11 @@ promyk_cli_test(trace_region_2_31 ARGS render --w 8 --traces t.jsonl --trace-reg
                 STDERR "--trace-region expects .*numbers from 0 to 32767")
 promyk_cli_test(lesson_pixel_2_31 ARGS lesson sphere --pixel 2147483648,1 EXIT 2 STDERR "--pixel expects .*numbers from 0 to 32767")
 promyk_cli_test(pixel_outside_names_w ARGS trace --pixel 200,300 EXIT 2
-                STDERR "--pixel \\(200, 300\\) is outside the 8 × 8 pane; it is in a pane of w ≥ 301: add --w 512 \\(render's default\\) or --w 301")
+                STDERR "--pixel \\(200, 300\\) is outside the 8 × 8 pane. it is in a pane of w ≥ 301: add --w 512 \\(render's default\\) or --w 301")
 promyk_cli_test(pixel_outside_large ARGS trace --pixel 600,3 EXIT 2
-                STDERR "--pixel \\(600, 3\\) is outside the 8 × 8 pane; it is in a pane of w ≥ 601: add --w 601\n")
+                STDERR "--pixel \\(600, 3\\) is outside the 8 × 8 pane. it is in a pane of w ≥ 601: add --w 601\n")
 promyk_cli_test(pixel_outside_render ARGS render --w 512 --traces t.jsonl --trace-pixel 512,0 EXIT 2 EMPTY
-                STDERR "--trace-pixel \\(512, 0\\) is outside the 512 × 512 pane; it is in a pane of w ≥ 513: add --w 513\n")
+                STDERR "--trace-pixel \\(512, 0\\) is outside the 512 × 512 pane. it is in a pane of w ≥ 513: add --w 513\n")
 promyk_cli_test(pixel_outside_fits ARGS trace --pixel 200,300 --w 301 EXIT 0 STDOUT "branch")
 
 # A scene's faults, all in one run, in document order; at most 20 and a count.
