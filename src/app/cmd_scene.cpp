@@ -51,7 +51,7 @@ std::function<int()> setup_scene(CLI::App& app) {
     auto dump_all = std::make_shared<bool>(false);
     CLI::App* check = cmd->add_subcommand(
         "check", "Validate a scene file; say what it contains, what the engine runs for it and what it skips");
-    check->add_option("file", *file, "The scene file (JSON)")->type_name("FILE")->required()->check(non_empty());
+    check->add_option("FILE", *file, "The scene file (JSON)")->type_name("")->required()->check(non_empty());
     CLI::App* dump = cmd->add_subcommand(
         "dump", "Print a scene as a file in the canonical form (the article's unless --scene)");
     add_scene_option(*dump, *dump_file);

@@ -33,7 +33,7 @@ promyk_cli_test(unknown_option ARGS render --zzzzzz EXIT 2 STDERR "unknown optio
 promyk_cli_test(extra_argument ARGS trace extra EXIT 2 STDERR "unexpected argument 'extra' for promyk trace")
 promyk_cli_test(missing_value ARGS trace --w EXIT 2 STDERR "^promyk: --w needs a value\n")
 promyk_cli_test(scene_check_needs_file ARGS scene check EXIT 2
-                STDERR "promyk scene check needs file\nRun 'promyk scene check --help' for the options.\n$")
+                STDERR "promyk scene check needs FILE\nRun 'promyk scene check --help' for the options.\n$")
 promyk_cli_test(scene_needs_command ARGS scene EXIT 2
                 STDERR "promyk scene needs a command: check, dump\nRun 'promyk scene --help' for the options.")
 promyk_cli_test(scene_check_usage_path ARGS scene check a b EXIT 2 STDERR "Run 'promyk scene check --help' for the options.")
