@@ -99,7 +99,7 @@ int exit_code_for_failure(const std::string& path) {
     // FIFO, opening a FIFO for output) makes the call fail with EINTR, which
     // surfaces as an input or output error: the signal is what happened.
     if (const int signal_number = promyk::interrupt_signal()) {
-        report(fmt::format("interrupted by {}; no output file was written", signal_name(signal_number)));
+        report(promyk::ui_message("cli_interrupted", {{"signal", signal_name(signal_number)}}));
         return 128 + signal_number;
     }
     try {
@@ -128,18 +128,18 @@ int exit_code_for_failure(const std::string& path) {
     } catch (const promyk::BrokenPipe&) {
         return 128 + SIGPIPE;  // the reader quit: quietly, as if SIGPIPE had ended us
     } catch (const promyk::Interrupted& error) {
-        report(fmt::format("interrupted by {}; no output file was written", signal_name(error.signal_number)));
+        report(promyk::ui_message("cli_interrupted", {{"signal", signal_name(error.signal_number)}}));
         return 128 + error.signal_number;
     } catch (const std::bad_alloc&) {
-        report("out of memory");
+        report(promyk::ui_message("cli_out_of_memory"));
         return 70;
     } catch (const std::system_error& error) {
         // fmt::print to standard output when its reader has quit.
         if (error.code().value() == EPIPE) return 128 + SIGPIPE;
-        report(fmt::format("internal error (a bug in promyk, please report it): {}", error.what()));
+        report(promyk::ui_message("cli_internal_error", {{"what", error.what()}}));
         return 70;
     } catch (const std::exception& error) {
-        report(fmt::format("internal error (a bug in promyk, please report it): {}", error.what()));
+        report(promyk::ui_message("cli_internal_error", {{"what", error.what()}}));
         return 70;
     }
 }
