@@ -14,7 +14,10 @@
 #include <fmt/format.h>
 
 #include "scene/scene_json.hpp"
+#include "trace/messages.hpp"
+#include "util/edit_distance.hpp"
 #include "util/errors.hpp"
+#include "util/printable.hpp"
 #include "util/text.hpp"
 
 namespace promyk::cli {
@@ -54,9 +57,12 @@ std::string plain_form(const std::string& typed) {
 }
 
 // Splits "a,b,..." (optionally in parentheses, spaces allowed around each
-// number) into exactly `count` plain whole numbers, or throws.
+// number) into exactly `count` plain whole numbers, or throws. Numbers are
+// at most max_w - 1 (a pixel of the largest pane): a longer text is refused
+// with the range before it is converted, whatever its length.
 std::vector<int> parse_integers(const std::string& typed, std::size_t count, const std::string& option,
-                                const char* form) {
+                                const char* form_id) {
+    const std::string form = ui_message(form_id);
     std::string text = trim(typed);
     if (text.size() >= 2 && text.front() == '(' && text.back() == ')') text = text.substr(1, text.size() - 2);
     std::vector<int> values;
@@ -64,34 +70,79 @@ std::vector<int> parse_integers(const std::string& typed, std::size_t count, con
     while (true) {
         const std::size_t comma = text.find(',', start);
         const std::string part = trim(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-        if (!is_plain_decimal(part) || part.size() > 10)
-            throw UsageError(fmt::format("{} expects {} (whole numbers in plain decimal), got '{}'", option, form, typed));
-        values.push_back(std::stoi(part));
+        if (!is_plain_decimal(part))
+            throw UsageError(ui_message("cli_pixel_form", {{"option", option}, {"form", form}, {"value", typed}}));
+        if (part.size() > 7 || std::labs(std::stol(part)) >= max_w)
+            throw UsageError(ui_message("cli_pixel_range", {{"option", option},
+                                                           {"form", form},
+                                                           {"max", std::to_string(max_w - 1)},
+                                                           {"w", std::to_string(max_w)},
+                                                           {"value", typed}}));
+        values.push_back(std::stoi(part));  // a small negative one: check_inside says it is outside
         if (comma == std::string::npos) break;
         start = comma + 1;
     }
-    if (values.size() != count) throw UsageError(fmt::format("{} expects {}, got '{}'", option, form, typed));
+    if (values.size() != count)
+        throw UsageError(ui_message("cli_pixel_count", {{"option", option}, {"form", form}, {"value", typed}}));
     return values;
 }
 
 void check_inside(int i, int j, int w, const std::string& option) {
-    if (i < 0 || i >= w || j < 0 || j >= w)
-        throw UsageError(fmt::format("{} ({}, {}) is outside the {} × {} pane: i and j go from 0 to {}", option, i, j,
-                                     w, w, w - 1));
+    if (i >= 0 && i < w && j >= 0 && j < w) return;
+    std::string text = ui_message("cli_pixel_outside", {{"option", option},
+                                                        {"i", std::to_string(i)},
+                                                        {"j", std::to_string(j)},
+                                                        {"w", std::to_string(w)}});
+    if (i < 0 || j < 0) {
+        text += ui_message("cli_pixel_span", {{"last", std::to_string(w - 1)}});
+    } else {
+        const std::string need = std::to_string(smallest_w_containing(i, j));
+        text += smallest_w_containing(i, j) <= render_default_w && w != render_default_w
+                    ? ui_message("cli_pixel_fits_render", {{"need", need}, {"render", std::to_string(render_default_w)}})
+                    : ui_message("cli_pixel_fits", {{"need", need}});
+    }
+    throw UsageError(text);
 }
 
 }  // namespace
 
+std::string closest_name(const std::string& typed, const std::vector<std::string>& names) {
+    std::string lower = typed;
+    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    for (const std::string& name : names)
+        if (lower == name) return name;
+    std::string best;
+    std::size_t best_distance = 3;
+    for (const std::string& name : names) {
+        const std::size_t distance = edit_distance(lower, name);
+        if (distance < best_distance && distance < std::max(lower.size(), name.size())) {
+            best = name;
+            best_distance = distance;
+        }
+    }
+    return best;
+}
+
+std::string choice_problem(const std::string& typed, const std::string& option, const std::vector<std::string>& names) {
+    if (std::find(names.begin(), names.end(), typed) != names.end()) return "";
+    std::string list;
+    for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+    const std::string suggestion = closest_name(typed, names);
+    if (suggestion.empty())
+        return ui_message("cli_unknown_value", {{"value", printable(typed)}, {"option", option}, {"names", list}});
+    return ui_message("cli_unknown_value_suggest",
+                      {{"value", printable(typed)}, {"option", option}, {"suggestion", suggestion}, {"names", list}});
+}
+
 std::optional<std::string> whole_number_problem(const std::string& text, long min, long max) {
-    const std::string range = fmt::format("a whole number from {} to {}", min, max);
-    if (text.empty()) return fmt::format("needs a value: {}", range);
+    const MessageArgs range = {{"min", std::to_string(min)}, {"max", std::to_string(max)}, {"value", text}};
+    if (text.empty()) return ui_message("cli_whole_needs_value", range);
     if (!is_plain_decimal(text)) {
         const std::string plain = plain_form(text);
-        return fmt::format("expects {} written in plain decimal, got '{}'{}", range, text,
-                           plain.empty() ? "" : fmt::format("; write {}", plain));
+        return ui_message("cli_whole_not_plain", range) +
+               (plain.empty() ? "" : ui_message("cli_whole_write", {{"plain", plain}}));
     }
-    if (text.size() > 12 || std::stol(text) < min || std::stol(text) > max)
-        return fmt::format("expects {}, got {}", range, text);
+    if (text.size() > 12 || std::stol(text) < min || std::stol(text) > max) return ui_message("cli_whole_range", range);
     return std::nullopt;
 }
 
@@ -102,17 +153,18 @@ int parse_whole_number(const std::string& text, const std::string& option, long 
 }
 
 Pixel parse_pixel(const std::string& text, const std::string& option, int w) {
-    const std::vector<int> v = parse_integers(text, 2, option, "I,J (row from the top, column from the left)");
+    const std::vector<int> v = parse_integers(text, 2, option, "cli_form_pixel");
     check_inside(v[0], v[1], w, option);
     return {v[0], v[1]};
 }
 
 PixelRegion parse_region(const std::string& text, const std::string& option, int w) {
-    const std::vector<int> v = parse_integers(text, 4, option, "I0,J0,I1,J1 (top-left and bottom-right corners)");
-    check_inside(v[0], v[1], w, option + " corner");
-    check_inside(v[2], v[3], w, option + " corner");
+    const std::vector<int> v = parse_integers(text, 4, option, "cli_form_region");
+    const std::string corner = ui_message("cli_corner", {{"option", option}});
+    check_inside(v[0], v[1], w, corner);
+    check_inside(v[2], v[3], w, corner);
     if (v[0] > v[2] || v[1] > v[3])
-        throw UsageError(fmt::format("{} '{}': the first corner must be above and left of the second", option, text));
+        throw UsageError(ui_message("cli_region_order", {{"option", option}, {"value", text}}));
     return {v[0], v[1], v[2], v[3]};
 }
 

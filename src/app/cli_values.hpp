@@ -19,6 +19,10 @@ inline constexpr int max_w = 32768;
 // The most threads accepted: far more than any machine promyk runs on has cores.
 inline constexpr int max_threads = 1024;
 
+// render's pane side when --w is not given: the pane a pixel from a default
+// render lives in (named in the hint of a pixel outside a smaller pane).
+inline constexpr int render_default_w = 512;
+
 struct Pixel {
     int i, j;  // row from the top, column from the left
 };
@@ -30,8 +34,21 @@ std::optional<std::string> whole_number_problem(const std::string& text, long mi
 // `text` as a whole number from min to max; UsageError naming `option` otherwise.
 int parse_whole_number(const std::string& text, const std::string& option, long min, long max);
 
+// The message for `typed` when it is not one of `names` (empty when it is):
+// "unknown value 'flaot' for --real; did you mean 'float'? (float, double, ...)".
+// A suggestion is a name equal but for case, or one or two letters off.
+std::string choice_problem(const std::string& typed, const std::string& option, const std::vector<std::string>& names);
+
+// The name in `names` that `typed` probably means, or empty: equal but for
+// case, or within edit distance 2 (and not a complete rewrite).
+std::string closest_name(const std::string& typed, const std::vector<std::string>& names);
+
+// The smallest pane side w that contains pixel (i, j): max(i, j) + 1.
+inline long smallest_w_containing(long i, long j) { return (i > j ? i : j) + 1; }
+
 // "I,J" -> pixel; also "I, J" and "(I, J)" as `promyk trace` prints it.
-// Checks 0 <= i, j < w.
+// Checks 0 <= i, j < w; a pixel outside names the smallest --w holding it.
+// Numbers beyond the largest pane are refused with the range (exit 2).
 Pixel parse_pixel(const std::string& text, const std::string& option, int w);
 
 // "I0,J0,I1,J1" -> region (corners inclusive), inside the pane, I0 <= I1, J0 <= J1.

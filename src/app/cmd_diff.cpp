@@ -1,7 +1,9 @@
 // promyk diff A B: two traces of a pixel (two real types, two formulas), or a
 // trace and a student's numbers, compared step by step; exit 1 when they
 // diverge beyond the tolerance.
+#include <cctype>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <optional>
 #include <string>
@@ -10,6 +12,7 @@
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
 #include "lesson/trace_diff.hpp"
+#include "trace/messages.hpp"
 #include "trace/vocabulary.hpp"
 #include "util/errors.hpp"
 
@@ -21,7 +24,6 @@ struct DiffCommandOptions {
     std::string a, b;
     std::optional<double> tol;
     std::string format = "text";
-    std::string lang;  // empty: from LANG
 };
 
 DiffInput read_input(const std::string& path, Language language) {
@@ -33,7 +35,7 @@ DiffInput read_input(const std::string& path, Language language) {
 int run_diff(const DiffCommandOptions& options) {
     if (options.a == "-" && options.b == "-")
         throw UsageError("only one of A and B can be - (standard input)");
-    const Language language = options.lang.empty() ? language_from_environment() : *parse_language(options.lang);
+    const Language language = ui_language();
     const DiffInput a = read_input(options.a, language);
     const DiffInput b = read_input(options.b, language);
     DiffOptions diff_options;
@@ -43,6 +45,21 @@ int run_diff(const DiffCommandOptions& options) {
                                                      : diff_report(result, a, b, diff_options, builtin_vocabulary(), language);
     std::fputs(out.c_str(), stdout);
     return result.first ? 1 : 0;
+}
+
+// --tol REL: a number from 0 to 1, in plain decimal or with an exponent (1e-6).
+CLI::Validator relative_tolerance() {
+    return CLI::Validator(
+        [](std::string& text) {
+            char* end = nullptr;
+            const double value = std::strtod(text.c_str(), &end);
+            if (text.empty() || *end != '\0' || std::isspace(static_cast<unsigned char>(text[0])))
+                return ui_message("cli_not_a_number", {{"option", "--tol"}, {"value", text}});
+            if (!(value >= 0 && value <= 1))
+                return ui_message("cli_number_range", {{"option", "--tol"}, {"min", "0"}, {"max", "1"}, {"value", text}});
+            return std::string();
+        },
+        "", "");
 }
 
 }  // namespace
@@ -55,19 +72,17 @@ std::function<int()> setup_diff(CLI::App& app) {
                     "A trace (promyk trace --format json) or a student's numbers (key = value lines, a flat JSON "
                     "object); - reads standard input")
         ->required()
-        ->type_name("A");
-    cmd->add_option("B", options->b, "The other side, in any of the same forms")->required()->type_name("B");
+        ->type_name("");
+    cmd->add_option("B", options->b, "The other side, in any of the same forms")->required()->type_name("");
     cmd->add_option("--tol", options->tol,
                     "A relative tolerance: steps agree when |a - b| <= REL * max(|a|, |b|)\n"
                     "(default: each step, the less precise side's precision: a trace's type\n"
                     "float 2^-24, double 2^-53, long-double 2^-64, quad 2^-113; a typed number\n"
                     "half a unit in its last digit)")
         ->type_name("REL")
-        ->check(CLI::Range(0.0, 1.0));
-    cmd->add_option("--format", options->format, "text: a table of the digits that agree; json: the result as one JSON object")
-        ->check(CLI::IsMember({"text", "json"}))
-        ->option_text("text|json (default: text)");
-    add_lang_option(*cmd, options->lang, "text: ");
+        ->check(relative_tolerance());
+    add_format_option(*cmd, options->format, {"text", "json"},
+                      "text: a table of the digits that agree; json: the result as one JSON object");
     cmd->footer(
         "Examples: promyk trace --real float --format json > a.json\n"
         "          promyk trace --real quad --format json > b.json\n"

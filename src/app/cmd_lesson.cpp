@@ -47,7 +47,6 @@ struct LessonOptions {
     std::string scene_file;
     int w = 8;
     bool w_given = false;
-    std::string lang;
     std::string format = "text";
     bool list = false;
     bool check = false;
@@ -223,7 +222,7 @@ int run_answers(const LessonOptions& options, LessonView& view, const Kernel& ke
 }
 
 int run_lesson(const LessonOptions& options) {
-    const Language language = options.lang.empty() ? language_from_environment() : *parse_language(options.lang);
+    const Language language = ui_language();
     if (!options.dump.empty()) {
         LessonLibrary::dump_builtin(options.dump);
         fmt::print(stderr, "promyk: {}\n", ui_message("lesson_dumped", {{"dir", printable(options.dump)}}));
@@ -320,7 +319,6 @@ std::function<int()> setup_lesson(CLI::App& app) {
         ->allow_extra_args(false);
     add_scene_option(*cmd, options->scene_file);
     add_w_option(*cmd, options->w)->description("Pane size: w × w pixels (default: the lesson's, usually 8)");
-    add_lang_option(*cmd, options->lang);
     add_real_option(*cmd, options->real)
         ->description("The type the lesson's numbers are computed in: float, double, long-double or quad\n"
                       "(default: the lesson's real:, else double); a placeholder such as {delta@float} names another")
@@ -334,9 +332,7 @@ std::function<int()> setup_lesson(CLI::App& app) {
                       "sample nearest the pixel's centre, whose branch is the pixel's; {I_mean} is the pixel's value,\n"
                       "{sample[2].delta} another sample's step")
         ->default_str("");
-    cmd->add_option("--format", options->format, "text: for the terminal; markdown: with $…$ math and tables")
-        ->check(CLI::IsMember({"text", "markdown"}))
-        ->option_text("text|markdown (default: text)");
+    add_format_option(*cmd, options->format, {"text", "markdown"}, "text: for the terminal; markdown: with $…$ math and tables");
     cmd->add_flag("--list", options->list, "List the lessons with their summaries");
     cmd->add_flag("--check", options->check,
                   "Check every lesson against the vocabulary and its translation; exit 1 on a fault");

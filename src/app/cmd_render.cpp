@@ -31,6 +31,7 @@
 #include "render/map_legend.hpp"
 #include "render/maps.hpp"
 #include "render/renderer.hpp"
+#include "render/scene_report.hpp"
 #include "render/stages.hpp"
 #include "render/trace_size.hpp"
 #include "trace/messages.hpp"
@@ -301,6 +302,11 @@ int run_render(const RenderOptions& options) {
     }
 
     const Scene scene = cli::load_scene_option(options.scene_file);
+    // What scene check would warn of (a light inside a sphere draws a black
+    // disc): said on stderr, so a surprising image has its reason beside it.
+    if (!options.scene_file.empty())
+        for (const std::string& warning : report_scene(scene).warnings)
+            fmt::print(stderr, "promyk: {}\n", printable(ui_message("scene_warning", {{"text", warning}})));
     // A coloured scene and a map need an RGB format: refused before any file is created.
     std::optional<MapKind> map_kind;
     if (!options.map.empty()) {

@@ -10,13 +10,14 @@
 #include "app/common_options.hpp"
 #include "render/scene_report.hpp"
 #include "scene/scene_json.hpp"
+#include "trace/messages.hpp"
 #include "util/printable.hpp"
 
 namespace promyk::app {
 
 namespace {
 
-void print_list(std::string& out, const char* heading, const std::vector<std::string>& items) {
+void print_list(std::string& out, const std::string& heading, const std::vector<std::string>& items) {
     if (items.empty()) return;
     out += fmt::format("{}:\n", heading);
     for (const std::string& item : items) out += fmt::format("  - {}\n", printable(item));
@@ -25,11 +26,11 @@ void print_list(std::string& out, const char* heading, const std::vector<std::st
 int run_check(const std::string& file) {
     const Scene scene = load_scene_file(file);
     const SceneReport report = report_scene(scene);
-    std::string out = fmt::format("{}: a valid scene\n", printable(file));
-    print_list(out, "contains", report.contents);
-    print_list(out, "the engine runs, for every pixel", report.stages);
-    print_list(out, "and skips", report.skipped);
-    print_list(out, "warnings (legal, but surprising)", report.warnings);
+    std::string out = ui_message("scene_check_valid", {{"file", printable(file)}}) + "\n";
+    print_list(out, ui_message("scene_check_contains"), report.contents);
+    print_list(out, ui_message("scene_check_runs"), report.stages);
+    print_list(out, ui_message("scene_check_skips"), report.skipped);
+    print_list(out, ui_message("scene_check_warnings"), report.warnings);
     std::fputs(out.c_str(), stdout);
     return 0;
 }
@@ -50,7 +51,7 @@ std::function<int()> setup_scene(CLI::App& app) {
     auto dump_all = std::make_shared<bool>(false);
     CLI::App* check = cmd->add_subcommand(
         "check", "Validate a scene file; say what it contains, what the engine runs for it and what it skips");
-    check->add_option("file", *file, "The scene file (JSON)")->type_name("FILE")->required()->check(non_empty());
+    check->add_option("FILE", *file, "The scene file (JSON)")->type_name("")->required()->check(non_empty());
     CLI::App* dump = cmd->add_subcommand(
         "dump", "Print a scene as a file in the canonical form (the article's unless --scene)");
     add_scene_option(*dump, *dump_file);

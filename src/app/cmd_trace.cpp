@@ -14,6 +14,7 @@
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
 #include "render/trace_pixel.hpp"
+#include "trace/messages.hpp"
 #include "trace/trace_compare.hpp"
 #include "trace/trace_text.hpp"
 #include "util/errors.hpp"
@@ -31,7 +32,6 @@ struct TraceOptions {
     std::string format = "text";
     bool wide = false;
     bool explain = false;
-    std::string lang;  // empty: from LANG
     RealType real = RealType::double_;
     std::string compare;  // "float,double,quad": trace in each, side by side
     Formula formula = Formula::article;
@@ -50,27 +50,22 @@ std::vector<RealType> compared_types(const std::string& list) {
         const std::size_t comma = std::min(list.find(',', start), list.size());
         const std::string name(trim(std::string_view(list).substr(start, comma - start)));
         const auto it = std::find_if(known.begin(), known.end(), [&](const auto& k) { return k.first == name; });
-        if (it == known.end()) {
-            std::string hint;
-            for (const auto& [known_name, type] : known)
-                if (hint.empty() && edit_distance(name, known_name) <= 2)
-                    hint = ui_message("did_you_mean", {{"name", known_name}});
-            throw UsageError(ui_message("compare_unknown_type", {{"type", printable(name)}, {"hint", hint}}));
-        }
+        if (it == known.end())
+            throw UsageError(cli::choice_problem(name, "--compare", {"float", "double", "long-double", "quad"}));
         chosen[static_cast<std::size_t>(it - known.begin())] = true;
         start = comma + 1;
     }
     std::vector<RealType> types;
     for (std::size_t k = 0; k < known.size(); ++k)
         if (chosen[k]) types.push_back(known[k].second);
-    if (types.size() < 2) throw UsageError(ui_message("compare_too_few"));
+    if (types.size() < 2) throw UsageError(ui_message("cli_compare_types"));
     return types;
 }
 
 int run_trace(const TraceOptions& options) {
     const cli::Pixel pixel = cli::parse_pixel(options.pixel, "--pixel", options.w);
     const Scene scene = cli::load_scene_option(options.scene_file);
-    const Language language = options.lang.empty() ? language_from_environment() : *parse_language(options.lang);
+    const Language language = ui_language();
     if (!options.compare.empty()) {
         std::vector<PixelTrace> traces;
         for (const RealType type : compared_types(options.compare))
@@ -124,13 +119,10 @@ std::function<int()> setup_trace(CLI::App& app) {
     add_formula_option(*cmd, options->formula);
     add_spp_option(*cmd, options->spp);
     add_scene_option(*cmd, options->scene_file);
-    cmd->add_option("--format", options->format, "text: an aligned table; json: the trace as one JSON line")
-        ->check(CLI::IsMember({"text", "json"}))
-        ->option_text("text|json (default: text)");
+    add_format_option(*cmd, options->format, {"text", "json"}, "text: an aligned table; json: the trace as one JSON line");
     cmd->add_flag("--wide", options->wide,
                   "text: one row a step (symbol, formula, value side by side; about 140 columns)\n"
                   "instead of the default layout that fits 80 columns");
-    add_lang_option(*cmd, options->lang, "text: ");
     cmd->add_flag("--explain", options->explain, "text: under each formula, what the quantity means");
     cmd->footer(
         "Example: promyk trace --pixel 3,4 --w 8   (at w = 8, (0,0) misses, (5,1) is on the dark side, (3,4) is lit)");

@@ -1,10 +1,11 @@
 #include "app/common_options.hpp"
 
-#include <map>
+#include <algorithm>
 #include <string>
 
 #include "app/cli_values.hpp"
 #include "render/samples.hpp"
+#include "trace/messages.hpp"
 
 namespace promyk::app {
 
@@ -15,9 +16,28 @@ CLI::Validator whole_number(long min, long max) {
 }
 
 CLI::Validator non_empty() {
+    return CLI::Validator([](std::string& text) { return text.empty() ? ui_message("cli_empty_value") : std::string(); },
+                          "", "");
+}
+
+CLI::Validator one_of(const std::string& option, const std::vector<std::string>& names, const std::vector<int>& values) {
     return CLI::Validator(
-        [](std::string& text) { return text.empty() ? std::string("needs a value; got an empty one") : std::string(); },
+        [option, names, values](std::string& text) {
+            std::string problem = cli::choice_problem(text, option, names);
+            if (!problem.empty()) return problem;
+            if (!values.empty()) {
+                const auto k = static_cast<std::size_t>(std::find(names.begin(), names.end(), text) - names.begin());
+                text = std::to_string(values[k]);
+            }
+            return std::string();
+        },
         "", "");
+}
+
+std::string names_shown(const std::vector<std::string>& names) {
+    std::string shown;
+    for (const std::string& name : names) shown += (shown.empty() ? "" : "|") + name;
+    return shown;
 }
 
 CLI::Option* add_scene_option(CLI::App& cmd, std::string& scene_file) {
@@ -41,46 +61,45 @@ CLI::Option* add_threads_option(CLI::App& cmd, int& threads) {
 }
 
 CLI::Option* add_real_option(CLI::App& cmd, RealType& real) {
-    const std::map<std::string, RealType> types = {{"float", RealType::float_},
-                                                   {"double", RealType::double_},
-                                                   {"long-double", RealType::long_double},
-                                                   {"quad", RealType::quad_}};
+    std::vector<std::string> names;
+    std::vector<int> values;
+    for (const RealType type : {RealType::float_, RealType::double_, RealType::long_double, RealType::quad_}) {
+        names.emplace_back(real_type_name(type));
+        values.push_back(static_cast<int>(type));
+    }
     return cmd.add_option("--real", real,
                           "The type every number is computed in: float (24-bit significand), double (53, the\n"
                           "default), long-double (x87, 64) or quad (__float128, 113)")
-        ->type_name("TYPE")
-        ->transform(CLI::CheckedTransformer(types))
+        ->type_name(names_shown(names))
+        ->transform(one_of("--real", names, values))
         ->default_str("double");
 }
 
-CLI::Option* add_lang_option(CLI::App& cmd, std::string& lang, const std::string& applies_to) {
-    return cmd.add_option("--lang", lang, applies_to + "pl or en (default: Polish when LANG starts with pl)")
-        ->check(CLI::IsMember({"pl", "en"}))
-        ->option_text("pl|en");
+CLI::Option* add_format_option(CLI::App& cmd, std::string& format, const std::vector<std::string>& names,
+                               const std::string& description) {
+    return cmd.add_option("--format", format, description)
+        ->type_name(names_shown(names))
+        ->check(one_of("--format", names))
+        ->default_str(names.front());
 }
 
 CLI::Option* add_formula_option(CLI::App& cmd, Formula& formula) {
     // Only the names: the text becomes the enum's number here, so a number
     // typed on the command line is refused like any other unknown word.
-    const CLI::Validator names(
-        [](std::string& text) {
-            for (const Formula f : all_formulas) {
-                if (text == formula_name(f)) {
-                    text = std::to_string(static_cast<int>(f));
-                    return std::string();
-                }
-            }
-            return "expects article, stable, fma or geometric, got " + text;
-        },
-        "", "");
+    std::vector<std::string> names;
+    std::vector<int> values;
+    for (const Formula f : all_formulas) {
+        names.emplace_back(formula_name(f));
+        values.push_back(static_cast<int>(f));
+    }
     return cmd.add_option("--formula", formula,
                           "How the eye's rays meet a sphere: article (the article's quadratic, the default);\n"
                           "stable (roots from q = C + sign(C)·√delta and Vieta: no cancellation in the near\n"
                           "root); fma (Kahan's discriminant with fused multiply-adds, then the article's roots);\n"
                           "geometric (the discriminant from the ray's distance to the centre, Haines et al.\n"
                           "2019: keeps small far spheres). Shadow rays keep their own test")
-        ->type_name("article|stable|fma|geometric")
-        ->transform(names)
+        ->type_name(names_shown(names))
+        ->transform(one_of("--formula", names, values))
         ->default_str("article");
 }
 
@@ -91,8 +110,9 @@ CLI::Option* add_spp_option(CLI::App& cmd, int& spp) {
             const int n = std::stoi(text);
             if (!valid_spp(n)) {
                 const int below = spp_side(n) * spp_side(n), above = (spp_side(n) + 1) * (spp_side(n) + 1);
-                return "must be a square (1, 4, 9, 16, ...), so that the pixel splits into n × n cells; got " + text +
-                       ", try " + std::to_string(below) + " or " + std::to_string(above);
+                return ui_message("cli_spp_square", {{"value", text},
+                                                     {"below", std::to_string(below)},
+                                                     {"above", std::to_string(above)}});
             }
             return std::string();
         },

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -18,6 +19,15 @@ CLI::Validator whole_number(long min, long max);
 // A check that refuses an empty value (`--scene ''` must not mean "none").
 CLI::Validator non_empty();
 
+// A check that accepts only one of `names` (never a number: CLI11 would take
+// `--real 0` for the enum's value 0); a typo gets "did you mean". With
+// `values`, the name becomes values[k] (an enum's number) for CLI11 to store.
+CLI::Validator one_of(const std::string& option, const std::vector<std::string>& names,
+                      const std::vector<int>& values = {});
+
+// "a|b|c": the names as --help shows them after the option.
+std::string names_shown(const std::vector<std::string>& names);
+
 // --scene FILE: a scene file; not given means the article's built-in scene.
 CLI::Option* add_scene_option(CLI::App& cmd, std::string& scene_file);
 
@@ -31,9 +41,10 @@ CLI::Option* add_threads_option(CLI::App& cmd, int& threads);
 // done in (default double, the article's).
 CLI::Option* add_real_option(CLI::App& cmd, RealType& real);
 
-// --lang pl|en: the language of the text (empty: from LANG). `applies_to`
-// starts the description ("text: " when other formats have no language).
-CLI::Option* add_lang_option(CLI::App& cmd, std::string& lang, const std::string& applies_to = "");
+// --format text|json (or the names given): what the command writes; the
+// first name is the default.
+CLI::Option* add_format_option(CLI::App& cmd, std::string& format, const std::vector<std::string>& names,
+                               const std::string& description);
 
 // --formula article|stable|fma|geometric: how the eye's rays meet a sphere
 // (default article, the article's quadratic).

@@ -18,8 +18,12 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include "app/cli_errors.hpp"
+#include "app/cli_values.hpp"
 #include "app/commands.hpp"
-#include "util/edit_distance.hpp"
+#include "app/global_options.hpp"
+#include "scene/scene_json.hpp"
+#include "trace/messages.hpp"
 #include "util/errors.hpp"
 #include "util/printable.hpp"
 #include "util/interrupt.hpp"
@@ -45,17 +49,29 @@ void report(const std::string& what) { fmt::print(stderr, "promyk: {}\n", shown(
 
 // "unknown command 'Render'; did you mean 'render'? ..."
 std::string unknown_command_message(const std::string& typed, const std::vector<std::string>& commands) {
-    std::string lower = typed;
-    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     std::string list;
     for (const std::string& command : commands) list += (list.empty() ? "" : ", ") + command;
-    for (const std::string& command : commands) {
-        // the same but for case, or a letter or two off (rendr, trcae)
-        if (promyk::edit_distance(lower, command) <= 2)
-            return fmt::format("unknown command '{}'; did you mean '{}'? The commands are {}; see promyk --help",
-                               typed, command, list);
+    // the same but for case, or a letter or two off (rendr, trcae)
+    const std::string suggestion = promyk::cli::closest_name(typed, commands);
+    if (!suggestion.empty())
+        return promyk::ui_message("cli_unknown_command_suggest",
+                                  {{"command", typed}, {"suggestion", suggestion}, {"names", list}});
+    return promyk::ui_message("cli_unknown_command", {{"command", typed}, {"names", list}});
+}
+
+// A command with commands of its own (scene, bench) says how to see theirs;
+// its own footer, if any, follows. The top-level footer is set after the
+// commands, so they do not inherit its "promyk COMMAND" line.
+void add_command_footers(CLI::App& app, const std::string& path) {
+    for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+        const std::string sub_path = path + " " + sub->get_name();
+        if (!sub->get_subcommands([](CLI::App*) { return true; }).empty()) {
+            const std::string own = sub->get_footer();
+            sub->footer(fmt::format("Run '{} COMMAND --help' for a command's options.{}", sub_path,
+                                    own.empty() ? "" : "\n" + own));
+        }
+        add_command_footers(*sub, sub_path);
     }
-    return fmt::format("unknown command '{}'; the commands are {}; see promyk --help", typed, list);
 }
 
 std::string where_of(const promyk::InputError& error) {
@@ -76,21 +92,33 @@ const char* signal_name(int signal_number) {
     }
 }
 
-// Reports the exception being handled and returns the exit code for it.
-int exit_code_for_failure(const std::string& name) {
+// Reports the exception being handled and returns the exit code for it;
+// `path` is the command ("promyk scene check") a usage error points to.
+int exit_code_for_failure(const std::string& path) {
     // A signal that arrives while promyk is blocked (reading a scene from a
     // FIFO, opening a FIFO for output) makes the call fail with EINTR, which
     // surfaces as an input or output error: the signal is what happened.
     if (const int signal_number = promyk::interrupt_signal()) {
-        report(fmt::format("interrupted by {}; no output file was written", signal_name(signal_number)));
+        report(promyk::ui_message("cli_interrupted", {{"signal", signal_name(signal_number)}}));
         return 128 + signal_number;
     }
     try {
         throw;
     } catch (const promyk::UsageError& error) {
         report(error.what());
-        fmt::print(stderr, "Run 'promyk {} --help' for the options.\n", name);
+        fmt::print(stderr, "{}\n", promyk::app::run_help_line(path));
         return 2;
+    } catch (const promyk::SceneErrors& errors) {
+        // Every fault of the scene, each on its line with its pointer.
+        for (const promyk::SceneFault& fault : errors.faults)
+            report(fault.where.empty() ? fmt::format("{}: {}", errors.file, fault.what)
+                                       : fmt::format("{}: {}: {}", errors.file, fault.where, fault.what));
+        if (errors.more > 0 || !errors.counted)
+            report(fmt::format("{}: {}", errors.file,
+                               promyk::ui_message(errors.counted ? "scene_more_faults" : "scene_more_faults_at_least",
+                                                  {{"count", std::to_string(errors.more)},
+                                                   {"limit", std::to_string(promyk::max_collected_faults)}})));
+        return 3;
     } catch (const promyk::InputError& error) {
         report(fmt::format("{}: {}", where_of(error), error.what()));
         return 3;
@@ -100,18 +128,18 @@ int exit_code_for_failure(const std::string& name) {
     } catch (const promyk::BrokenPipe&) {
         return 128 + SIGPIPE;  // the reader quit: quietly, as if SIGPIPE had ended us
     } catch (const promyk::Interrupted& error) {
-        report(fmt::format("interrupted by {}; no output file was written", signal_name(error.signal_number)));
+        report(promyk::ui_message("cli_interrupted", {{"signal", signal_name(error.signal_number)}}));
         return 128 + error.signal_number;
     } catch (const std::bad_alloc&) {
-        report("out of memory");
+        report(promyk::ui_message("cli_out_of_memory"));
         return 70;
     } catch (const std::system_error& error) {
         // fmt::print to standard output when its reader has quit.
         if (error.code().value() == EPIPE) return 128 + SIGPIPE;
-        report(fmt::format("internal error (a bug in promyk, please report it): {}", error.what()));
+        report(promyk::ui_message("cli_internal_error", {{"what", error.what()}}));
         return 70;
     } catch (const std::exception& error) {
-        report(fmt::format("internal error (a bug in promyk, please report it): {}", error.what()));
+        report(promyk::ui_message("cli_internal_error", {{"what", error.what()}}));
         return 70;
     }
 }
@@ -127,12 +155,7 @@ int main(int argc, char** argv) {
         "promyk"};
     app.set_version_flag("--version", fmt::format("promyk {}", PROMYK_VERSION));
     app.require_subcommand(1);
-    app.footer(
-        "Run 'promyk COMMAND --help' for a command's options.\n"
-        "Exit codes: 0 success, 1 a negative answer (diff diverges, --answers wrong), 2 bad command line,\n"
-        "3 bad input file, 4 output not written,\n"
-        "129/130/143 interrupted (nothing half-written), 141 reader of standard output quit,\n"
-        "70 internal error.");
+    app.get_formatter()->label("REQUIRED", "(required)");
 
     const auto render = promyk::app::setup_render(app);
     const auto trace = promyk::app::setup_trace(app);
@@ -141,10 +164,32 @@ int main(int argc, char** argv) {
     const auto scene = promyk::app::setup_scene(app);
     const auto diff = promyk::app::setup_diff(app);
     const std::vector<std::string> commands = {"render", "trace", "lesson", "scene", "diff", "bench"};
+    add_command_footers(app, "promyk");
+    promyk::app::describe_global_options(app);
+    app.footer(
+        "Run 'promyk COMMAND --help' for a command's options. --help is always in English; --lang\n"
+        "chooses the language of everything else.\n"
+        "Exit codes: 0 success, 1 a negative answer (diff diverges, --answers wrong), 2 bad command line,\n"
+        "3 bad input file, 4 output not written,\n"
+        "129/130/143 interrupted (nothing half-written), 141 reader of standard output quit,\n"
+        "70 internal error.");
+
+    // --lang and --digits first, wherever they stand: the language words
+    // every error after them.
+    std::vector<std::string> args(argv + 1, argv + argc);
+    try {
+        promyk::app::take_global_options(args);
+    } catch (const promyk::UsageError& error) {
+        report(error.what());
+        const auto command = std::find_if(args.begin(), args.end(), [&](const std::string& arg) {
+            return std::find(commands.begin(), commands.end(), arg) != commands.end();
+        });
+        fmt::print(stderr, "{}\n", promyk::app::run_help_line(command == args.end() ? "promyk" : "promyk " + *command));
+        return 2;
+    }
 
     // The command is the first argument that is not an option; check it
     // here, so that a typo gets a suggestion and `promyk help` gets help.
-    std::vector<std::string> args(argv + 1, argv + argc);
     if (!args.empty() && args[0] == "help") {
         // promyk help [COMMAND ...]: the same as promyk [COMMAND ...] --help.
         args.erase(args.begin());
@@ -157,10 +202,11 @@ int main(int argc, char** argv) {
     }
     if (args.empty()) {
         fmt::print(stderr, "{}", app.help());
-        report("a command is required: render, trace, lesson, scene, diff or bench");
+        report(promyk::ui_message("cli_no_command"));
         return 2;
     }
     const std::string name = !args[0].empty() && args[0][0] != '-' ? args[0] : "";
+    std::string path = "promyk";
 
     try {
         std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
@@ -168,10 +214,11 @@ int main(int argc, char** argv) {
     } catch (const CLI::Success& done) {
         return app.exit(done);  // --help or --version: printed to stdout
     } catch (const CLI::ParseError& error) {
-        report(error.what());
-        fmt::print(stderr, "Run 'promyk {}--help' for the options.\n", name.empty() ? "" : name + " ");
+        report(promyk::app::parse_error_message(error, app));
+        fmt::print(stderr, "{}\n", promyk::app::run_help_line(promyk::app::command_path(app)));
         return 2;
     }
+    path = promyk::app::command_path(app);
 
     const std::function<int()>& run = name == "render"  ? render
                                       : name == "trace"  ? trace
@@ -186,6 +233,6 @@ int main(int argc, char** argv) {
         if (std::fflush(stdout) != 0) promyk::throw_write_error("standard output", errno);
         return code;
     } catch (...) {
-        return exit_code_for_failure(name);
+        return exit_code_for_failure(path);
     }
 }

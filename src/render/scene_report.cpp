@@ -129,10 +129,6 @@ Probe probe_pane(const Scene& scene, int w) {
     return probe;
 }
 
-std::string object_name(const Scene& scene, std::size_t k) {
-    return k < scene.spheres.size() ? fmt::format("sphere {}", k) : fmt::format("plane {}", k - scene.spheres.size());
-}
-
 void add_contents(const Scene& scene, SceneReport& report) {
     report.contents.push_back(fmt::format("name \"{}\", pane at z_E = {}, background {}", scene.name, scene.z_E,
                                           colour_text(scene.background)));
@@ -174,7 +170,7 @@ void add_stages(const Scene& scene, SceneReport& report) {
             "article: the article's program and nothing else (one sphere in front of the eye, one white light, the "
             "default material, grey, no shadows): its image and every traced value are the program's, bit for bit");
     for (const StageNote& note : stage_notes(scene, stages)) {
-        const std::string why = message(Language::en, note.reason);
+        const std::string why = ui_message(note.reason);
         if (note.runs)
             report.stages.push_back(fmt::format("{}: {} ({})", note.id, why, stage_formula(note.id)));
         else
@@ -182,67 +178,59 @@ void add_stages(const Scene& scene, SceneReport& report) {
     }
 }
 
+// Warnings are in the run's language (render prints them on stderr).
+std::string warning(std::string_view id, const MessageArgs& args) { return ui_message(id, args); }
+
+std::string index(std::size_t k) { return std::to_string(k); }
+
 void add_geometry_warnings(const Scene& scene, SceneReport& report) {
     for (std::size_t k = 0; k < scene.spheres.size(); ++k) {
         const Sphere& s = scene.spheres[k];
         const double outside = length_squared(s.S) - s.r * s.r;  // as the article's program computes it
         if (outside < 0)
-            report.warnings.push_back(fmt::format(
-                "the eye is inside sphere {} (|S|² − r² < 0): it sees the sphere's inside (the far root)", k));
+            report.warnings.push_back(warning("scene_warn_eye_inside", {{"k", index(k)}}));
         else if (outside == 0)
-            report.warnings.push_back(fmt::format(
-                "the eye lies on the surface of sphere {} (|S|² − r² = 0): the rays that enter it see its inside",
-                k));
-        if (s.S.z + s.r <= 0)
-            report.warnings.push_back(fmt::format(
-                "sphere {} lies wholly behind the eye (z_S + r <= 0) and is not drawn; the article's program, which "
-                "never checks t > 0, would draw it (a trace shows its t and why it is rejected)",
-                k));
+            report.warnings.push_back(warning("scene_warn_eye_on", {{"k", index(k)}}));
+        if (s.S.z + s.r <= 0) report.warnings.push_back(warning("scene_warn_behind", {{"k", index(k)}}));
         for (std::size_t l = 0; l < scene.lights.size(); ++l)
             if (length_squared(scene.lights[l].L - s.S) < s.r * s.r)
-                report.warnings.push_back(fmt::format(
-                    "light {} is inside sphere {}: no point of the sphere's outside faces it", l, k));
+                report.warnings.push_back(warning("scene_warn_light_inside", {{"l", index(l)}, {"k", index(k)}}));
     }
     for (std::size_t k = 0; k < scene.planes.size(); ++k) {
         const UnitPlane plane = unit_plane(scene.planes[k]);
         if (plane.NQ == 0)
-            report.warnings.push_back(fmt::format(
-                "the eye lies in plane {} (n̂·Q = 0): the plane is seen edge-on, as a line no ray hits", k));
+            report.warnings.push_back(warning("scene_warn_eye_in_plane", {{"k", index(k)}}));
         else if (!plane_in_view(plane, scene.z_E))
-            report.warnings.push_back(fmt::format(
-                "plane {} is outside the pane's view: no ray through the pane meets it in front of the eye", k));
+            report.warnings.push_back(warning("scene_warn_plane_out", {{"k", index(k)}}));
     }
     for (std::size_t l = 0; l < scene.lights.size(); ++l)
-        if (scene.lights[l].I == 0)
-            report.warnings.push_back(fmt::format("light {}'s intensity I is 0: it adds nothing to the image", l));
+        if (scene.lights[l].I == 0) report.warnings.push_back(warning("scene_warn_dark_light", {{"l", index(l)}}));
 }
 
 void add_probe_warnings(const Scene& scene, int probe_w, SceneReport& report) {
     const Probe probe = probe_pane(scene, probe_w);
+    const std::string w = std::to_string(probe_w);
     if (probe.non_finite > 0) {
-        report.warnings.push_back(
-            fmt::format("{} of {} pixels of a {} × {} pane are non-finite: the numbers leave the range of a double",
-                        probe.non_finite, probe.pixels, probe_w, probe_w));
+        report.warnings.push_back(warning("scene_warn_non_finite", {{"count", std::to_string(probe.non_finite)},
+                                                                    {"pixels", std::to_string(probe.pixels)},
+                                                                    {"w", w}}));
         return;  // what the other pixels see says little
     }
     for (std::size_t k = 0; k < probe.object_seen.size(); ++k) {
         if (probe.object_seen[k]) continue;
         // A sphere behind the eye and a plane out of view were named above.
-        if (k < scene.spheres.size() ? scene.spheres[k].S.z + scene.spheres[k].r <= 0
-                                     : !plane_in_view(unit_plane(scene.planes[k - scene.spheres.size()]), scene.z_E))
+        const bool sphere = k < scene.spheres.size();
+        if (sphere ? scene.spheres[k].S.z + scene.spheres[k].r <= 0
+                   : !plane_in_view(unit_plane(scene.planes[k - scene.spheres.size()]), scene.z_E))
             continue;
-        report.warnings.push_back(fmt::format(
-            "no pixel of a {0} × {0} pane sees {1}: it is outside the pane's view, hidden behind another object, "
-            "or too small",
-            probe_w, object_name(scene, k)));
+        report.warnings.push_back(warning(sphere ? "scene_warn_unseen_sphere" : "scene_warn_unseen_plane",
+                                          {{"w", w}, {"k", index(sphere ? k : k - scene.spheres.size())}}));
     }
     if (probe.hits == 0) return;
     for (std::size_t l = 0; l < probe.light_faced.size(); ++l)
         if (!probe.light_faced[l])
-            report.warnings.push_back(fmt::format(
-                "no visible surface faces light {} (of the {} pixels of a {} × {} pane that see an object, none "
-                "has D = N·K > 0 for it)",
-                l, probe.hits, probe_w, probe_w));
+            report.warnings.push_back(
+                warning("scene_warn_unfaced", {{"l", index(l)}, {"hits", std::to_string(probe.hits)}, {"w", w}}));
 }
 
 }  // namespace

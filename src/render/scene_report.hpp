@@ -18,7 +18,8 @@ struct SceneReport {
 };
 
 // Examines the scene. The stages are plan_stages' (render/stages.hpp), with
-// the reasons of lessons/messages.json in English. Most warnings are
+// the reasons of lessons/messages.json in the run's language, as are the
+// warnings. Most warnings are
 // geometry (a light inside a sphere, a sphere behind the eye, the eye inside
 // a sphere or in a plane, a plane outside the pane's view); those that
 // depend on what the pixels see (an object no pixel sees, a light no visible

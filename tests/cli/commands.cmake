@@ -83,7 +83,7 @@ promyk_cli_test(scene_check_behind ARGS scene check ${scenes}/behind_eye.json EX
 promyk_cli_test(scene_check_light_behind ARGS scene check ${scenes}/light_behind.json EXIT 0 STDOUT "no visible surface faces light 0")
 promyk_cli_test(scene_check_far ARGS scene check ${scenes}/far_pane.json EXIT 0 STDOUT "4096 of 4096 pixels of a 64 × 64 pane are non-finite")
 promyk_cli_test(scene_check_bad ARGS scene check ${scenes}/negative_radius.json EXIT 3 STDERR "negative_radius.json: /spheres/0/r")
-promyk_cli_test(scene_check_missing ARGS scene check EXIT 2 STDERR "file")
+promyk_cli_test(scene_check_missing ARGS scene check EXIT 2 STDERR "promyk scene check needs FILE")
 promyk_cli_test(scene_no_kind ARGS scene EXIT 2)
 # The dump is the committed article.json byte for byte (an independent text).
 add_test(NAME cli.scene_dump
