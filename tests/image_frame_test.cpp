@@ -213,7 +213,7 @@ TEST_CASE("legend numbers are short, and Polish ones take a comma and a minus si
     const Legend legend = map_legend(MapKind::error, &scale, Language::en);
     REQUIRE(legend.bar);
     REQUIRE(legend.bar->ticks.size() == 3);  // 1e-17, 1e-16, 1e-15
-    CHECK(legend.bar->ticks[1].text == "1e-16");
+    CHECK(legend.bar->ticks[1].text == "1e−16");
     CHECK(legend.bar->ticks[1].t == Approx(0.5));
 }
 

@@ -239,7 +239,7 @@ int run_lesson(const LessonOptions& options) {
             names += (names.empty() ? "" : ", ") + name;
             if (hint.empty() && edit_distance(options.name, name) <= 2) hint = ui_message("did_you_mean", {{"name", name}});
         }
-        throw UsageError(ui_message("lesson_unknown", {{"name", options.name}, {"hint", hint}, {"names", names}}));
+        throw UsageError(ui_message("lesson_unknown", {{"name", options.name}, {"hint", hint.empty() ? "." : hint}, {"names", names}}));
     }
     const Lesson& lesson = *found;
     // Each column's numbers: real type and formula (one for all, or one a column).

@@ -37,6 +37,7 @@
 #include "trace/messages.hpp"
 #include "util/errors.hpp"
 #include "util/printable.hpp"
+#include "util/wrap.hpp"
 #include "util/output_file.hpp"
 
 namespace promyk::app {
@@ -306,7 +307,7 @@ int run_render(const RenderOptions& options) {
     // disc): said on stderr, so a surprising image has its reason beside it.
     if (!options.scene_file.empty())
         for (const std::string& warning : report_scene(scene).warnings)
-            fmt::print(stderr, "promyk: {}\n", printable(ui_message("scene_warning", {{"text", warning}})));
+            fmt::print(stderr, "{}\n", wrap_text("promyk: " + printable(ui_message("scene_warning", {{"text", warning}})), 4));
     // A coloured scene and a map need an RGB format: refused before any file is created.
     std::optional<MapKind> map_kind;
     if (!options.map.empty()) {

@@ -12,6 +12,7 @@
 #include "scene/scene_json.hpp"
 #include "trace/messages.hpp"
 #include "util/printable.hpp"
+#include "util/wrap.hpp"
 
 namespace promyk::app {
 
@@ -20,13 +21,14 @@ namespace {
 void print_list(std::string& out, const std::string& heading, const std::vector<std::string>& items) {
     if (items.empty()) return;
     out += fmt::format("{}:\n", heading);
-    for (const std::string& item : items) out += fmt::format("  - {}\n", printable(item));
+    // Each item wrapped to 80 columns under its own text.
+    for (const std::string& item : items) out += wrap_text("  - " + printable(item), 4) + "\n";
 }
 
 int run_check(const std::string& file) {
     const Scene scene = load_scene_file(file);
     const SceneReport report = report_scene(scene);
-    std::string out = ui_message("scene_check_valid", {{"file", printable(file)}}) + "\n";
+    std::string out = wrap_text(ui_message("scene_check_valid", {{"file", printable(file)}}), 2) + "\n";
     print_list(out, ui_message("scene_check_contains"), report.contents);
     print_list(out, ui_message("scene_check_runs"), report.stages);
     print_list(out, ui_message("scene_check_skips"), report.skipped);

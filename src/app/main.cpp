@@ -26,6 +26,7 @@
 #include "trace/messages.hpp"
 #include "util/errors.hpp"
 #include "util/printable.hpp"
+#include "util/wrap.hpp"
 #include "util/interrupt.hpp"
 #include "util/output_file.hpp"
 
@@ -45,7 +46,8 @@ std::string shown(const std::string& text) {
     return safe;
 }
 
-void report(const std::string& what) { fmt::print(stderr, "promyk: {}\n", shown(what)); }
+// One message, wrapped to 80 columns (continuation lines indented).
+void report(const std::string& what) { fmt::print(stderr, "{}\n", promyk::wrap_text("promyk: " + shown(what), 4)); }
 
 // "unknown command 'Render'; did you mean 'render'? ..."
 std::string unknown_command_message(const std::string& typed, const std::vector<std::string>& commands) {

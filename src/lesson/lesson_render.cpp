@@ -244,7 +244,8 @@ std::string text_paragraphs(const std::string& text, std::size_t indent, std::si
             if (!out.empty() && out.compare(out.size() - 2, 2, "\n\n") != 0) out += "\n";
         } else if (line.rfind("    ", 0) == 0 && hang == 0 && paragraph.empty()) {
             out += pad + line + "\n";  // indented code
-        } else if (line.rfind("|", 0) == 0) {
+        } else if (line.rfind("|", 0) == 0 && line.size() > 1 && line.back() == '|') {
+            // A Markdown table row starts and ends with a bar; "|K|² is ..." is prose.
             flush();
             out += pad + plain(line) + "\n";
         } else if (const std::size_t marker = list_marker(line)) {

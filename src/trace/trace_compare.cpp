@@ -56,17 +56,22 @@ std::string pad(const std::string& text, std::size_t width) {
 // `lead` + `value` + "   " + `note` on one line when it fits 80 columns;
 // else the value broken after its separators under the lead, and the note
 // on a line of its own.
-std::string fit_row(const std::string& lead, const std::string& value, const std::string& note, Language language) {
+std::string fit_row(const std::string& lead, const std::string& value, const std::string& note, Language language,
+                    std::string separator = "") {
     constexpr std::size_t columns = 80;
     const std::string tail = note.empty() ? "" : "   " + note;
     if (display_width(lead) + display_width(value) + display_width(tail) <= columns) return lead + value + tail + "\n";
-    const std::string separator = language == Language::pl ? "; " : ", ";
+    if (separator.empty()) separator = language == Language::pl ? "; " : ", ";
     const std::string indent(display_width(lead), ' ');
     std::string out = lead;
     std::size_t width = display_width(lead), start = 0;
     while (start < value.size()) {
-        const std::size_t found = value.find(separator, start);
-        const std::size_t end = found == std::string::npos ? value.size() : found + separator.size();
+        // English values break after ", " as well as "; " (Polish numbers hold commas)
+        std::size_t found = value.find(separator, start);
+        std::size_t length = separator.size();
+        if (language == Language::en && separator == "; ")
+            if (const std::size_t comma = value.find(", ", start); comma < found) found = comma, length = 2;
+        const std::size_t end = found == std::string::npos ? value.size() : found + length;
         std::string piece = value.substr(start, end - start);
         if (width > indent.size() && width + display_width(piece) > columns) {
             while (!out.empty() && out.back() == ' ') out.pop_back();
@@ -232,7 +237,7 @@ std::string format_comparison(const std::vector<PixelTrace>& traces, const Vocab
                                      {{"branch", message(language, "branch_name_" + std::string(branch_name(trace.branch)))},
                                       {"I_P", result},
                                       {"grey", levels}}),
-                       "", language);
+                       "", language, "; ");
     }
     return out;
 }

@@ -197,7 +197,9 @@ std::string narrow_steps(const PixelTrace& trace, const Vocabulary& vocabulary, 
             out += wrap(std::string(indent, ' '), options.language == Language::pl ? entry->pl : entry->en, indent);
         out += wrap(std::string(indent, ' ') + "= ",
                     step_value_text(step, vocabulary, key, options.language, trace.header.real, options.digits),
-                    indent + 2, options.language == Language::pl ? "; " : " ");
+                    indent + 2,
+                    // a word ("behind the eye: ...") breaks at spaces; a Polish vector only after "; "
+                    options.language == Language::pl && !std::holds_alternative<std::string>(step.value) ? "; " : " ");
         const std::string mark = digits_lost_mark(step, trace, options.language);
         if (!mark.empty()) out += std::string(indent, ' ') + mark + "\n";
     }
