@@ -400,9 +400,9 @@ TEST_CASE("a placeholder in a group shows that group's value; {t_hit} is the top
         INFO(text);
         // The block is reflowed to 80 columns: compare with single spaces.
         const std::string flat = std::regex_replace(text, std::regex(R"(\s+)"), " ");
-        CHECK(flat.find("t0=" + number_text(t0, language) + " ") != std::string::npos);
-        CHECK(flat.find("t1=" + number_text(t1, language) + " ") != std::string::npos);
-        CHECK(flat.find("t=" + number_text(t0, language) + " ") != std::string::npos);  // the nearer one
+        CHECK(flat.find("t0=" + shown_number(t0, language, 4) + " ") != std::string::npos);
+        CHECK(flat.find("t1=" + shown_number(t1, language, 4) + " ") != std::string::npos);
+        CHECK(flat.find("t=" + shown_number(t0, language, 4) + " ") != std::string::npos);  // the nearer one
         CHECK(flat.find("D=" + number_text(D, language, 5)) != std::string::npos);
         const Vec3d K = std::get<Vec3d>(*step_in(both, {{"light", 0}}, Key::K));
         CHECK(flat.find("K.x=" + number_text(K.x, language, 3)) != std::string::npos);
@@ -410,10 +410,10 @@ TEST_CASE("a placeholder in a group shows that group's value; {t_hit} is the top
         CHECK(flat.find(language == Language::pl ? "nearest=kula 0" : "nearest=sphere 0") != std::string::npos);
         CHECK(flat.find("found1=" + word_text(language, "near")) != std::string::npos);
         CHECK(flat.find("r1 = " + number_text(1.3, language)) != std::string::npos);
-        CHECK(flat.find(language == Language::pl ? "S0 = (−0,5; −0,2; 3,2)" : "S0 = (-0.5, -0.2, 3.2)") != std::string::npos);
+        CHECK(flat.find(language == Language::pl ? "S0 = (−0,5; −0,2; 3,2)" : "S0 = (−0.5, −0.2, 3.2)") != std::string::npos);
         // (2, 5) misses sphere 0: its t0 is not reached, its t is sphere 1's.
         const PixelTrace only = trace_pixel(scene, 8, 2, 5);
-        CHECK(flat.find("<2,5> t0=— t1=" + number_text(std::get<double>(*step_in(only, {{"sphere", 1}}, Key::t)), language)) !=
+        CHECK(flat.find("<2,5> t0=— t1=" + shown_number(std::get<double>(*step_in(only, {{"sphere", 1}}, Key::t)), language, 4)) !=
               std::string::npos);
     }
 }

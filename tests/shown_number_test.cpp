@@ -18,9 +18,10 @@ TEST_CASE("shown_number rounds to significant digits, halves up", "[digits]") {
     CHECK(shown_number(10.240000000000002, Language::en, 4) == "10.24");
     CHECK(shown_number(0.125, Language::en, 2) == "0.13");   // exact tie: away from zero, not to even
     CHECK(shown_number(-0.125, Language::en, 2) == "−0.13");  // U+2212 in both languages
-    CHECK(shown_number(0.5, Language::en, 4) == "0.5");      // trailing zeros dropped
+    CHECK(shown_number(0.5, Language::en, 4) == "0.5");      // exact: trailing zeros dropped
     CHECK(shown_number(2.0, Language::en, 4) == "2");
-    CHECK(shown_number(9.99995, Language::en, 4) == "10");   // carries into a new digit
+    CHECK(shown_number(9.99995, Language::en, 4) == "10.00");  // carries into a new digit; rounded: zeros kept
+    CHECK(shown_number(4.269806787197755, Language::en, 4) == "4.270");
     CHECK(shown_number(0.6957365143147741, Language::en, 4) == "0.6957");
     CHECK(shown_number(1.058008460502604, Language::en, 4) == "1.058");
     CHECK(shown_number(1234.5, Language::en, 4) == "1235");  // 1234.5 is exact: a tie, up
@@ -31,8 +32,11 @@ TEST_CASE("shown_number rounds to significant digits, halves up", "[digits]") {
     CHECK(shown_number(94906265.0, Language::en, 4) == "9.491e+07");
     CHECK(shown_number(0.0001234567, Language::en, 4) == "0.0001235");
     CHECK(shown_number(0.00001234567, Language::en, 4) == "1.235e−05");
-    CHECK(shown_number(1e-300, Language::en, 4) == "1e−300");
-    CHECK(shown_number(3.0000000000000004, Language::en, 4) == "3");
+    CHECK(shown_number(1e-300, Language::en, 4) == "1e−300");  // the shortest text is 1e-300
+    CHECK(shown_number(3.0000000000000004, Language::en, 4) == "3.000");  // rounded, not exact
+    CHECK(shown_number(0.125, Language::en, 4) == "0.125");              // exact: no zeros added
+    CHECK(shown_number(3.2, Language::en, 4) == "3.2");                  // the double 3.2000000000000001776: shortest 3.2
+    CHECK(shown_number(-0.2, Language::en, 4) == "−0.2");
 }
 
 TEST_CASE("zero shows as 0 whatever its sign and digits", "[digits]") {

@@ -41,14 +41,28 @@ std::optional<int>& digits_choice() {
 
 // `exact` rounded to `digits` significant digits, halves away from zero,
 // as %g would lay it out (trailing zeros dropped).
-std::string significant_text(const TypedNumber& exact, int digits) {
+// The significant digits of a number's text ("3.2" 2, "0.0125" 3, "1e-07" 1).
+int significant_digits_of(std::string_view text) {
+    const std::string_view mantissa = text.substr(0, text.find_first_of("eE"));
+    std::string digits;
+    for (const char c : mantissa)
+        if (c >= '0' && c <= '9') digits += c;
+    const std::size_t first = digits.find_first_not_of('0');
+    if (first == std::string::npos) return 1;
+    return static_cast<int>(digits.find_last_not_of('0') - first + 1);
+}
+
+// `short_text`: the value's shortest round-trip text in its type has at
+// most `digits` significant digits, so the value is, as far as its type can
+// tell, that short decimal (3.2, 0.5, 10000): shown without trailing zeros.
+std::string significant_text(const TypedNumber& exact, int digits, bool short_text) {
     std::string d = strip_zeros(exact.digits);
     if (d == "0") return "0";
     // value = 0.d × 10^(point): `point` digits stand before the decimal point.
     int point = static_cast<int>(d.size()) - exact.scale;
     const std::size_t keep = static_cast<std::size_t>(digits);
     // Exact: nothing but zeros is dropped (10000 at 4 digits is 10000).
-    const bool exact_value = d.size() <= keep || d.find_first_not_of('0', keep) == std::string::npos;
+    const bool exact_value = short_text;
     if (d.size() > keep) {
         const bool up = d[keep] >= '5';
         d.resize(keep);
@@ -64,7 +78,11 @@ std::string significant_text(const TypedNumber& exact, int digits) {
             }
         }
     }
-    while (d.size() > 1 && d.back() == '0') d.pop_back();
+    // Trailing zeros say "rounded to this digit": a rounded value keeps them
+    // (4.2698 is 4.270), a short one drops them (0.5, not 0.5000; 3.2, not
+    // 3.200, though the double 3.2 is 3.20000000000000017...).
+    if (exact_value)
+        while (d.size() > 1 && d.back() == '0') d.pop_back();
     const int e = point - 1;  // the first digit's power of ten
     std::string out = exact.negative ? "-" : "";
     // %g's layout, except that a whole number shown exactly keeps its
@@ -97,7 +115,8 @@ int shown_digits(int default_digits) { return digits_choice().value_or(default_d
 std::string shown_number(double value, Language language, int digits) {
     if (value == 0) return "0";
     if (!std::isfinite(value) || digits <= 0) return number_text(value, language);
-    return local_number_text(significant_text(exact_decimal(value), digits), language);
+    const bool short_text = significant_digits_of(fmt::format("{}", value)) <= digits;
+    return local_number_text(significant_text(exact_decimal(value), digits, short_text), language);
 }
 
 std::string shown_real_text(const std::string& text, RealType type, Language language, int digits) {
@@ -105,7 +124,7 @@ std::string shown_real_text(const std::string& text, RealType type, Language lan
     if (!exact) return local_number_text(text, language);  // inf, nan
     if (is_zero(*exact)) return "0";
     if (digits <= 0) return local_number_text(text, language);
-    return local_number_text(significant_text(*exact, digits), language);
+    return local_number_text(significant_text(*exact, digits, significant_digits_of(text) <= digits), language);
 }
 
 std::string local_number_text(std::string_view text, Language language) {

@@ -39,10 +39,11 @@ void set_chosen_digits(int digits);
 int shown_digits(int default_digits);
 
 // A number as people read it: rounded to `digits` significant digits, halves
-// away from zero (as a pupil rounds: 0.125 to 2 digits is 0.13), trailing
-// zeros dropped, in the style of printf's %g (an exponent below 1e-4 or from
-// 10^digits up: 1.235e+04; but a value the digits hold exactly stays whole
-// below 10^15: 10000), written the language's way. `digits` 0 shows
+// away from zero (as a pupil rounds: 0.125 to 2 digits is 0.13); a rounded
+// value keeps its trailing zeros (4.2698 is 4.270), a value whose shortest
+// text is that short drops them (0.5, not 0.5000; 3.2, not 3.200); in the style of printf's %g (an exponent below 1e-4 or from
+// 10^digits up: 1.235e+04; but a short whole value stays whole below 10^15:
+// 10000), written the language's way. `digits` 0 shows
 // every digit: the shortest text that reads back to the same double. Zero
 // is "0" whatever its sign; "nan", "inf", "-inf" as number_text.
 std::string shown_number(double value, Language language, int digits);
