@@ -35,6 +35,7 @@
 #include "render/stages.hpp"
 #include "render/trace_size.hpp"
 #include "trace/messages.hpp"
+#include "trace/number_text.hpp"
 #include "util/errors.hpp"
 #include "util/printable.hpp"
 #include "util/wrap.hpp"
@@ -224,32 +225,56 @@ std::string image_description(const RenderOptions& options, const Scene& scene, 
                               int height) {
     const std::string what = map ? fmt::format("{}, ", map->description()) : std::string();
     if (options.scale == 1 && !options.grid && width == options.w && height == options.w)
-        return fmt::format("{}{} × {} pixels, scene \"{}\"", what, options.w, options.w, scene.name);
-    return fmt::format("{}{} × {} pixels: the {} × {} pane at scale {}{}, scene \"{}\"", what, width, height,
-                       options.w, options.w, options.scale, options.grid ? " with a grid" : "", scene.name);
+        return ui_message("render_image", {{"what", what}, {"w", std::to_string(options.w)}, {"scene", scene.name}});
+    return ui_message("render_image_scaled", {{"what", what},
+                                              {"width", std::to_string(width)},
+                                              {"height", std::to_string(height)},
+                                              {"w", std::to_string(options.w)},
+                                              {"scale", std::to_string(options.scale)},
+                                              {"grid", options.grid ? ui_message("render_with_grid") : ""},
+                                              {"scene", scene.name}});
+}
+
+// A map category's name in the run's language: the branches and notes by
+// their names (messages_words.json), the error and digits-lost map's own
+// words as their legends name them; a range of values is already worded.
+std::string category_text(const std::string& name) {
+    for (const char* branch : {"miss", "dark", "lit", "shadowed", "non-finite"})
+        if (name == branch) return ui_message("branch_name_" + name);
+    if (name == "tangent") return ui_message("note_name_tangent");
+    if (name == "behind the eye") return ui_message("note_name_behind");
+    if (name == "exact") return ui_message("map_legend_exact");
+    if (name == "branch differs") return ui_message("map_legend_branch_differs");
+    if (name == "none lost") return ui_message("map_legend_none_lost");
+    return name;
 }
 
 // A map's categories on stderr, each with its count and its first pixel in
 // row order, to trace: the legend a teacher reads beside the image.
 void print_map_stats(const MapKernel& map, const RenderOptions& options) {
     const MapTally tally = map.tally();
-    fmt::print(stderr, "statistics ({}; the first pixel of each, in row order, to look at with promyk trace --pixel "
-                       "I,J --w {}{}{}{}{}):\n",
-               map.description(), options.w, options.scene_file.empty() ? "" : " --scene " + printable(options.scene_file),
-               options.real == RealType::double_ ? "" : fmt::format(" --real {}", real_type_name(options.real)),
-               options.formula == Formula::article ? "" : fmt::format(" --formula {}", formula_name(options.formula)),
-               options.spp == 1 ? "" : fmt::format(" --spp {}", options.spp));
+    const std::string command = fmt::format(
+        "promyk trace --pixel I,J --w {}{}{}{}{}", options.w,
+        options.scene_file.empty() ? "" : " --scene " + printable(options.scene_file),
+        options.real == RealType::double_ ? "" : fmt::format(" --real {}", real_type_name(options.real)),
+        options.formula == Formula::article ? "" : fmt::format(" --formula {}", formula_name(options.formula)),
+        options.spp == 1 ? "" : fmt::format(" --spp {}", options.spp));
+    fmt::print(stderr, "{}\n",
+               wrap_text(ui_message("map_stats_heading", {{"what", map.description()}, {"command", command}}), 2));
     for (const MapTally::Category& category : tally.categories) {
         if (category.count == 0 && !category.listed_if_empty) continue;
-        if (category.count == 0) {
-            fmt::print(stderr, "  {}: 0 pixels\n", category.name);
-        } else {
-            fmt::print(stderr, "  {}: {} {}, e.g. ({}, {})\n", category.name, category.count,
-                       category.count == 1 ? "pixel" : "pixels", category.first_i, category.first_j);
-        }
+        const MessageArgs args = {{"name", category_text(category.name)},
+                                  {"pixels", counted(category.count, "render_pixels")},
+                                  {"i", std::to_string(category.first_i)},
+                                  {"j", std::to_string(category.first_j)}};
+        fmt::print(stderr, "{}\n", ui_message(category.count == 0 ? "map_stats_category" : "map_stats_category_first", args));
     }
     if (tally.has_largest)
-        fmt::print(stderr, "  largest: {:.3g} at ({}, {})\n", tally.largest, tally.largest_i, tally.largest_j);
+        fmt::print(stderr, "{}\n",
+                   ui_message("map_stats_largest",
+                              {{"value", local_number_text(fmt::format("{:.3g}", tally.largest), ui_language())},
+                               {"i", std::to_string(tally.largest_i)},
+                               {"j", std::to_string(tally.largest_j)}}));
     if (map.kind() == MapKind::error && map.colour_scale()) {
         const Language language = ui_language();
         fmt::print(stderr, "{}\n",
@@ -265,17 +290,20 @@ void print_map_stats(const MapKernel& map, const RenderOptions& options) {
 void print_stats(const RenderStats& stats, const Scene& scene, int spp) {
     std::string stages;
     for (const std::string& id : effect_ids(scene, plan_stages(scene))) stages += (stages.empty() ? "" : ", ") + id;
-    fmt::print(stderr, "statistics:\n");
-    fmt::print(stderr, "  stages: {}\n", stages);
-    fmt::print(stderr, "  rays cast: {} primary ({} a pixel), {} shadow\n", stats.primary_rays,
-               spp == 1 ? std::string("one") : std::to_string(spp), stats.shadow_rays);
-    fmt::print(stderr, "  intersection tests: {} ray-sphere, {} ray-plane\n", stats.sphere_tests, stats.plane_tests);
-    fmt::print(stderr, "  pixels: {} miss, {} dark, {} lit, {} shadowed, {} non-finite\n", stats.count(Branch::miss),
-               stats.count(Branch::dark), stats.count(Branch::lit), stats.count(Branch::shadowed),
-               stats.count(Branch::non_finite));
-    if (spp > 1)
-        fmt::print(stderr, "  pixels whose samples disagree: {} (a pixel's branch is its centre sample's)\n",
-                   stats.disagreeing);
+    const auto line = [](const std::string& text) { fmt::print(stderr, "{}\n", wrap_text(text, 4)); };
+    line(ui_message("render_stats_heading"));
+    line(ui_message("render_stats_stages", {{"stages", stages}}));
+    line(ui_message("render_stats_rays", {{"primary", std::to_string(stats.primary_rays)},
+                                          {"per", spp == 1 ? ui_message("render_stats_one") : std::to_string(spp)},
+                                          {"shadow", std::to_string(stats.shadow_rays)}}));
+    line(ui_message("render_stats_tests",
+                    {{"spheres", std::to_string(stats.sphere_tests)}, {"planes", std::to_string(stats.plane_tests)}}));
+    line(ui_message("render_stats_pixels", {{"miss", std::to_string(stats.count(Branch::miss))},
+                                            {"dark", std::to_string(stats.count(Branch::dark))},
+                                            {"lit", std::to_string(stats.count(Branch::lit))},
+                                            {"shadowed", std::to_string(stats.count(Branch::shadowed))},
+                                            {"non_finite", std::to_string(stats.count(Branch::non_finite))}}));
+    if (spp > 1) line(ui_message("render_stats_disagree", {{"count", std::to_string(stats.disagreeing)}}));
 }
 
 int run_render(const RenderOptions& options) {
@@ -396,24 +424,35 @@ int run_render(const RenderOptions& options) {
 
     // Status on stderr: standard output carries only the product (-o -, --traces -).
     const std::string image_name =
-        image_target.kind == OutputKind::standard_output ? "PNG to standard output" : options.output;
-    fmt::print(stderr, "wrote {} ({})\n", printable(image_name), printable(image_description(options, scene, map.get(), image_width, image_height)));
+        image_target.kind == OutputKind::standard_output ? ui_message("render_png_stdout") : printable(options.output);
+    fmt::print(stderr, "{}\n",
+               wrap_text(ui_message("render_wrote",
+                                    {{"file", image_name},
+                                     {"what", printable(image_description(options, scene, map.get(), image_width,
+                                                                          image_height))}}),
+                         2));
     if (traces) {
-        fmt::print(stderr, "wrote {} ({} {}, {})\n",
-                   traces->target().kind == OutputKind::standard_output ? "traces to standard output"
-                                                                        : printable(options.traces_file),
-                   trace_count, trace_count == 1 ? "trace" : "traces",
-                   byte_size(static_cast<double>(traces->bytes_written())));
+        const std::string file = traces->target().kind == OutputKind::standard_output
+                                     ? ui_message("render_traces_stdout")
+                                     : printable(options.traces_file);
+        fmt::print(stderr, "{}\n",
+                   wrap_text(ui_message("render_wrote_traces",
+                                        {{"file", file},
+                                         {"traces", counted(static_cast<long long>(trace_count), "render_traces")},
+                                         {"size", byte_size(static_cast<double>(traces->bytes_written()))}}),
+                             2));
     }
     if (const long long non_finite = stats.count(Branch::non_finite)) {
         // The render finished; these pixels' numbers overflowed (PRODUCT.md §9).
-        fmt::print(stderr,
-                   "promyk: warning: {} of {} pixels are non-finite: their numbers left the range of a double, so "
-                   "no branch could be decided (drawn as grey 0, or 255 for an intensity of inf); the first is ({}, "
-                   "{}): see promyk trace --pixel {},{} --w {}{}\n",
-                   non_finite, static_cast<long long>(options.w) * options.w, stats.first_non_finite_i, stats.first_non_finite_j,
-                   stats.first_non_finite_i, stats.first_non_finite_j, options.w,
-                   options.scene_file.empty() ? "" : " --scene " + printable(options.scene_file));
+        fmt::print(stderr, "{}\n",
+                   wrap_text("promyk: " + ui_message("render_non_finite",
+                                                     {{"count", std::to_string(non_finite)},
+                                                      {"pixels", std::to_string(static_cast<long long>(options.w) * options.w)},
+                                                      {"i", std::to_string(stats.first_non_finite_i)},
+                                                      {"j", std::to_string(stats.first_non_finite_j)},
+                                                      {"w", std::to_string(options.w)},
+                                                      {"scene", options.scene_file.empty() ? "" : " --scene " + printable(options.scene_file)}}),
+                             4));
     }
     if (options.stats) {
         if (map)
@@ -475,19 +514,8 @@ std::function<int()> setup_render(CLI::App& app) {
         ->type_name("I0,J0,I1,J1")
         ->allow_extra_args(false);
     cmd->add_flag("--force", options->force, "Write a trace file even if it would be larger than about 1 GB");
-    const CLI::Validator map_names(
-        [](std::string& text) {
-            std::string names;
-            const std::size_t count = std::size(map_kinds);
-            for (std::size_t k = 0; k < count; ++k) {
-                if (text == map_name(map_kinds[k])) return std::string();
-                names += (k == 0 ? "" : k + 1 == count ? " or " : ", ") + std::string(map_name(map_kinds[k]));
-            }
-            return "expects " + names + ", got " + text;
-        },
-        "", "");
     cmd->add_option("--map", options->map,
-                    "Draw a per-pixel quantity instead of the shading, in colour (.png or .ppm; README: Maps):\n"
+                    "Draw a per-pixel quantity instead of the shading, in colour (.png or .ppm; docs/maps.md):\n"
                     "branch: the branch taken (miss, dark, lit, shadowed, non-finite) and the notes tangent\n"
                     "and behind the eye, in Okabe-Ito colours; error: |I - I_ref| against quad with the\n"
                     "geometric formula on a log scale from the run's smallest to its largest non-zero\n"
@@ -497,7 +525,7 @@ std::function<int()> setup_render(CLI::App& app) {
                     "--real, --formula and --spp choose what is mapped; --stats counts each category,\n"
                     "names its first pixel and prints the error map's scale")
         ->type_name("branch|error|digits-lost")
-        ->check(map_names);
+        ->check(one_of("--map", {"branch", "error", "digits-lost"}));
     cmd->add_flag("--legend", options->legend,
                   "With --map: add a legend strip below the map, as wide as the image: each colour\n"
                   "with its name in the run's language, the colour bar with its numbers. If the\n"

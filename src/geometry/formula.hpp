@@ -1,5 +1,5 @@
 // The formulas for a ray meeting a sphere (`--formula`), PRODUCT.md and
-// README: the engine's conventions. The formula applies to the eye's rays;
+// docs/conventions.md: the engine's conventions. The formula applies to the eye's rays;
 // shadow rays keep their own test (geometry/segment.hpp).
 #pragma once
 

@@ -1,6 +1,6 @@
 // Intersecting a sphere when the eye may be anywhere: the article's near root
 // first (sphere_article.hpp, unchanged), then, when it is not in front of the
-// eye, the far root. Only a root with t > 0 is a hit (README: the engine's
+// eye, the far root. Only a root with t > 0 is a hit (docs/conventions.md: the engine's
 // conventions): a sphere behind the eye is not drawn, and an eye inside the
 // sphere sees its inside.
 #pragma once

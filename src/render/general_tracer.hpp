@@ -1,6 +1,6 @@
 // The tracer for every scene that is not the article's world: several
 // objects (the nearest hit with t > 0 wins), planes, the eye inside a sphere,
-// several lights, shadows, Phong and colour (README: the engine's
+// several lights, shadows, Phong and colour (docs/conventions.md: the engine's
 // conventions). The stages a scene does not ask for are template switches,
 // chosen once before the pixel loop (render/stages.hpp), so they cost
 // nothing per pixel.

@@ -1,4 +1,6 @@
 #include "render/maps.hpp"
+#include "trace/messages.hpp"
+#include "trace/number_text.hpp"
 
 #include <algorithm>
 #include <array>
@@ -155,7 +157,7 @@ public:
         return sum_rows(rows(), std::move(names));
     }
 
-    std::string description() const override { return "branch map"; }
+    std::string description() const override { return ui_message("map_description_branch"); }
     MapKind kind() const override { return MapKind::branch; }
 };
 
@@ -319,9 +321,10 @@ private:
         return 1 + k;
     }
     std::string bin_name(int b) const {
-        if (b == 0) return fmt::format("below {:g}", scale_->low());
-        if (b == bins() - 1) return fmt::format("{:g} or more", scale_->high());
-        return fmt::format("{:g} to {:g}", edge(b - 1), edge(b));
+        const auto number = [](double v) { return local_number_text(fmt::format("{:g}", v), ui_language()); };
+        if (b == 0) return ui_message("map_bin_below", {{"low", number(scale_->low())}});
+        if (b == bins() - 1) return ui_message("map_bin_above", {{"high", number(scale_->high())}});
+        return ui_message("map_bin_range", {{"low", number(edge(b - 1))}, {"high", number(edge(b))}});
     }
 
     std::optional<ColourScale> scale_;
@@ -340,7 +343,7 @@ public:
              std::optional<ColourScale> scale)
         : ScalarMap(std::move(kernel), w, scale, exact_colour(), true), reference_(std::move(reference)) {}
 
-    std::string description() const override { return "error map against quad with the geometric formula"; }
+    std::string description() const override { return ui_message("map_description_error"); }
     MapKind kind() const override { return MapKind::error; }
 
 protected:
@@ -382,7 +385,7 @@ public:
     DigitsLostMap(std::unique_ptr<Kernel> kernel, int w, RealType real)
         : ScalarMap(std::move(kernel), w, digits_lost_scale(real), none_lost_colour(), false) {}
 
-    std::string description() const override { return "digits-lost map"; }
+    std::string description() const override { return ui_message("map_description_digits-lost"); }
     MapKind kind() const override { return MapKind::digits_lost; }
 
 protected:

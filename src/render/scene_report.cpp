@@ -40,7 +40,7 @@ std::string_view stage_formula(std::string_view id) {
 }
 
 // A plane as the engine uses it: n̂ = n/√(n·n), each component divided, and
-// NQ = n̂·Q (README.md, "The engine's conventions").
+// NQ = n̂·Q (docs/conventions.md, "The engine's conventions").
 struct UnitPlane {
     Vec3d n_hat;
     double NQ;

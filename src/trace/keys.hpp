@@ -27,7 +27,7 @@ enum class Key {
     K_len,       // |K| = sqrt(|K|^2), the distance from P to the light
     K_P,         // K / |K|: the unit direction to the light
     cos_alpha,   // N_P.K_P, the cosine of the angle between them
-    // The extensions (README: the engine's conventions). Several objects:
+    // The extensions (docs/conventions.md: the engine's conventions). Several objects:
     t_far,    // the far root (C + sqrt(delta)) / |E|^2, when the near one is not in front of the eye
     found,    // what an object's test found: near, far, behind, miss, parallel (a word)
     nearest,  // the object hit nearest the eye ("sphere 1", "plane 0"), a word

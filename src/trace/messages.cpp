@@ -55,6 +55,12 @@ void set_ui_language(Language language) { chosen_language() = language; }
 
 std::string ui_message(std::string_view id, const MessageArgs& args) { return message(ui_language(), id, args); }
 
+std::string counted(long long n, std::string_view id) {
+    const long long last = n % 10, tens = n % 100;
+    const char* form = n == 1 ? "_one" : (last >= 2 && last <= 4 && !(tens >= 12 && tens <= 14)) ? "_few" : "_many";
+    return ui_message(std::string(id) + form, {{"n", std::to_string(n)}});
+}
+
 std::string message(Language language, std::string_view id, const MessageArgs& args) {
     const Table& messages = table(language);
     const auto it = messages.find(id);

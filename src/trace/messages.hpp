@@ -33,6 +33,11 @@ std::string message(Language language, std::string_view id, const MessageArgs& a
 // override, e.g. a symbol in the lesson's language), else nothing.
 std::optional<std::string> optional_message(Language language, std::string_view id);
 
+// "3 traces", "3 ślady", "5 śladów": the message `id`_one, `id`_few or
+// `id`_many of the run's language, chosen by Polish grammar (few: 2-4, 22-24,
+// ... but not 12-14), with {n} the count. English's few is its many.
+std::string counted(long long n, std::string_view id);
+
 // A word a trace step holds (what an object's test found, the nearest
 // object, a blocker) in `language`: "sphere 1" -> "kula 1", "far" -> the
 // message word_far. A word messages.json does not know is returned as it is.
