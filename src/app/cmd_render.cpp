@@ -260,7 +260,7 @@ void print_map_stats(const MapKernel& map, const RenderOptions& options) {
         options.formula == Formula::article ? "" : fmt::format(" --formula {}", formula_name(options.formula)),
         options.spp == 1 ? "" : fmt::format(" --spp {}", options.spp));
     fmt::print(stderr, "{}\n",
-               wrap_text(ui_message("map_stats_heading", {{"what", map.description()}, {"command", command}}), 2));
+               wrap_text(ui_message("map_stats_heading", {{"what", map.description()}, {"command", command}}), 4));
     for (const MapTally::Category& category : tally.categories) {
         if (category.count == 0 && !category.listed_if_empty) continue;
         const MessageArgs args = {{"name", category_text(category.name)},
@@ -430,7 +430,7 @@ int run_render(const RenderOptions& options) {
                                     {{"file", image_name},
                                      {"what", printable(image_description(options, scene, map.get(), image_width,
                                                                           image_height))}}),
-                         2));
+                         4));
     if (traces) {
         const std::string file = traces->target().kind == OutputKind::standard_output
                                      ? ui_message("render_traces_stdout")
@@ -440,7 +440,7 @@ int run_render(const RenderOptions& options) {
                                         {{"file", file},
                                          {"traces", counted(static_cast<long long>(trace_count), "render_traces")},
                                          {"size", byte_size(static_cast<double>(traces->bytes_written()))}}),
-                             2));
+                             4));
     }
     if (const long long non_finite = stats.count(Branch::non_finite)) {
         // The render finished; these pixels' numbers overflowed (PRODUCT.md §9).

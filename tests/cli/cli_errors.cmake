@@ -46,7 +46,7 @@ promyk_cli_test(tol_not_a_number ARGS diff a b --tol abc EXIT 2 STDERR "--tol ex
 # the command line and of a scene in the chosen language.
 promyk_cli_test(lang_pl_before ARGS --lang pl trace --pixle 3,4 EXIT 2
                 STDERR "nieznana opcja '--pixle' polecenia promyk trace. czy chodziło o '--pixel'\\?\nOpcje polecenia pokaże 'promyk trace --help'.")
-promyk_cli_test(lang_pl_after ARGS trace --pixel 9,0 --lang=pl EXIT 2 STDERR "leży poza okienkiem 8 × 8")
+promyk_cli_test(lang_pl_after ARGS trace --pixel 9,0 --lang=pl EXIT 2 STDERR "leży poza szybą 8 × 8")
 promyk_cli_test(lang_pl_scene ARGS trace --lang pl --scene ${scenes}/zero_normal.json EXIT 3
                 STDERR "zero_normal.json: /planes/0/n: n \\(wektor normalny płaszczyzny\\) nie może być wektorem zerowym")
 promyk_cli_test(lang_pl_real ARGS render --real flaot --lang pl EXIT 2 EMPTY

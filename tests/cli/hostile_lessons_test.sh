@@ -17,7 +17,9 @@ expect() {
   timeout "${PROMYK_TEST_SECONDS:-10}" "$promyk" "$@" >out.txt 2>err.txt </dev/null
   local code=$?
   if [ "$code" != "$want" ]; then bad "$name: exit $code, expected $want; $(head -c 300 err.txt)"; return; fi
-  if [ -n "$pattern" ] && ! grep -Eq -- "$pattern" err.txt; then bad "$name: stderr lacks /$pattern/: $(head -c 300 err.txt)"; return; fi
+  # messages are wrapped to 80 columns (continuation lines indented by 4): join them
+  sed ':a;N;$!ba;s/\n    / /g' err.txt >joined.txt
+  if [ -n "$pattern" ] && ! grep -Eq -- "$pattern" joined.txt; then bad "$name: stderr lacks /$pattern/: $(head -c 300 err.txt)"; return; fi
   if cat out.txt err.txt | LC_ALL=C tr -d '\n\t' | LC_ALL=C grep -qaP '[\x00-\x1f\x7f]'; then
     bad "$name: a raw control character reached the terminal"; return
   fi

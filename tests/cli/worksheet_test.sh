@@ -64,7 +64,8 @@ joined wrapped.txt >out.txt
 # Nothing readable, or not text: the file is refused (exit 3, with the line).
 printf '# only typos\ndetla = 4,5578\n' >typos.txt
 "$promyk" lesson sphere --lang en --answers typos.txt >out.txt 2>err.txt; code=$?
-[ "$code" = 3 ] && grep -q "^promyk: typos.txt: line 2: unknown key 'detla'; did you mean 'delta'?.*no answer in the file can be read" err.txt &&
+# (errors are wrapped to 80 columns: join the lines before matching)
+[ "$code" = 3 ] && sed ':a;N;$!ba;s/\n    / /g' err.txt | grep -q "^promyk: typos.txt: line 2: unknown key 'detla'; did you mean 'delta'?.*no answer in the file can be read" &&
   [ ! -s out.txt ] && ok || bad "nothing readable: exit $code; $(cat out.txt err.txt)"
 printf 'C = 6,4\n# caf\351\n' >latin1.txt
 "$promyk" lesson sphere --lang en --answers latin1.txt >out.txt 2>err.txt; code=$?
