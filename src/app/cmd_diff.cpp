@@ -10,6 +10,7 @@
 
 #include "app/cli_values.hpp"
 #include "app/commands.hpp"
+#include "util/wrap.hpp"
 #include "app/common_options.hpp"
 #include "lesson/trace_diff.hpp"
 #include "trace/messages.hpp"
@@ -42,7 +43,8 @@ int run_diff(const DiffCommandOptions& options) {
     diff_options.relative_tolerance = options.tol;
     const DiffResult result = diff_inputs(a, b, builtin_vocabulary(), diff_options, language);
     const std::string out = options.format == "json" ? diff_json(result, a, b, diff_options)
-                                                     : diff_report(result, a, b, diff_options, builtin_vocabulary(), language);
+                                                     : wrap_lines(diff_report(result, a, b, diff_options,
+                                                                              builtin_vocabulary(), language));
     std::fputs(out.c_str(), stdout);
     return result.first ? 1 : 0;
 }

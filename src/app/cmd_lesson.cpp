@@ -214,10 +214,10 @@ int run_answers(const LessonOptions& options, LessonView& view, const Kernel& ke
         trace_settings(view, scene, header, exact, kernel.spp(), &exact_pixels);
         checks = check_answers(answers, view.traces, view.others);
     }
-    print(message(view.lesson.language, "answers_heading",
-                  {{"file", shown}, {"lesson", view.lesson.header.name}, {"scene", view.scene_name}, {"w", std::to_string(view.w)},
-                   {"pane", pane_phrase(view.w)}}) +
-          "\n\n" + answers_report(checks, view.traces, view.vocabulary, view.lesson.language, view.others));
+    print(wrap_lines(message(view.lesson.language, "answers_heading",
+                             {{"file", shown}, {"lesson", view.lesson.header.name}, {"scene", view.scene_name},
+                              {"w", std::to_string(view.w)}, {"pane", pane_phrase(view.w)}}) +
+                     "\n\n" + answers_report(checks, view.traces, view.vocabulary, view.lesson.language, view.others)));
     return all_right(checks) ? 0 : 1;
 }
 

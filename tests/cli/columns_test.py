@@ -50,6 +50,18 @@ for lang in ("pl", "en"):
             run(["trace", "--scene", scene, "--pixel", pixel, "--lang", lang, "--explain"])
         run(["trace", "--scene", scene, "--pixel", "3,4", "--lang", lang, "--real", "quad", "--spp", "4"])
         run(["trace", "--scene", scene, "--pixel", "3,4", "--lang", lang, "--compare", "float,double,long-double,quad"])
+    # diff of two types, and the answer check of a file with every kind of line
+    import tempfile
+    with tempfile.TemporaryDirectory() as tmp:
+        for real in ("float", "quad"):
+            env = dict(os.environ, LANG="C.UTF-8", LC_ALL="", LC_MESSAGES="")
+            with open(os.path.join(tmp, real + ".json"), "wb") as f:
+                f.write(subprocess.run([promyk, "trace", "--real", real, "--format", "json"], capture_output=True, env=env).stdout)
+        run(["diff", os.path.join(tmp, "float.json"), os.path.join(tmp, "quad.json"), "--lang", lang], expect_ok=False)
+        answers = os.path.join(tmp, "answers.txt")
+        with open(answers, "w") as f:
+            f.write("[3,4]\nEE = 129/32\nC = 6,41\ndelta = 4.5578125000000043\nt = 1.06\ndetla = 4\nP.z = two point one\nt = 1\n")
+        run(["lesson", "sphere", "--pixel", "3,4", "--answers", answers, "--lang", lang], expect_ok=False)
     # mistakes a user makes
     run(["trace", "--pixel", "200,300", "--lang", lang], expect_ok=False)
     run(["trace", "--real", "flaot", "--lang", lang], expect_ok=False)
