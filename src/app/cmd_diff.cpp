@@ -15,6 +15,7 @@
 #include "trace/messages.hpp"
 #include "trace/vocabulary.hpp"
 #include "util/errors.hpp"
+#include "util/standard_output.hpp"
 
 namespace promyk::app {
 
@@ -43,7 +44,7 @@ int run_diff(const DiffCommandOptions& options) {
     const DiffResult result = diff_inputs(a, b, builtin_vocabulary(), diff_options, language);
     const std::string out = options.format == "json" ? diff_json(result, a, b, diff_options)
                                                      : diff_report(result, a, b, diff_options, builtin_vocabulary(), language);
-    std::fputs(out.c_str(), stdout);
+    write_standard_output(out);
     return result.first ? 1 : 0;
 }
 

@@ -36,6 +36,7 @@
 #include "util/errors.hpp"
 #include "util/output_file.hpp"
 #include "util/printable.hpp"
+#include "util/standard_output.hpp"
 
 namespace promyk::app {
 
@@ -98,8 +99,8 @@ void trace_settings(LessonView& view, const Scene& scene, const TraceHeader& hea
 // disk, a reader that quit) is an error here: once flushed, the failure
 // would no longer show when main flushes standard output at the end.
 void print(const std::string& text) {
-    if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
-        throw_write_error("standard output", errno);
+    write_standard_output(text);
+    flush_standard_output();
 }
 
 int run_check(const LessonLibrary& library, Language language) {

@@ -1,0 +1,4 @@
+# Issue 19 (hardening): standard output's write errors, outputs that are
+# inputs, inputs above their limit. Included from tests/CMakeLists.txt.
+add_test(NAME cli.stdout_errors COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cli/stdout_errors_test.sh $<TARGET_FILE:promyk>
+                                        ${CMAKE_CURRENT_BINARY_DIR}/cli/stdout_errors)
