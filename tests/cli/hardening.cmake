@@ -6,3 +6,6 @@ add_test(NAME cli.stdout_errors COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cli/stdout_e
 # Catch2 tests of issue 19, added to the test program here so that its list
 # in tests/CMakeLists.txt stays as it is.
 target_sources(promyk_tests PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/unit_normal_test.cpp)
+
+add_test(NAME cli.output_is_input COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cli/output_is_input_test.sh $<TARGET_FILE:promyk>
+                                          ${CMAKE_CURRENT_BINARY_DIR}/cli/output_is_input)

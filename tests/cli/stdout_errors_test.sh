@@ -10,14 +10,15 @@ set -u
 promyk=$1 dir=$2
 . "$(dirname "$0")/lib.sh"
 
-# A scene of 400 spheres and 20 lights: scene check and dump print kilobytes.
-{
-  printf '{"name": "many", "spheres": ['
-  for k in $(seq 1 400); do printf '%s{"S": [%d, 0, 40], "r": 0.5}' "$([ "$k" = 1 ] || echo ,)" "$((k - 200))"; done
-  printf '], "lights": ['
-  for k in $(seq 1 20); do printf '%s{"L": [%d, 5, 0]}' "$([ "$k" = 1 ] || echo ,)" "$k"; done
-  printf ']}\n'
-} >many.json
+# A scene of 4000 spheres and 20 lights: scene check and dump print more
+# than a pipe holds (64 KiB).
+awk 'BEGIN {
+  printf "{\"name\": \"many\", \"spheres\": ["
+  for (k = 1; k <= 4000; k++) printf "%s{\"S\": [%d, %d, 40], \"r\": 0.25}", (k > 1 ? ", " : ""), k % 50 - 25, int(k / 50) - 20
+  printf "], \"lights\": ["
+  for (k = 1; k <= 20; k++) printf "%s{\"L\": [%d, 5, 0]}", (k > 1 ? ", " : ""), k
+  printf "]}\n"
+}' >many.json
 "$promyk" trace --format json >a.json 2>/dev/null && "$promyk" trace --real float --format json >b.json 2>/dev/null ||
   bad "set-up: traces for diff"
 
@@ -59,10 +60,13 @@ for command in "${commands[@]}"; do
   if [ "$code" = 4 ] && grep -q "cannot write standard output" err.txt; then ok
   else bad "promyk $command >&-: exit $code, stderr: $(head -c 300 err.txt)"; fi
 
-  # The reader quits before promyk writes (true exits at once; promyk starts
-  # 0.3 s later): exit 141 and nothing on stderr, whatever the output's size.
-  (sleep 0.3; exec "$promyk" $command 2>err.txt) | true
-  code=${PIPESTATUS[0]}
+  # A pipe whose reader has already quit (waited for): exit 141 and nothing
+  # on stderr, whatever the output's size.
+  exec {gone}> >(true)
+  wait $!
+  "$promyk" $command >&$gone 2>err.txt
+  code=$?
+  exec {gone}>&-
   if [ "$code" = 141 ] && [ ! -s err.txt ]; then ok
   else bad "promyk $command | (reader gone): exit $code, stderr: $(head -c 300 err.txt)"; fi
 done
