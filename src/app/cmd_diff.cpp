@@ -29,7 +29,7 @@ struct DiffCommandOptions {
 
 DiffInput read_input(const std::string& path, Language language) {
     const std::string shown = path == "-" ? "(stdin)" : path;
-    return {shown, read_answers(cli::read_input_file(path, "diff reads"), shown, builtin_vocabulary(), language,
+    return {shown, read_answers(cli::read_input_file(path, "diff reads", cli::max_diff_input_bytes, "diff"), shown, builtin_vocabulary(), language,
                                 diff_first_pixel, AnswerLimits{})};
 }
 

@@ -185,7 +185,7 @@ int run_answers(const LessonOptions& options, LessonView& view, const Kernel& ke
     limits.settings = true;
     limits.forgiving = true;
     limits.keys = lesson_keys(view.lesson, view.vocabulary);
-    const std::vector<PixelAnswers> answers = read_answers(cli::read_input_file(options.answers, "--answers reads"), shown,
+    const std::vector<PixelAnswers> answers = read_answers(cli::read_input_file(options.answers, "--answers reads", max_answer_bytes, "--answers"), shown,
                                                            view.vocabulary, view.lesson.language, first, limits).pixels;
     // A heading may name a pixel the lesson did not choose: it is traced too.
     std::set<std::pair<int, int>> traced;

@@ -9,3 +9,7 @@ target_sources(promyk_tests PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/unit_normal_test
 
 add_test(NAME cli.output_is_input COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cli/output_is_input_test.sh $<TARGET_FILE:promyk>
                                           ${CMAKE_CURRENT_BINARY_DIR}/cli/output_is_input)
+target_sources(promyk_tests PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/input_limit_test.cpp)
+
+add_test(NAME cli.input_limits COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cli/input_limits_test.sh $<TARGET_FILE:promyk>
+                                       ${CMAKE_CURRENT_BINARY_DIR}/cli/input_limits)
