@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -170,18 +172,31 @@ PixelRegion parse_region(const std::string& text, const std::string& option, int
 
 Scene load_scene_option(const std::string& path) { return path.empty() ? article_scene() : load_scene_file(path); }
 
-std::string read_input_file(const std::string& path, const std::string& reads) {
-    std::ostringstream text;
-    if (path == "-") {
-        text << std::cin.rdbuf();
-        return text.str();
+std::string read_input_file(const std::string& path, const std::string& reads, std::size_t max_bytes,
+                            const std::string& who) {
+    const std::string shown = path == "-" ? "(stdin)" : path;
+    std::FILE* in = stdin;
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> opened(nullptr, std::fclose);
+    if (path != "-") {
+        std::error_code error;
+        if (std::filesystem::is_directory(path, error)) throw InputError(path, "", "is a folder; " + reads + " a file");
+        opened.reset(std::fopen(path.c_str(), "rb"));
+        if (!opened) throw InputError(path, "", "cannot read the file: " + std::generic_category().message(errno));
+        in = opened.get();
     }
-    std::error_code error;
-    if (std::filesystem::is_directory(path, error)) throw InputError(path, "", "is a folder; " + reads + " a file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path, "", "cannot read the file: " + std::generic_category().message(errno));
-    text << in.rdbuf();
-    return text.str();
+    // In chunks, the limit checked as the bytes come: one byte past it is refusal.
+    std::string text;
+    char chunk[1 << 16];
+    for (;;) {
+        const std::size_t got = std::fread(chunk, 1, sizeof chunk, in);
+        text.append(chunk, got);
+        if (text.size() > max_bytes)
+            throw InputError(shown, "", ui_message("input_too_large", {{"mib", std::to_string(max_bytes >> 20)},
+                                                                        {"who", who}}));
+        if (got < sizeof chunk) break;
+    }
+    if (std::ferror(in)) throw InputError(shown, "", "cannot read the file: " + std::generic_category().message(errno));
+    return text;
 }
 
 }  // namespace promyk::cli

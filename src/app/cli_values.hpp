@@ -4,6 +4,7 @@
 // option and, where one exists, the plain form of what was meant.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -59,7 +60,14 @@ Scene load_scene_option(const std::string& path);
 
 // The whole text of an input file, or of standard input for "-"; InputError
 // (exit 3) for a folder or a file that cannot be read. `reads` completes
-// "is a folder; ... a file" ("--answers reads").
-std::string read_input_file(const std::string& path, const std::string& reads);
+// "is a folder; ... a file" ("--answers reads"). Reading stops past
+// `max_bytes` (InputError naming the limit and `who`, "diff" or "--answers"),
+// so /dev/zero or an endless pipe ends at once, not at the out-of-memory killer.
+std::string read_input_file(const std::string& path, const std::string& reads, std::size_t max_bytes,
+                            const std::string& who);
+
+// The most bytes diff reads from either side: a trace of many samples of a
+// large scene fits; /dev/zero does not.
+constexpr std::size_t max_diff_input_bytes = std::size_t(128) << 20;
 
 }  // namespace promyk::cli

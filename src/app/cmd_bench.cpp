@@ -21,6 +21,7 @@
 #include "util/output_file.hpp"
 #include "util/printable.hpp"
 #include "util/text.hpp"
+#include "util/standard_output.hpp"
 
 namespace promyk::app {
 
@@ -120,7 +121,10 @@ int run_accuracy(AccuracyCommand& command) {
     // Standard output carries the product: the table, or the JSON with --json -
     // (the table then goes to standard error).
     const std::string table = bench::accuracy_table(report);
-    std::fputs(table.c_str(), json_to_stdout ? stderr : stdout);
+    if (json_to_stdout)
+        std::fputs(table.c_str(), stderr);
+    else
+        write_standard_output(table);
     if (json) {
         const std::string text = bench::accuracy_json(report);
         json->write(text);

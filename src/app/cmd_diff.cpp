@@ -16,6 +16,7 @@
 #include "trace/messages.hpp"
 #include "trace/vocabulary.hpp"
 #include "util/errors.hpp"
+#include "util/standard_output.hpp"
 
 namespace promyk::app {
 
@@ -29,7 +30,7 @@ struct DiffCommandOptions {
 
 DiffInput read_input(const std::string& path, Language language) {
     const std::string shown = path == "-" ? "(stdin)" : path;
-    return {shown, read_answers(cli::read_input_file(path, "diff reads"), shown, builtin_vocabulary(), language,
+    return {shown, read_answers(cli::read_input_file(path, "diff reads", cli::max_diff_input_bytes, "diff"), shown, builtin_vocabulary(), language,
                                 diff_first_pixel, AnswerLimits{})};
 }
 
@@ -45,7 +46,7 @@ int run_diff(const DiffCommandOptions& options) {
     const std::string out = options.format == "json" ? diff_json(result, a, b, diff_options)
                                                      : wrap_lines(diff_report(result, a, b, diff_options,
                                                                               builtin_vocabulary(), language));
-    std::fputs(out.c_str(), stdout);
+    write_standard_output(out);
     return result.first ? 1 : 0;
 }
 

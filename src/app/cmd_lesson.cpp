@@ -36,6 +36,7 @@
 #include "util/errors.hpp"
 #include "util/output_file.hpp"
 #include "util/printable.hpp"
+#include "util/standard_output.hpp"
 
 namespace promyk::app {
 
@@ -98,8 +99,8 @@ void trace_settings(LessonView& view, const Scene& scene, const TraceHeader& hea
 // disk, a reader that quit) is an error here: once flushed, the failure
 // would no longer show when main flushes standard output at the end.
 void print(const std::string& text) {
-    if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
-        throw_write_error("standard output", errno);
+    write_standard_output(text);
+    flush_standard_output();
 }
 
 int run_check(const LessonLibrary& library, Language language) {
@@ -184,7 +185,7 @@ int run_answers(const LessonOptions& options, LessonView& view, const Kernel& ke
     limits.settings = true;
     limits.forgiving = true;
     limits.keys = lesson_keys(view.lesson, view.vocabulary);
-    const std::vector<PixelAnswers> answers = read_answers(cli::read_input_file(options.answers, "--answers reads"), shown,
+    const std::vector<PixelAnswers> answers = read_answers(cli::read_input_file(options.answers, "--answers reads", max_answer_bytes, "--answers"), shown,
                                                            view.vocabulary, view.lesson.language, first, limits).pixels;
     // A heading may name a pixel the lesson did not choose: it is traced too.
     std::set<std::pair<int, int>> traced;

@@ -329,6 +329,10 @@ int run_render(const RenderOptions& options) {
         traces_target = inspect_output(options.traces_file);
         require_distinct_outputs({{"-o", image_target}, {"--traces", *traces_target}});
     }
+    // Nor may an output be the scene it is made from.
+    std::vector<std::pair<std::string, OutputTarget>> outputs = {{"-o", image_target}};
+    if (traces_target) outputs.emplace_back("--traces", *traces_target);
+    require_outputs_not_inputs(outputs, {{"--scene", options.scene_file}});
 
     const Scene scene = cli::load_scene_option(options.scene_file);
     // What scene check would warn of (a light inside a sphere draws a black

@@ -12,6 +12,7 @@
 #include "scene/scene_json.hpp"
 #include "trace/messages.hpp"
 #include "util/printable.hpp"
+#include "util/standard_output.hpp"
 #include "util/wrap.hpp"
 
 namespace promyk::app {
@@ -33,13 +34,13 @@ int run_check(const std::string& file) {
     print_list(out, ui_message("scene_check_runs"), report.stages);
     print_list(out, ui_message("scene_check_skips"), report.skipped);
     print_list(out, ui_message("scene_check_warnings"), report.warnings);
-    std::fputs(out.c_str(), stdout);
+    write_standard_output(out);
     return 0;
 }
 
 int run_dump(const std::string& scene_file, bool all) {
     const SceneDefaults defaults = all ? SceneDefaults::written : SceneDefaults::omitted;
-    std::fputs(scene_to_json(cli::load_scene_option(scene_file), defaults).c_str(), stdout);
+    write_standard_output(scene_to_json(cli::load_scene_option(scene_file), defaults));
     return 0;
 }
 

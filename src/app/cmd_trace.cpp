@@ -20,6 +20,7 @@
 #include "util/errors.hpp"
 #include "util/printable.hpp"
 #include "util/text.hpp"
+#include "util/standard_output.hpp"
 
 namespace promyk::app {
 
@@ -79,7 +80,7 @@ int run_trace(const TraceOptions& options) {
         } else {
             out = format_comparison(traces, builtin_vocabulary(), language);
         }
-        std::fputs(out.c_str(), stdout);
+        write_standard_output(out);
         return 0;
     }
     const PixelTrace trace = trace_pixel(scene, options.w, pixel.i, pixel.j, options.real, options.formula, options.spp);
@@ -95,7 +96,7 @@ int run_trace(const TraceOptions& options) {
         text.digits = shown_digits(0);  // the trace is the record: every digit unless --digits
         out = format_trace_text(trace, builtin_vocabulary(), text);
     }
-    std::fputs(out.c_str(), stdout);
+    write_standard_output(out);
     return 0;
 }
 

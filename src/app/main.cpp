@@ -13,6 +13,7 @@
 #include <exception>
 #include <functional>
 #include <new>
+#include <sstream>
 #include <system_error>
 
 #include <fmt/format.h>
@@ -29,6 +30,7 @@
 #include "util/wrap.hpp"
 #include "util/interrupt.hpp"
 #include "util/output_file.hpp"
+#include "util/standard_output.hpp"
 
 namespace {
 
@@ -149,6 +151,7 @@ int exit_code_for_failure(const std::string& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    promyk::reserve_standard_descriptors();
     promyk::install_interrupt_handlers();
     CLI::App app{
         "promyk: an educational ray tracer that shows its work.\n"
@@ -214,7 +217,16 @@ int main(int argc, char** argv) {
         std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
         app.parse(reversed);
     } catch (const CLI::Success& done) {
-        return app.exit(done);  // --help or --version: printed to stdout
+        // --help or --version: to standard output, checked like any product
+        std::ostringstream text;
+        const int code = app.exit(done, text);
+        try {
+            promyk::write_standard_output(text.str());
+            promyk::flush_standard_output();
+        } catch (...) {
+            return exit_code_for_failure("promyk");
+        }
+        return code;
     } catch (const CLI::ParseError& error) {
         report(promyk::app::parse_error_message(error, app));
         fmt::print(stderr, "{}\n", promyk::app::run_help_line(promyk::app::command_path(app)));
@@ -232,7 +244,7 @@ int main(int argc, char** argv) {
         const int code = run();
         // Standard output is flushed here, not at exit, so that a failure
         // (a reader that quit, a full disk) changes the exit code.
-        if (std::fflush(stdout) != 0) promyk::throw_write_error("standard output", errno);
+        promyk::flush_standard_output();
         return code;
     } catch (...) {
         return exit_code_for_failure(path);

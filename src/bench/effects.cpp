@@ -16,6 +16,7 @@
 #include "trace/messages.hpp"
 #include "util/embedded_files.hpp"
 #include "util/interrupt.hpp"
+#include "util/standard_output.hpp"
 
 namespace promyk::bench {
 
@@ -67,12 +68,12 @@ int run_effects_bench(const EffectsOptions& options) {
     std::vector<int> cpus = allowed_cpus();
     std::optional<PinnedToCpu> pin;
     if (!cpus.empty()) pin.emplace(cpus.front());  // one core for every run: like with like
-    fmt::print("promyk bench effects: every example scene at w = {} ({} pixels), one thread,\n"
+    print_standard_output("promyk bench effects: every example scene at w = {} ({} pixels), one thread,\n"
                "  {} alternating round{}, medians; each timed run repeats the pane until it lasts\n"
                "  at least {:.0f} ms\n\n",
                w, w * static_cast<long>(w), options.repetitions, options.repetitions == 1 ? "" : "s",
                TimingPolicy{}.min_run_seconds * 1e3);
-    std::fflush(stdout);
+    flush_standard_output();
     std::vector<TimedWork> jobs;
     for (std::size_t k = 0; k < scenes.size(); ++k) {
         NullSink sink;
@@ -87,7 +88,7 @@ int run_effects_bench(const EffectsOptions& options) {
     const std::vector<Timing> timings = time_side_by_side(jobs, policy);
 
     const Timing& article = timings.front();
-    fmt::print("  {:<12} {:>9} {:>9}  {:>13} {:>13} {:>12}  {}\n", "scene", "ns/pixel", "× article",
+    print_standard_output("  {:<12} {:>9} {:>9}  {:>13} {:>13} {:>12}  {}\n", "scene", "ns/pixel", "× article",
                "shadow rays/px", "sphere tests/px", "plane tests/px", "stages");
     std::vector<std::string> problems;
     for (std::size_t k = 0; k < scenes.size(); ++k) {
@@ -98,13 +99,13 @@ int run_effects_bench(const EffectsOptions& options) {
         const std::string ratio =
             t.timed && article.timed ? fmt::format("{:.2f}", t.median_seconds_per_unit / article.median_seconds_per_unit)
                                      : "-";
-        fmt::print("  {:<12} {:>9} {:>9}  {:>13.3f} {:>13.3f} {:>12.3f}  {}\n", scenes[k].name, ns, ratio,
+        print_standard_output("  {:<12} {:>9} {:>9}  {:>13.3f} {:>13.3f} {:>12.3f}  {}\n", scenes[k].name, ns, ratio,
                    static_cast<double>(s.shadow_rays) / pixels, static_cast<double>(s.sphere_tests) / pixels,
                    static_cast<double>(s.plane_tests) / pixels, stage_list(scenes[k]));
     }
-    if (!problems.empty()) fmt::print("\n");
-    for (const std::string& problem : problems) fmt::print("  {}\n", problem);
-    fmt::print("\n  × article: the scene's time per pixel over the article's (1.00). Every pixel casts one primary "
+    if (!problems.empty()) print_standard_output("\n");
+    for (const std::string& problem : problems) print_standard_output("  {}\n", problem);
+    print_standard_output("\n  × article: the scene's time per pixel over the article's (1.00). Every pixel casts one primary "
                "ray;\n  the work columns count what the scene's stages add per pixel.\n");
     return 0;
 }

@@ -19,6 +19,7 @@
 #include "trace/messages.hpp"
 #include "util/errors.hpp"
 #include "util/interrupt.hpp"
+#include "util/standard_output.hpp"
 
 namespace promyk::bench {
 
@@ -122,15 +123,15 @@ int run_speed_bench(const SpeedOptions& options) {
         render(scene, {w, threads}, PixelSelection{}, sink);
     }));
 
-    fmt::print("promyk bench speed: the article's scene, w = {} ({} pixels),\n  {} alternating round{}, medians\n", w,
+    print_standard_output("promyk bench speed: the article's scene, w = {} ({} pixels),\n  {} alternating round{}, medians\n", w,
                w * static_cast<long>(w), options.repetitions, options.repetitions == 1 ? "" : "s");
-    fmt::print(
+    print_standard_output(
         "  literal: the article's program compiled from the pseudocode (one file, t[i, j]\n"
         "  of doubles); engine: promyk's renderer, including the conversion of every\n"
         "  intensity to an 8-bit grey level; each timed run repeats the pane until it\n"
         "  lasts at least {:.0f} ms\n\n",
         TimingPolicy{}.min_run_seconds * 1e3);
-    std::fflush(stdout);
+    flush_standard_output();
     TimingPolicy policy;
     policy.rounds = options.repetitions;
     const std::vector<Timing> timings = time_side_by_side(jobs, policy);
@@ -140,7 +141,7 @@ int run_speed_bench(const SpeedOptions& options) {
     const bool identical = engine_image == literal_image && threaded_image == literal_image;
     const auto ns_per_pixel = [&](const Timing& t) { return t.median_seconds_per_unit / pixels * 1e9; };
 
-    fmt::print("  single thread          literal ns/pixel  engine ns/pixel  engine/literal\n");
+    print_standard_output("  single thread          literal ns/pixel  engine ns/pixel  engine/literal\n");
     std::vector<double> ratios;
     std::vector<std::string> problems;
     double throughput_sum = 0;  // panes per second, summed over cores
@@ -166,30 +167,30 @@ int run_speed_bench(const SpeedOptions& options) {
                                                    {"where", where},
                                                    {"why", t->problem}}));
         }
-        fmt::print("  {:<22} {:>16} {:>16} {:>15}\n", where,
+        print_standard_output("  {:<22} {:>16} {:>16} {:>15}\n", where,
                    lit.timed ? fmt::format("{:.2f}", ns_per_pixel(lit)) : "-",
                    eng.timed ? fmt::format("{:.2f}", ns_per_pixel(eng)) : "-", ratio);
     }
     if (threaded.timed)
-        fmt::print("  engine, {} thread{}: {:.2f} ns/pixel\n\n", threads, threads == 1 ? "" : "s",
+        print_standard_output("  engine, {} thread{}: {:.2f} ns/pixel\n\n", threads, threads == 1 ? "" : "s",
                    ns_per_pixel(threaded));
     else
-        fmt::print("  engine, {} thread{}: -\n\n", threads, threads == 1 ? "" : "s");
+        print_standard_output("  engine, {} thread{}: -\n\n", threads, threads == 1 ? "" : "s");
 
     if (!ratios.empty())
-        fmt::print("  engine / literal, 1 thread (median over rounds and cores): {:.3f}\n  (target <= 1.05)\n",
+        print_standard_output("  engine / literal, 1 thread (median over rounds and cores): {:.3f}\n  (target <= 1.05)\n",
                    median_of(ratios));
     if (all_timed) {
         const double t_one = 1 / (throughput_sum / static_cast<double>(cpus.size()));  // the average core
-        fmt::print("  {} threads / 1 thread speed-up (1 thread: the average core): {:.2f}\n  (target >= 1.8 on 2 cores)\n",
+        print_standard_output("  {} threads / 1 thread speed-up (1 thread: the average core): {:.2f}\n  (target >= 1.8 on 2 cores)\n",
                    threads, t_one / threaded.median_seconds_per_unit);
         if (pinned && threads == static_cast<int>(cpus.size()))
-            fmt::print("  parallel efficiency (threaded throughput / sum of the cores' own): {:.2f}\n",
+            print_standard_output("  parallel efficiency (threaded throughput / sum of the cores' own): {:.2f}\n",
                        (1 / threaded.median_seconds_per_unit) / throughput_sum);
     }
-    for (const std::string& problem : problems) fmt::print("  {}\n", problem);
-    fmt::print("  images identical (engine, threaded, literal): {}\n\n", identical ? "yes" : "NO");
-    std::fflush(stdout);
+    for (const std::string& problem : problems) print_standard_output("  {}\n", problem);
+    print_standard_output("  images identical (engine, threaded, literal): {}\n\n", identical ? "yes" : "NO");
+    flush_standard_output();
 
     const int tw = options.trace_w;
     TraceFileSink trace_sink;
@@ -198,9 +199,9 @@ int run_speed_bench(const SpeedOptions& options) {
         trace_sink.finish();
     });
     const double trace_pixels = static_cast<double>(tw) * tw;
-    fmt::print("  traces, JSON Lines of every pixel at w = {}, {} thread{}, to a temporary file:\n", tw, threads,
+    print_standard_output("  traces, JSON Lines of every pixel at w = {}, {} thread{}, to a temporary file:\n", tw, threads,
                threads == 1 ? "" : "s");
-    fmt::print("    {:.0f} pixels/s, {:.1f} MB/s, {:.0f} bytes a pixel\n", trace_pixels / t_traces,
+    print_standard_output("    {:.0f} pixels/s, {:.1f} MB/s, {:.0f} bytes a pixel\n", trace_pixels / t_traces,
                trace_sink.bytes() / t_traces / 1e6, trace_sink.bytes() / trace_pixels);
     return identical ? 0 : 1;
 }

@@ -8,6 +8,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "geometry/unit_normal.hpp"
 #include "math/real.hpp"
 #include "math/vec3.hpp"
 #include "scene/scene.hpp"
@@ -59,13 +60,6 @@ typename World<Real, Rgb>::Intensity intensity_of(const Colour& c) {
 template <class Real>
 Vec3<Real> to_real(const Vec3d& v) {
     return {Real(v.x), Real(v.y), Real(v.z)};
-}
-
-// The plane's unit normal n / |n|, |n| = sqrt(n.n), each component divided.
-template <class Real>
-Vec3<Real> unit_normal(const Vec3d& n) {
-    const Vec3<Real> v = to_real<Real>(n);
-    return v / square_root(length_squared(v));
 }
 
 template <class Real, bool Rgb>

@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include "geometry/unit_normal.hpp"
 #include "math/vec3.hpp"
 #include "scene/json_pointer.hpp"
 #include "scene/scene_hints.hpp"
@@ -297,17 +298,14 @@ private:
         if (!check_element(value, pointer, plane_level(), "{\"Q\": [x, y, z], \"n\": [x, y, z]}")) return plane;
         const bool Q = attempt([&] { plane.Q = read_vec3(require(value, "Q", pointer), child(pointer, "Q"), "Q"); });
         const std::string n_pointer = child(pointer, "n");
-        double nn = 0;
         const bool n = attempt([&] {
             plane.n = read_vec3(require(value, "n", pointer), n_pointer, "n");
+            // Any other finite n has a direction: unit_normal scales it first.
             if (plane.n == Vec3d{0, 0, 0}) fail(n_pointer, ui_message("scene_normal_zero"));
-            // The engine's n̂ = n/√(n·n), each component divided, and n̂·Q.
-            nn = length_squared(plane.n);
-            if (!std::isfinite(nn)) fail(n_pointer, ui_message("scene_normal_long"));
-            if (nn == 0) fail(n_pointer, ui_message("scene_normal_short"));
         });
         attempt([&] { plane.material = read_material_index(value, pointer, materials); });
-        if (Q && n && !std::isfinite(dot(plane.n / std::sqrt(nn), plane.Q)))
+        // The engine's n̂·Q.
+        if (Q && n && !std::isfinite(dot(unit_normal<double>(plane.n), plane.Q)))
             attempt([&] { fail(pointer, ui_message("scene_plane_far")); });
         return plane;
     }

@@ -124,6 +124,24 @@ void require_distinct_outputs(const std::vector<std::pair<std::string, OutputTar
     }
 }
 
+void require_outputs_not_inputs(const std::vector<std::pair<std::string, OutputTarget>>& outputs,
+                                const std::vector<std::pair<std::string, std::string>>& inputs) {
+    for (const auto& [input_option, input_path] : inputs) {
+        if (input_path.empty()) continue;  // not given: a built-in one
+        struct stat info {};
+        const int read = input_path == "-" ? ::fstat(STDIN_FILENO, &info) : ::stat(input_path.c_str(), &info);
+        if (read != 0 || !S_ISREG(info.st_mode)) continue;
+        for (const auto& [output_option, target] : outputs) {
+            if (!target.exists || target.device != info.st_dev || target.inode != info.st_ino) continue;
+            const std::string input_name = input_path == "-" ? ui_message("input_standard_input") : input_path;
+            const std::string names = target.path == input_path
+                                          ? input_name
+                                          : ui_message("output_two_names", {{"a", target.display_name()}, {"b", input_name}});
+            throw UsageError(ui_message("output_is_input", {{"output", output_option}, {"input", input_option}, {"names", names}}));
+        }
+    }
+}
+
 void throw_write_error(const std::string& display_name, int err) {
     if (err == EPIPE) throw BrokenPipe(display_name);
     fail(display_name, err);

@@ -69,6 +69,15 @@ bool same_destination(const OutputTarget& a, const OutputTarget& b);
 // "--traces and -o name the same file (x.png)". Each entry is (option, target).
 void require_distinct_outputs(const std::vector<std::pair<std::string, OutputTarget>>& outputs);
 
+// UsageError if an output is one of the inputs, so that writing it would
+// replace what is being read ("-o and --scene name the same file (s.json):
+// the output would replace the input"). Inputs are (option, path), "-" for
+// standard input; only an existing regular file can be replaced, and it is
+// compared by identity (device and inode), so links and other paths count.
+// Inputs that do not exist are left for their reader to report.
+void require_outputs_not_inputs(const std::vector<std::pair<std::string, OutputTarget>>& outputs,
+                                const std::vector<std::pair<std::string, std::string>>& inputs);
+
 // The error a failed write deserves: BrokenPipe for EPIPE (the reader
 // quit), else OutputError "cannot write PATH: <errno text>".
 [[noreturn]] void throw_write_error(const std::string& display_name, int err);

@@ -1,0 +1,15 @@
+# Issue 19 (hardening): standard output's write errors, outputs that are
+# inputs, inputs above their limit. Included from tests/CMakeLists.txt.
+add_test(NAME cli.stdout_errors COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cli/stdout_errors_test.sh $<TARGET_FILE:promyk>
+                                        ${CMAKE_CURRENT_BINARY_DIR}/cli/stdout_errors)
+
+# Catch2 tests of issue 19, added to the test program here so that its list
+# in tests/CMakeLists.txt stays as it is.
+target_sources(promyk_tests PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/unit_normal_test.cpp)
+
+add_test(NAME cli.output_is_input COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cli/output_is_input_test.sh $<TARGET_FILE:promyk>
+                                          ${CMAKE_CURRENT_BINARY_DIR}/cli/output_is_input)
+target_sources(promyk_tests PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/input_limit_test.cpp)
+
+add_test(NAME cli.input_limits COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/cli/input_limits_test.sh $<TARGET_FILE:promyk>
+                                       ${CMAKE_CURRENT_BINARY_DIR}/cli/input_limits)
