@@ -6,6 +6,8 @@
 set -u
 promyk=$1 dir=$2
 . "$(dirname "$0")/lib.sh"
+# messages are wrapped to 80 columns (continuation lines indented by 4): join them
+j() { sed ':a;N;$!ba;s/\n    / /g' "$1"; }
 
 "$promyk" trace --format json >a.json 2>/dev/null || bad "set-up: a trace"
 
@@ -17,7 +19,7 @@ limited() {
   # without the limit fails the test instead of filling the machine.
   (ulimit -v 1500000; exec timeout -s KILL 20 "$promyk" "$@") >out.txt 2>err.txt
   local code=$?
-  if [ "$code" = 3 ] && grep -q "reads at most $mib MiB" err.txt && [ $((SECONDS - start)) -le 10 ] && [ ! -s out.txt ]; then ok
+  if [ "$code" = 3 ] && j err.txt | grep -q "reads at most $mib MiB" && [ $((SECONDS - start)) -le 10 ] && [ ! -s out.txt ]; then ok
   else bad "$name: exit $code after $((SECONDS - start)) s: $(head -c 300 err.txt)"; fi
 }
 
@@ -30,10 +32,10 @@ limited "lesson --answers - < /dev/zero" 64 lesson sphere --answers - </dev/zero
 start=$SECONDS
 yes 'C = 6.4' | (ulimit -v 1500000; exec timeout -s KILL 20 "$promyk" lesson sphere --answers -) >out.txt 2>err.txt
 code=${PIPESTATUS[1]}
-if [ "$code" = 3 ] && grep -q "reads at most 64 MiB" err.txt; then ok; else bad "endless pipe: exit $code: $(head -c 300 err.txt)"; fi
+if [ "$code" = 3 ] && j err.txt | grep -q "reads at most 64 MiB"; then ok; else bad "endless pipe: exit $code: $(head -c 300 err.txt)"; fi
 
 (ulimit -v 1500000; exec timeout -s KILL 20 "$promyk" --lang pl diff a.json /dev/zero) >out.txt 2>err.txt
 code=$?
-if [ "$code" = 3 ] && grep -q "diff czyta najwyżej 128 MiB" err.txt; then ok; else bad "Polish: exit $code: $(cat err.txt)"; fi
+if [ "$code" = 3 ] && j err.txt | grep -q "diff czyta najwyżej 128 MiB"; then ok; else bad "Polish: exit $code: $(cat err.txt)"; fi
 
 summary

@@ -7,6 +7,8 @@
 set -u
 promyk=$1 dir=$2
 . "$(dirname "$0")/lib.sh"
+# messages are wrapped to 80 columns (continuation lines indented by 4): join them
+j() { sed ':a;N;$!ba;s/\n    / /g' "$1"; }
 
 scene='{"spheres": [{"S": [0, 0, 3], "r": 1}], "lights": [{"L": [1, 1, 0]}]}'
 # refused NAME ARGS...: exit 2, "the output would replace the input", s.png
@@ -16,7 +18,7 @@ refused() {
   local before; before=$(ls -A | sort | tr '\n' ' ')
   "$promyk" "$@" >>out.txt 2>err.txt
   local code=$?
-  if [ "$code" = 2 ] && grep -q "would replace the input" err.txt && [ "$(cat s.png)" = "$scene" ] &&
+  if [ "$code" = 2 ] && j err.txt | grep -q "would replace the input" && [ "$(cat s.png)" = "$scene" ] &&
      [ "$(ls -A | sort | tr '\n' ' ')" = "$before" ]; then ok
   else bad "$name: exit $code, s.png: $(head -c 80 s.png), files: $(ls -A | tr '\n' ' '), stderr: $(cat err.txt)"; fi
 }
@@ -37,20 +39,20 @@ setup; ln -s s.png link.jsonl; refused "--traces is a link to the scene" render 
 rm -rf ./*; echo "$scene" >s.json
 "$promyk" render --w 8 --scene s.json -o x.png --traces s.json >out.txt 2>err.txt
 code=$?
-if [ "$code" = 2 ] && grep -q "would replace the input" err.txt && [ "$(cat s.json)" = "$scene" ] && [ ! -e x.png ]; then ok
+if [ "$code" = 2 ] && j err.txt | grep -q "would replace the input" && [ "$(cat s.json)" = "$scene" ] && [ ! -e x.png ]; then ok
 else bad "--scene s.json --traces s.json: exit $code: $(cat err.txt)"; fi
 # Standard output appended to the scene.
 setup
 "$promyk" render --w 8 --scene s.png -o - >>s.png 2>err.txt
 code=$?
-if [ "$code" = 2 ] && grep -q "would replace the input" err.txt && [ "$(cat s.png)" = "$scene" ]; then ok
+if [ "$code" = 2 ] && j err.txt | grep -q "would replace the input" && [ "$(cat s.png)" = "$scene" ]; then ok
 else bad "-o - appended to the scene: exit $code: $(cat err.txt)"; fi
 
 # In Polish.
 setup
 "$promyk" --lang pl render --w 8 --scene s.png -o s.png >out.txt 2>err.txt
 code=$?
-if [ "$code" = 2 ] && grep -q "wynik zastąpiłby dane wejściowe" err.txt; then ok; else bad "Polish: exit $code: $(cat err.txt)"; fi
+if [ "$code" = 2 ] && j err.txt | grep -q "wynik zastąpiłby dane wejściowe"; then ok; else bad "Polish: exit $code: $(cat err.txt)"; fi
 
 # Not refused: a copy of the scene, and the scene written beside itself.
 setup; cp s.png copy.json
