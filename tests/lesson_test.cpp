@@ -134,7 +134,8 @@ TEST_CASE("every kind of broken lesson is reported at its line", "[lesson]") {
     CHECK(first_line(with_body("## [a] A\n\nline\n{nope} here\n")) == 9);           // unknown key in prose
     CHECK(first_line(with_body("## [a] A\n::: lit shaded\n{t}\n:::\n")) == 7);      // unknown branch
     CHECK(first_line(with_body("## [a] A\n\nt is {t}\n")) == 8);                     // a pixel's value outside a block
-    CHECK(first_line(with_body("## [a] A\n\n{i}\n")) == 8);
+    CHECK(first_line(with_body("## [a] A\n\n{branch}\n")) == 8);
+    CHECK(first_line(with_body("## [a] A\n\n({i}, {j})\n")) == 0);             // prose names the step's pixel
     CHECK(first_line(with_body("## [a] A\n::: pixel\n{t:99}\n:::\n")) == 8);        // malformed placeholder
     CHECK(first_line(with_body("")) != 0);                                          // no step at all
     CHECK(first_line(with_body("## [a] A\n\nS = {S}, w = {w}, {symbol:t}\n::: pixel\n{t} {i} {branch}\n:::\n")) == 0);

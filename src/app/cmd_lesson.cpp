@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <optional>
@@ -157,13 +158,22 @@ int run_list(const LessonLibrary& library, Language language) {
     return 0;
 }
 
-// Waits for Enter (step mode); a closed standard input just goes on.
-void wait_for_enter(Language language, std::string_view prompt_id) {
+// What a reader typed in step mode before Enter.
+enum class StepKey { next, back, quit };
+
+// Waits for Enter (step mode): "q" then Enter quits, "b" then Enter goes
+// back a step; a closed standard input just goes on.
+StepKey wait_for_enter(Language language, std::string_view prompt_id) {
     fmt::print(stderr, "{}", message(language, prompt_id));
     std::fflush(stderr);
     std::string line;
     std::getline(std::cin, line);
     fmt::print(stderr, "\n");
+    line.erase(0, line.find_first_not_of(" \t"));
+    line.erase(line.find_last_not_of(" \t\r") + 1);
+    if (line == "q" || line == "Q") return StepKey::quit;
+    if (line == "b" || line == "B") return StepKey::back;
+    return StepKey::next;
 }
 
 std::vector<std::string> lesson_names(const LessonLibrary& library, Language language) {
@@ -243,6 +253,14 @@ int run_lesson(const LessonOptions& options) {
         throw UsageError(ui_message("lesson_unknown", {{"name", options.name}, {"hint", hint.empty() ? "." : hint}, {"names", names}}));
     }
     const Lesson& lesson = *found;
+    // A fault --check would report (a misspelt placeholder, an unknown branch)
+    // stops the lesson as it stops --check: the file, the line, exit 3.
+    {
+        std::vector<LessonProblem> problems;
+        check_lesson(lesson, builtin_vocabulary(), problems);
+        if (!problems.empty())
+            throw InputError(lesson.file, fmt::format("line {}", problems.front().line), problems.front().message);
+    }
     // Each column's numbers: real type and formula (one for all, or one a column).
     std::istringstream columns(lesson.header.columns);
     for (std::string column; columns >> column;)
@@ -285,6 +303,23 @@ int run_lesson(const LessonOptions& options) {
     const int spp = options.spp_given ? options.spp : lesson.header.spp;
     const std::unique_ptr<Kernel> kernel = make_kernel(scene, real, formula, spp);
     const TraceHeader header = trace_header(scene, w);
+    view.scene = &scene;
+    // The scene's file name, for "::: scene FILE" blocks; the lesson's own scene shows its own prose.
+    view.scene_file = lesson.header.scene;
+    if (!options.scene_file.empty()) {
+        const std::size_t slash = options.scene_file.find_last_of("/\\");
+        view.scene_file = slash == std::string::npos ? options.scene_file : options.scene_file.substr(slash + 1);
+    }
+    view.own_scene = view.scene_file == lesson.header.scene ||
+                     (lesson.header.scene == "article" && view.scene_file == "article.json");
+    // Any pixel of the pane, traced once when a step's needs or the figure ask for it.
+    auto pane = std::make_shared<std::map<std::pair<int, int>, PixelTrace>>();
+    const Kernel* pane_kernel = kernel.get();
+    view.pane_pixel = [pane, pane_kernel, header](int i, int j) -> const PixelTrace& {
+        auto at = pane->find({i, j});
+        if (at == pane->end()) at = pane->emplace(std::make_pair(i, j), pane_kernel->trace(header, i, j)).first;
+        return at->second;
+    };
     view.traces.reserve(pixels.size());
     for (const LessonPixel& pixel : pixels) view.traces.push_back(kernel->trace(header, pixel.i, pixel.j));
     trace_settings(view, scene, header, qualifiers, spp);
@@ -295,12 +330,27 @@ int run_lesson(const LessonOptions& options) {
     if (options.worksheet) worksheet.emplace(view);
     print(render_lesson_title(view));
     if (worksheet) print(worksheet->intro());
+    if (options.step) fmt::print(stderr, "{}\n", message(language, "step_mode_keys"));
+    // Back a step: the loop's ++k then shows step k − 1 (step 0 again from step 0; unsigned wrap-around).
+    const auto back = [](std::size_t k) { return (k == 0 ? std::size_t(0) : k - 1) - 1; };
     for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
-        if (options.step && k > 0) wait_for_enter(language, "press_enter_next");
         print("\n" + render_step(view, k));
-        if (has_answers(lesson.steps[k]) && !worksheet) {
-            if (options.step) wait_for_enter(language, "press_enter_answer");
-            print(render_answers(view, k));
+        const std::string answers = worksheet ? "" : render_answers(view, k);
+        if (!answers.empty()) {
+            if (options.step) {
+                const StepKey key = wait_for_enter(language, "press_enter_answer");
+                if (key == StepKey::quit) return 0;
+                if (key == StepKey::back) {
+                    k = back(k);
+                    continue;
+                }
+            }
+            print(answers);
+        }
+        if (options.step && k + 1 < lesson.steps.size()) {
+            const StepKey key = wait_for_enter(language, "press_enter_next_keys");
+            if (key == StepKey::quit) return 0;
+            if (key == StepKey::back) k = back(k);
         }
     }
     if (worksheet) print(worksheet->answer_template());

@@ -41,6 +41,9 @@ struct LessonHeader {
     int digits = 4;
     int name_line = 1;   // the line of "name:", for messages about the name
     int scene_line = 1;  // the line of "scene:", for messages about the scene
+    // The effect the lesson is about (effect:): spheres, lights, plane,
+    // shadows, phong or colour; on a scene without it the lesson says so.
+    std::string effect;
 };
 
 enum class PartKind {
@@ -48,7 +51,22 @@ enum class PartKind {
     values,  // "= key key ...": a table, one row a key, one column a pixel
     block,   // "::: branch ...": shown once per pixel whose branch is listed
     answer,  // "::: answer": revealed on request
+    scene,   // "::: scene [FILE]": prose shown only on that scene (none: the lesson's own)
+    figure,  // "::: figure pane": the chosen pane drawn by branch (one line, no body)
 };
+
+// A condition on a pixel's values, in a block's or a step's "needs" line:
+// "has:t" (the computation reached t), "no:t", "D>0", "light[0].D<=0", "t<1.5".
+struct Condition {
+    enum class Op { exists, missing, less, less_equal, greater, greater_equal };
+    std::string path;  // a path, with a settings qualifier if written
+    Op op = Op::exists;
+    double bound = 0;
+    std::string text;  // as written, for messages
+};
+
+// Reads one condition token; nothing when it has no condition's form.
+std::optional<Condition> parse_condition(const std::string& token);
 
 struct LessonPart {
     PartKind kind = PartKind::prose;
@@ -57,12 +75,20 @@ struct LessonPart {
     std::string text;                   // prose, block, answer: the lines, joined by '\n'
     std::vector<std::string> keys;      // values
     std::vector<std::string> branches;  // block: the branch names; empty for "pixel" (every pixel)
+    std::vector<Condition> conditions;  // block: every one must hold too
+    std::string scene;                  // scene: the scene's file name; empty: the lesson's own
+    std::string figure;                 // figure: what to draw ("pane")
 };
 
 struct LessonStep {
     std::string id, title;
     int line = 0;
     std::vector<LessonPart> parts;
+    // "::: needs lit has:light[0].s_1": the step is about a pixel of one of
+    // these branches (none: any) where every condition holds.
+    std::vector<std::string> needs_branches;
+    std::vector<Condition> needs;
+    int needs_line = 0;
 };
 
 struct Lesson {

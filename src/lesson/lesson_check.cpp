@@ -144,18 +144,41 @@ void check_lesson(const Lesson& lesson, const Vocabulary& vocabulary, std::vecto
         problem(line, "error_unknown_setting", {{"key", qualified}, {"settings", settings}});
         return false;
     };
+    // A wildcard (sphere[*]) stands for every object of its kind: checked as the first.
+    const auto unstarred = [](std::string path) {
+        for (std::size_t star = path.find("[*]"); star != std::string::npos; star = path.find("[*]", star))
+            path.replace(star, 3, "[0]");
+        return path;
+    };
+    const auto conditions_ok = [&](const std::vector<Condition>& conditions, int line) {
+        for (const Condition& condition : conditions) {
+            const auto [bare, settings] = split_settings(condition.path);
+            if (settings_ok(condition.path, settings, line)) path_ok(bare, line);
+        }
+    };
+    const auto branches_ok = [&](const std::vector<std::string>& branches, int line) {
+        for (const std::string& branch : branches)
+            if (vocabulary.find_branch(branch) == nullptr)
+                problem(line, "error_unknown_branch", {{"branch", branch}, {"branches", branch_list(vocabulary)}});
+    };
     for (const LessonStep& step : lesson.steps) {
+        branches_ok(step.needs_branches, step.needs_line);
+        conditions_ok(step.needs, step.needs_line);
         for (const LessonPart& part : step.parts) {
             if (part.kind == PartKind::values) {
                 for (const std::string& key : part.keys) {
                     const auto [bare, settings] = split_settings(key);
-                    if (settings_ok(key, settings, part.line)) path_ok(bare, part.line);
+                    const bool star = bare.find("[*]") != std::string::npos;
+                    if (settings_ok(key, settings, part.line)) {
+                        const PathCheck check = check_path(unstarred(bare), vocabulary, scene);
+                        // A wildcard in a scene without that kind of object is no fault: it shows no row.
+                        if (!(star && check.fault == PathFault::index)) path_ok(unstarred(bare), part.line);
+                    }
                 }
                 continue;
             }
-            for (const std::string& branch : part.branches)
-                if (vocabulary.find_branch(branch) == nullptr)
-                    problem(part.line, "error_unknown_branch", {{"branch", branch}, {"branches", branch_list(vocabulary)}});
+            branches_ok(part.branches, part.line);
+            conditions_ok(part.conditions, part.line);
             for_each_placeholder(part, [&](const Placeholder& placeholder, int line) {
                 if (!placeholder.valid) {
                     problem(line, "error_bad_placeholder", {{"text", placeholder.name}});
@@ -169,7 +192,10 @@ void check_lesson(const Lesson& lesson, const Vocabulary& vocabulary, std::vecto
                 }
                 if (!settings_ok(qualified_path(placeholder), placeholder.settings, line)) return;
                 if (!special && !path_ok(placeholder.path, line)) return;
-                if (part.kind == PartKind::prose && !placeholder.symbol && depends_on_pixel(placeholder.path, vocabulary))
+                // Prose names the step's pixel ({i}, {j}), never its numbers.
+                const bool step_pixel = placeholder.path == "i" || placeholder.path == "j";
+                if ((part.kind == PartKind::prose || part.kind == PartKind::scene) && !placeholder.symbol && !step_pixel &&
+                    depends_on_pixel(placeholder.path, vocabulary))
                     problem(line, "error_pixel_outside_block", {{"key", placeholder.path}});
             });
         }

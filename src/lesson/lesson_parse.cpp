@@ -15,7 +15,7 @@ namespace promyk {
 
 namespace {
 
-const std::vector<std::string_view> header_fields = {"name", "title", "summary", "scene", "w", "pixels", "columns", "real", "formula", "spp", "digits"};
+const std::vector<std::string_view> header_fields = {"name", "title", "summary", "scene", "w", "pixels", "columns", "real", "formula", "spp", "digits", "effect"};
 
 std::vector<std::string> split_lines(std::string_view text) {
     if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // a UTF-8 byte order mark
@@ -254,6 +254,11 @@ private:
                 header.digits = std::stoi(value);
             else
                 problem(line, "error_header_value", {{"field", field}, {"problem", "1 … 40, or all"}});
+        } else if (field == "effect") {
+            static const std::vector<std::string_view> effects = {"spheres", "lights", "plane", "shadows", "phong", "colour"};
+            if (std::find(effects.begin(), effects.end(), value) == effects.end())
+                problem(line, "error_header_value", {{"field", field}, {"problem", joined(effects)}});
+            header.effect = value;
         } else if (field == "spp") {
             const bool digits = !value.empty() && value.size() <= 4 && value.find_first_not_of("0123456789") == std::string::npos;
             if (!digits || !valid_spp(std::stoi(value)))
@@ -331,11 +336,44 @@ private:
                 }
                 LessonPart part;
                 part.line = number;
+                // One-line directives: no body, no closing ":::".
+                if (names[0] == "needs") {
+                    if (step->needs_line != 0) problem(number, "error_needs_twice");
+                    step->needs_line = number;
+                    for (std::size_t n = 1; n < names.size(); ++n) {
+                        if (std::optional<Condition> condition = parse_condition(names[n]))
+                            step->needs.push_back(*condition);
+                        else
+                            step->needs_branches.push_back(names[n]);
+                    }
+                    if (names.size() == 1) problem(number, "error_needs_empty");
+                    continue;
+                }
+                if (names[0] == "figure") {
+                    part.kind = PartKind::figure;
+                    part.figure = names.size() > 1 ? names[1] : "";
+                    if (names.size() != 2 || names[1] != "pane") problem(number, "error_figure", {{"figure", trimmed}});
+                    step->parts.push_back(part);
+                    continue;
+                }
                 if (names.size() == 1 && names[0] == "answer") {
                     part.kind = PartKind::answer;
+                } else if (names[0] == "scene") {
+                    part.kind = PartKind::scene;
+                    if (names.size() > 2) problem(number, "error_scene_block", {{"text", trimmed}});
+                    if (names.size() == 2) part.scene = names[1];
                 } else {
                     part.kind = PartKind::block;
-                    if (std::find(names.begin(), names.end(), "pixel") == names.end()) part.branches = names;
+                    bool every = false;
+                    for (const std::string& name : names) {
+                        if (std::optional<Condition> condition = parse_condition(name))
+                            part.conditions.push_back(*condition);
+                        else if (name == "pixel")
+                            every = true;
+                        else
+                            part.branches.push_back(name);
+                    }
+                    if (every) part.branches.clear();
                 }
                 step->parts.push_back(part);
                 block = &step->parts.back();
@@ -367,6 +405,46 @@ private:
     std::vector<LessonProblem>& problems_;
     int pixels_line_ = 0;  // the header's "pixels:" line
 };
+
+}  // namespace
+
+std::optional<Condition> parse_condition(const std::string& token) {
+    Condition condition;
+    condition.text = token;
+    const auto path_ok = [](const std::string& path) {
+        return !path.empty() && parse_value_path(split_settings(path).first).has_value();
+    };
+    if (token.rfind("has:", 0) == 0 || token.rfind("no:", 0) == 0) {
+        const bool has = token[0] == 'h';
+        condition.path = token.substr(has ? 4 : 3);
+        condition.op = has ? Condition::Op::exists : Condition::Op::missing;
+        if (!path_ok(condition.path)) return std::nullopt;
+        return condition;
+    }
+    // PATH OP NUMBER, the operator one of < <= > >= ≤ ≥.
+    static const std::vector<std::pair<std::string, Condition::Op>> ops = {
+        {"<=", Condition::Op::less_equal}, {">=", Condition::Op::greater_equal}, {"\xE2\x89\xA4", Condition::Op::less_equal},
+        {"\xE2\x89\xA5", Condition::Op::greater_equal}, {"<", Condition::Op::less}, {">", Condition::Op::greater}};
+    for (const auto& [text, op] : ops) {
+        const std::size_t at = token.find(text);
+        if (at == std::string::npos || at == 0) continue;
+        condition.path = token.substr(0, at);
+        condition.op = op;
+        std::string number = token.substr(at + text.size());
+        if (number.empty() || !path_ok(condition.path)) return std::nullopt;
+        std::size_t used = 0;
+        try {
+            condition.bound = std::stod(number, &used);
+        } catch (const std::exception&) {
+            return std::nullopt;
+        }
+        if (used != number.size()) return std::nullopt;
+        return condition;
+    }
+    return std::nullopt;
+}
+
+namespace {
 
 bool latex_brace(std::string_view text, std::size_t at) {
     if (at == 0) return false;

@@ -12,6 +12,8 @@
 #include "trace/keys.hpp"
 #include "trace/trace_text.hpp"
 #include "render/world.hpp"
+#include "lesson/lesson_check.hpp"
+#include "trace/intensity_formula.hpp"
 
 namespace promyk {
 
@@ -60,7 +62,9 @@ std::string lesson_formula(Language language, const std::string& path, const Voc
 }
 
 // The text with its placeholders filled for one pixel (or for none: prose).
-std::string fill(const LessonView& view, const std::string& text, const PixelTrace* trace) {
+// `named` is the pixel prose's {i} and {j} name (the step's pixel), if any.
+std::string fill(const LessonView& view, const std::string& text, const PixelTrace* trace,
+                 const PixelTrace* named = nullptr) {
     const Language language = view.lesson.language;
     std::string out;
     std::size_t at = 0;
@@ -80,6 +84,8 @@ std::string fill(const LessonView& view, const std::string& text, const PixelTra
             out += entry ? lesson_symbol(language, *entry) : p.name;
         } else if (p.name == "w") {
             out += std::to_string(view.w);
+        } else if (trace == nullptr && named != nullptr && (p.name == "i" || p.name == "j")) {
+            out += std::to_string(p.name == "i" ? named->header.i : named->header.j);
         } else if (trace == nullptr && (p.name == "i" || p.name == "j" || p.name == "branch")) {
             out += message(language, "not_reached");
         } else if (p.name == "i" || p.name == "j") {
@@ -141,9 +147,108 @@ std::string group_suffix(const LessonView& view, const std::string& qualified) {
     return out.empty() ? "" : " (" + out + ")";
 }
 
-bool shown_for(const LessonPart& part, const PixelTrace& trace) {
-    if (part.branches.empty()) return true;
-    return std::find(part.branches.begin(), part.branches.end(), branch_name(trace.branch)) != part.branches.end();
+std::string wrap(const std::string& text, std::size_t indent, std::size_t first_used);
+
+bool shown_for(const LessonView& view, const LessonPart& part, const PixelTrace& trace) {
+    return block_shown_for(view, part, trace);
+}
+
+// A scene block is shown on its scene: the lesson's own, or the one it names.
+bool scene_shown(const LessonView& view, const LessonPart& part) {
+    return part.scene.empty() ? view.own_scene : part.scene == view.scene_file;
+}
+
+// A table row's formula of I_P: the one of the scene's effects.
+std::string row_formula(const LessonView& view, const std::string& key, const VocabularyEntry& entry, bool latex) {
+    if (key == "I_P" && !view.traces.empty()) {
+        const std::string effects = effect_set(view.traces.front());
+        if (effects != "lambert") {
+            const IntensityFormula& formula = intensity_formula(effects);
+            return latex ? formula.formula_latex : formula.formula;
+        }
+    }
+    return lesson_formula(view.lesson.language, key, entry, latex);
+}
+
+// What a step needs, in words: "lit side, has:t".
+std::string needs_text(const LessonView& view, const LessonStep& step) {
+    std::string out;
+    for (const std::string& branch : step.needs_branches)
+        out += (out.empty() ? "" : " / ") + optional_message(view.lesson.language, "branch_name_" + branch).value_or(branch);
+    for (const Condition& condition : step.needs) out += (out.empty() ? "" : ", ") + condition.text;
+    return out;
+}
+
+// The line a step shows when no chosen pixel has what it needs.
+std::string needs_line(const LessonView& view, const LessonStep& step) {
+    const Language language = view.lesson.language;
+    std::string what = needs_text(view, step);
+    if (what.empty()) what = message(language, "lesson_needs_values");
+    const std::optional<LessonPixel> found = pane_pixel_for(view, step);
+    if (!found)
+        return message(language, "lesson_needs_none", {{"what", what}, {"w", std::to_string(view.w)}});
+    return message(language, "lesson_needs_pixel",
+                   {{"what", what},
+                    {"i", std::to_string(found->i)},
+                    {"j", std::to_string(found->j)},
+                    {"name", view.lesson.header.name}});
+}
+
+// True when a prose part names the step's pixel ({i}, {j}).
+bool names_pixel(const std::string& text) {
+    for (const Placeholder& p : find_placeholders(text))
+        if (p.valid && (p.name == "i" || p.name == "j") && p.path == p.name) return true;
+    return false;
+}
+
+// The chosen pane drawn by branch, a character a pixel, the chosen pixels
+// marked 1, 2, … (then a, b, …), with a legend.
+std::string pane_figure(const LessonView& view) {
+    const Language language = view.lesson.language;
+    if (!view.pane_pixel || view.w > 38) return message(language, "figure_too_large", {{"w", std::to_string(view.w)}}) + "\n";
+    const auto symbol = [](Branch branch) {
+        switch (branch) {
+            case Branch::miss: return ".";
+            case Branch::dark: return "-";
+            case Branch::lit: return "#";
+            case Branch::shadowed: return "s";
+            default: return "!";
+        }
+    };
+    const auto mark = [](std::size_t k) { return std::string(1, k < 9 ? static_cast<char>('1' + k) : static_cast<char>('a' + (k - 9) % 26)); };
+    std::string out = "     ";
+    for (int j = 0; j < view.w; ++j) out += std::to_string(j % 10) + " ";
+    out += " j\n";
+    for (int i = 0; i < view.w; ++i) {
+        out += fmt::format("  {:>2} ", i);
+        for (int j = 0; j < view.w; ++j) {
+            std::string cell = symbol(view.pane_pixel(i, j).branch);
+            for (std::size_t k = 0; k < view.traces.size(); ++k)
+                if (view.traces[k].header.i == i && view.traces[k].header.j == j) {
+                    cell = mark(k);
+                    break;
+                }
+            out += cell + " ";
+        }
+        out += "\n";
+    }
+    out += "   i\n";
+    std::string legend;
+    for (const Branch branch : {Branch::miss, Branch::dark, Branch::lit, Branch::shadowed, Branch::non_finite}) {
+        bool present = false;
+        for (int i = 0; i < view.w && !present; ++i)
+            for (int j = 0; j < view.w && !present; ++j) present = view.pane_pixel(i, j).branch == branch;
+        if (present)
+            legend += (legend.empty() ? "" : ", ") + std::string(symbol(branch)) + " " +
+                      message(language, "branch_name_" + std::string(branch_name(branch)));
+    }
+    std::string chosen;
+    for (std::size_t k = 0; k < view.traces.size(); ++k)
+        chosen += (chosen.empty() ? "" : ", ") + mark(k) + " " +
+                  message(language, "pixel_label", {{"i", std::to_string(view.traces[k].header.i)}, {"j", std::to_string(view.traces[k].header.j)}}) +
+                  " (" + message(language, "branch_name_" + std::string(branch_name(view.traces[k].branch))) + ")";
+    out += wrap(message(language, "figure_legend", {{"branches", legend}, {"chosen", chosen}}), 2, 0) + "\n";
+    return out;
 }
 
 // --- terminal text -------------------------------------------------------
@@ -268,10 +373,10 @@ std::string bold(const LessonView& view, const std::string& text) {
 std::string text_values(const LessonView& view, const LessonPart& part) {
     const Language language = view.lesson.language;
     std::string out;
-    for (const std::string& key : part.keys) {
+    for (const std::string& key : expanded_keys(view, part.keys)) {
         const VocabularyEntry* entry = view.vocabulary.find(path_key(key));
         const std::string symbol = (entry ? lesson_symbol(language, *entry) : key) + group_suffix(view, key);
-        const std::string formula = entry ? lesson_formula(language, key, *entry, false) : "";
+        const std::string formula = entry ? row_formula(view, key, *entry, false) : "";
         out += "  " + symbol + (formula.empty() ? "" : " = " + formula) + "\n";
         std::vector<std::string> cells;
         for (const PixelTrace& trace : view.traces) {
@@ -292,16 +397,20 @@ std::string text_values(const LessonView& view, const LessonPart& part) {
     return out;
 }
 
-std::string text_part(const LessonView& view, const LessonPart& part) {
+std::string text_part(const LessonView& view, const LessonPart& part, const PixelTrace* named) {
     switch (part.kind) {
         case PartKind::prose:
-            return text_paragraphs(fill(view, part.text, nullptr), 0);
+            return text_paragraphs(fill(view, part.text, nullptr, named), 0);
+        case PartKind::scene:
+            return scene_shown(view, part) ? text_paragraphs(fill(view, part.text, nullptr, named), 0) : "";
+        case PartKind::figure:
+            return pane_figure(view);
         case PartKind::values:
             return text_values(view, part);
         case PartKind::block: {
             std::string out;
             for (const PixelTrace& trace : view.traces) {
-                if (!shown_for(part, trace)) continue;
+                if (!shown_for(view, part, trace)) continue;
                 const std::string label = "▸ " + pixel_label(view, trace) + ": ";
                 out += label + text_paragraphs(fill(view, part.text, &trace), 2, display_width(label));
             }
@@ -322,11 +431,11 @@ std::string markdown_values(const LessonView& view, const LessonPart& part) {
     out += "\n|---|";
     for (std::size_t c = 0; c < view.traces.size(); ++c) out += "---|";
     out += "\n";
-    for (const std::string& key : part.keys) {
+    for (const std::string& key : expanded_keys(view, part.keys)) {
         const VocabularyEntry* entry = view.vocabulary.find(path_key(key));
         std::string math = split_settings(key).first;
         if (entry != nullptr) {
-            math = lesson_formula(language, key, *entry, true);
+            math = row_formula(view, key, *entry, true);
             if (math.empty()) math = entry->latex;
         }
         // A | would end the table's cell: LaTeX's \vert draws the same bar.
@@ -342,16 +451,20 @@ std::string markdown_values(const LessonView& view, const LessonPart& part) {
     return out;
 }
 
-std::string markdown_part(const LessonView& view, const LessonPart& part) {
+std::string markdown_part(const LessonView& view, const LessonPart& part, const PixelTrace* named) {
     switch (part.kind) {
         case PartKind::prose:
-            return fill(view, part.text, nullptr) + "\n";
+            return fill(view, part.text, nullptr, named) + "\n";
+        case PartKind::scene:
+            return scene_shown(view, part) ? fill(view, part.text, nullptr, named) + "\n" : "";
+        case PartKind::figure:
+            return "```\n" + pane_figure(view) + "```\n";
         case PartKind::values:
             return markdown_values(view, part);
         case PartKind::block: {
             std::string out;
             for (const PixelTrace& trace : view.traces) {
-                if (!shown_for(part, trace)) continue;
+                if (!shown_for(view, part, trace)) continue;
                 if (!out.empty()) out += "\n";
                 out += "**" + pixel_label(view, trace) + ":** " + fill(view, part.text, &trace) + "\n";
             }
@@ -596,6 +709,102 @@ std::string rounded_real_text(const std::string& text, const std::string& real, 
 
 }  // namespace
 
+bool scene_has_effect(const Scene& scene, const std::string& effect) {
+    if (effect == "spheres") return scene.spheres.size() > 1;
+    if (effect == "lights") return scene.lights.size() > 1;
+    if (effect == "plane") return !scene.planes.empty();
+    if (effect == "shadows") return scene.shadows && scene.object_count() > 1;
+    if (effect == "phong")
+        return std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) { return m.specular > 0; });
+    if (effect == "colour") return is_coloured(scene);
+    return true;
+}
+
+bool condition_holds(const LessonView& view, const PixelTrace& trace, const Condition& condition) {
+    const std::optional<LessonNumber> number = lesson_number(view, trace, condition.path);
+    if (condition.op == Condition::Op::exists) return number.has_value();
+    if (condition.op == Condition::Op::missing) return !number.has_value();
+    const double* value = number ? std::get_if<double>(&number->value) : nullptr;
+    if (value == nullptr) return false;
+    switch (condition.op) {
+        case Condition::Op::less: return *value < condition.bound;
+        case Condition::Op::less_equal: return *value <= condition.bound;
+        case Condition::Op::greater: return *value > condition.bound;
+        case Condition::Op::greater_equal: return *value >= condition.bound;
+        default: return false;
+    }
+}
+
+bool block_shown_for(const LessonView& view, const LessonPart& part, const PixelTrace& trace) {
+    if (!part.branches.empty() &&
+        std::find(part.branches.begin(), part.branches.end(), branch_name(trace.branch)) == part.branches.end())
+        return false;
+    return std::all_of(part.conditions.begin(), part.conditions.end(),
+                       [&](const Condition& condition) { return condition_holds(view, trace, condition); });
+}
+
+namespace {
+
+// True when the pixel has what the step needs: its branch and conditions,
+// and every value its answers name.
+bool has_needs(const LessonView& view, const LessonStep& step, const PixelTrace& trace) {
+    if (!step.needs_branches.empty() &&
+        std::find(step.needs_branches.begin(), step.needs_branches.end(), branch_name(trace.branch)) == step.needs_branches.end())
+        return false;
+    for (const Condition& condition : step.needs)
+        if (!condition_holds(view, trace, condition)) return false;
+    for (const LessonPart& part : step.parts) {
+        if (part.kind != PartKind::answer) continue;
+        for (const Placeholder& p : find_placeholders(part.text))
+            if (p.valid && !p.symbol && view.vocabulary.find(p.name) != nullptr && !lesson_number(view, trace, qualified_path(p)))
+                return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+const PixelTrace* step_pixel(const LessonView& view, const LessonStep& step) {
+    for (const PixelTrace& trace : view.traces)
+        if (has_needs(view, step, trace)) return &trace;
+    return nullptr;
+}
+
+std::optional<LessonPixel> pane_pixel_for(const LessonView& view, const LessonStep& step) {
+    if (!view.pane_pixel) return std::nullopt;
+    for (int i = 0; i < view.w; ++i)
+        for (int j = 0; j < view.w; ++j)
+            if (has_needs(view, step, view.pane_pixel(i, j))) return LessonPixel{i, j};
+    return std::nullopt;
+}
+
+std::vector<std::string> expanded_keys(const LessonView& view, const std::vector<std::string>& keys) {
+    std::vector<std::string> out;
+    std::vector<std::string> pending(keys.rbegin(), keys.rend());
+    while (!pending.empty()) {
+        const std::string key = pending.back();
+        pending.pop_back();
+        const std::size_t star = key.find("[*]");
+        if (star == std::string::npos) {
+            // A row about an object the scene lacks (light[1] in a scene of one light) is left out.
+            if (view.scene == nullptr || check_path(split_settings(key).first, view.vocabulary, view.scene).fault != PathFault::index)
+                out.push_back(key);
+            continue;
+        }
+        if (view.scene == nullptr) continue;
+        std::size_t begin = star;
+        while (begin > 0 && std::isalpha(static_cast<unsigned char>(key[begin - 1]))) --begin;
+        const std::string kind = key.substr(begin, star - begin);
+        const std::size_t count = kind == "sphere" ? view.scene->spheres.size()
+                                  : kind == "plane" ? view.scene->planes.size()
+                                  : kind == "light" ? view.scene->lights.size()
+                                  : kind == "material" ? view.scene->materials.size() : 0;
+        for (std::size_t k = count; k-- > 0;)
+            pending.push_back(key.substr(0, star) + "[" + std::to_string(k) + "]" + key.substr(star + 3));
+    }
+    return out;
+}
+
 std::string lesson_number_text(const LessonNumber& number, const std::string& kind, Language language, int decimals,
                                int digits) {
     const int significant = decimals == every_digit ? 0 : digits;  // shown_number's 0: every digit
@@ -645,6 +854,15 @@ std::string render_lesson_title(const LessonView& view) {
     if (numbers.spp > 1)
         settings += (settings.empty() ? "" : " ") +
                     message(language, "lesson_samples", {{"spp", std::to_string(numbers.spp)}});
+    // A scene without the lesson's effect: one line says so and names the lesson's own scene.
+    const std::string& effect = view.lesson.header.effect;
+    if (!effect.empty() && view.scene != nullptr && !scene_has_effect(*view.scene, effect))
+        settings += (settings.empty() ? "" : " ") +
+                    message(language, "lesson_scene_lacks",
+                            {{"scene", view.scene_name},
+                             {"effect", message(language, "effect_" + effect)},
+                             {"example", view.lesson.header.scene},
+                             {"name", view.lesson.header.name}});
     if (view.format == LessonFormat::markdown)
         return "# " + heading + "\n\n*" + view.lesson.header.summary + "*\n\n" + setup + (settings.empty() ? "" : "\n\n" + settings) + "\n";
     return bold(view, heading) + "\n" + wrap(view.lesson.header.summary, 0) + "\n" + wrap(setup, 0) + "\n" +
@@ -657,17 +875,30 @@ std::string render_step(const LessonView& view, std::size_t k) {
         message(view.lesson.language, "step_heading",
                 {{"k", std::to_string(k + 1)}, {"n", std::to_string(view.lesson.steps.size())}, {"title", step.title}});
     std::string out;
+    // The pixel the step's prose names ({i}, {j}) and its answers are about;
+    // when no chosen pixel has what the step needs, the step says so, names
+    // a pixel of the pane that has it, and leaves out what names the pixel.
+    const PixelTrace* named = step_pixel(view, step);
+    const bool needs = step.needs_line != 0 || has_answers(step);
+    const std::string missing = named == nullptr && needs ? needs_line(view, step) : "";
+    const auto skipped = [&](const LessonPart& part) {
+        return named == nullptr && (part.kind == PartKind::prose || part.kind == PartKind::scene) && names_pixel(part.text);
+    };
     if (view.format == LessonFormat::markdown) {
         out = "## " + heading + "\n";
+        if (!missing.empty()) out += "\n*" + missing + "*\n";
         for (const LessonPart& part : step.parts) {
-            const std::string text = markdown_part(view, part);
+            if (skipped(part)) continue;
+            const std::string text = markdown_part(view, part, named);
             if (!text.empty()) out += "\n" + text;
         }
         return out;
     }
     out = bold(view, "── " + heading + " ──") + "\n";
+    if (!missing.empty()) out += "\n" + wrap(missing, 0, 0) + "\n";
     for (const LessonPart& part : step.parts) {
-        const std::string text = text_part(view, part);
+        if (skipped(part)) continue;
+        const std::string text = text_part(view, part, named);
         if (!text.empty()) out += "\n" + text;
     }
     return out;
@@ -679,19 +910,12 @@ std::string render_answers(const LessonView& view, std::size_t k) {
     std::string out;
     for (const LessonPart& part : step.parts) {
         if (part.kind != PartKind::answer) continue;
-        // The first pixel column whose computation reached every value the
-        // answer names (an answer about t needs a pixel that hit).
-        const PixelTrace* pixel = &view.traces.front();
-        for (const PixelTrace& trace : view.traces) {
-            const std::vector<Placeholder> placeholders = find_placeholders(part.text);
-            if (std::all_of(placeholders.begin(), placeholders.end(), [&](const Placeholder& p) {
-                    return !p.valid || p.symbol || view.vocabulary.find(p.name) == nullptr ||
-                           lesson_number(view, trace, qualified_path(p));
-                })) {
-                pixel = &trace;
-                break;
-            }
-        }
+        // The step's pixel: the first pixel column that has what the step
+        // needs and whose computation reached every value its answers name
+        // (an answer about t needs a pixel that hit). With none, no answer:
+        // the step has said which pixel has one.
+        const PixelTrace* pixel = step_pixel(view, step);
+        if (pixel == nullptr) return "";
         const std::string text = fill(view, part.text, pixel);
         if (view.format == LessonFormat::markdown)
             out += "\n<details><summary>" + title + "</summary>\n\n" + text + "\n\n</details>\n";

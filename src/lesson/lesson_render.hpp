@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "lesson/lesson.hpp"
+#include "scene/scene.hpp"
 #include "trace/trace.hpp"
 #include "trace/vocabulary.hpp"
 
@@ -33,7 +34,42 @@ struct LessonView {
     // Significant digits of a value shown without a format of its own
     // ({key}, tables): 4, or the command line's --digits.
     int digits = 4;
+    // The scene the lesson runs on: its objects (wildcard rows, sphere[*].t)
+    // and effects; nullptr: rows are not expanded.
+    const Scene* scene = nullptr;
+    // The scene's file name ("two_lights.json"; "article" for the built-in
+    // one), for "::: scene FILE" blocks; and whether it is the lesson's own.
+    std::string scene_file{};
+    bool own_scene = true;
+    // Any pixel of the pane at the view's w (a step's needs, the figure);
+    // empty: none is searched.
+    std::function<const PixelTrace&(int i, int j)> pane_pixel{};
 };
+
+// True when the scene has the effect a lesson's "effect:" names (spheres:
+// more than one; lights: more than one; plane; shadows; phong; colour).
+bool scene_has_effect(const Scene& scene, const std::string& effect);
+
+// True when the condition holds for the pixel ("has:t", "D>0").
+bool condition_holds(const LessonView& view, const PixelTrace& trace, const Condition& condition);
+
+// True when a block is shown for the pixel: its branch is listed (or none
+// is) and every condition holds.
+bool block_shown_for(const LessonView& view, const LessonPart& part, const PixelTrace& trace);
+
+// The pixel a step is about: the first chosen one that has what the step
+// needs (its "::: needs" line) and reached every value its answers name;
+// nullptr when none has.
+const PixelTrace* step_pixel(const LessonView& view, const LessonStep& step);
+
+// The first pixel of the pane (row by row) that has what the step needs, or nullptr.
+std::optional<LessonPixel> pane_pixel_for(const LessonView& view, const LessonStep& step);
+
+// A table's keys with every wildcard (sphere[*].t) made one key an object
+// of the scene, and rows naming an object the scene lacks left out.
+std::vector<std::string> expanded_keys(const LessonView& view, const std::vector<std::string>& keys);
+
+
 
 // The lesson's title, summary and setup (scene, pane, pixels).
 std::string render_lesson_title(const LessonView& view);

@@ -1,5 +1,7 @@
 #include "trace/trace_text.hpp"
 
+#include "trace/intensity_formula.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <iterator>
@@ -328,7 +330,12 @@ std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, c
     const VocabularyEntry* mean = vocabulary.find("I_mean");
     const std::string formula = trace.samples ? (mean ? mean->formula : "")
                                 : trace.hit_object.empty() ? (result ? result->formula : "")
-                                                           : message(language, "trace_result_sum");
+                                                           : intensity_formula(effect_set(trace)).formula;
+    // What the formula's letters mean, when the article did not say (sₖ, cₖ).
+    const IntensityFormula& effects_formula = intensity_formula(effect_set(trace));
+    const std::string& note = language == Language::pl ? effects_formula.pl : effects_formula.en;
+    const bool noted = !trace.hit_object.empty() && !trace.samples && !note.empty() &&
+                       (trace.branch == Branch::lit || trace.branch == Branch::shadowed);
     const std::string result_lead = message(language, "trace_result");
     out += wrap(result_lead,
                 I_P + " = " +
@@ -337,7 +344,9 @@ std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, c
                          ? formula + " = "
                          : "") +
                     value,
-                display_width(result_lead), language == Language::pl ? "; " : ", ");
+                display_width(result_lead),
+                trace.hit_object.empty() ? (language == Language::pl ? "; " : ", ") : " ");
+    if (noted) out += wrap(std::string(display_width(result_lead), ' '), note, display_width(result_lead));
     // cos α is a cosine only for a point on the sphere: above 1 (beyond
     // rounding) the "hit" is not on the sphere at all, and I_P with it is
     // no intensity (a tangent ray whose Δ/4 lost every digit).
