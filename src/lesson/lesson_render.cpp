@@ -534,6 +534,11 @@ std::optional<StepValue> lesson_value(const PixelTrace& trace, const std::string
         const std::string centre = "sample[" + std::to_string(trace.samples->centre) + "]." + key;
         if (std::optional<StepValue> value = lesson_value(trace, centre)) return value;
     }
+    // The article's kernel records no groups: sphere 0 and light 0 are its
+    // one sphere and one light, whose steps stand at the top level.
+    if (trace.groups.empty() && path->groups.size() == 1 && path->groups[0].index == 0 &&
+        (path->groups[0].kind == "sphere" || path->groups[0].kind == "light") && !trace.header.given.empty())
+        if (std::optional<StepValue> value = lesson_value(trace, path->key)) return value;
     // The group the path names: each one's parent is the one before it.
     int group = -1;
     for (const PathGroup& wanted : path->groups) {
@@ -553,6 +558,22 @@ std::optional<StepValue> lesson_value(const PixelTrace& trace, const std::string
     for (const GivenValue& given : trace.header.given)
         if (given.key == path->key) return given.value;
     if (path->key == "I_P") return trace.result_rgb ? StepValue{*trace.result_rgb} : StepValue{trace.result};
+    // A general scene (several objects or lights, planes, shadows, Phong)
+    // records the article's steps in groups: a lesson about the article's one
+    // sphere and one light, run on it, names by a top-level key the nearest
+    // hit's step (t: t_hit), else sphere 0's, else light 0's.
+    if (path->groups.empty() && !trace.groups.empty()) {
+        if (path->key == "t")
+            if (std::optional<StepValue> value = lesson_value(trace, "t_hit")) return value;
+        std::vector<std::string> groups;
+        const std::size_t space = trace.hit_object.find(' ');
+        if (space != std::string::npos)
+            groups.push_back(trace.hit_object.substr(0, space) + "[" + trace.hit_object.substr(space + 1) + "].");
+        groups.push_back("sphere[0].");
+        groups.push_back("light[0].");
+        for (const std::string& group : groups)
+            if (std::optional<StepValue> value = lesson_value(trace, group + path->key)) return value;
+    }
     return std::nullopt;
 }
 
