@@ -152,6 +152,7 @@ void check_lesson(const Lesson& lesson, const Vocabulary& vocabulary, std::vecto
     };
     const auto conditions_ok = [&](const std::vector<Condition>& conditions, int line) {
         for (const Condition& condition : conditions) {
+            if (condition.op == Condition::Op::on_scene) continue;
             const auto [bare, settings] = split_settings(condition.path);
             if (settings_ok(condition.path, settings, line)) path_ok(bare, line);
         }

@@ -414,6 +414,11 @@ std::optional<Condition> parse_condition(const std::string& token) {
     const auto path_ok = [](const std::string& path) {
         return !path.empty() && parse_value_path(split_settings(path).first).has_value();
     };
+    if (token.rfind("on:", 0) == 0 && token.size() > 3) {
+        condition.op = Condition::Op::on_scene;
+        condition.path = token == "on:own" ? "" : token.substr(3);
+        return condition;
+    }
     if (token.rfind("has:", 0) == 0 || token.rfind("no:", 0) == 0) {
         const bool has = token[0] == 'h';
         condition.path = token.substr(has ? 4 : 3);

@@ -742,6 +742,7 @@ bool scene_has_effect(const Scene& scene, const std::string& effect) {
 }
 
 bool condition_holds(const LessonView& view, const PixelTrace& trace, const Condition& condition) {
+    if (condition.op == Condition::Op::on_scene) return condition.path.empty() ? view.own_scene : condition.path == view.scene_file;
     const std::optional<LessonNumber> number = lesson_number(view, trace, condition.path);
     if (condition.op == Condition::Op::exists) return number.has_value();
     if (condition.op == Condition::Op::missing) return !number.has_value();
