@@ -149,7 +149,7 @@ void sweep_one(const Case& c, const Scene& scene, Traces& traces, int w) {
     }
     // Pixels named: the chosen ones, and the one a step's needs name ("(1, 3): promyk lesson … --pixel 1,3").
     // A block about the lesson's own scene may name its pixels (true there); so may the pane's geometry
-    // in lesson pane ("the top left square is (0, 0)"). An interval "in (0, 1)" is no pixel.
+    // in lesson pane ("the top left square is (0, 0)"). An interval "in (0, 1)", "w przedziale (0, 1)" is no pixel.
     LessonView others = view;
     others.own_scene = false;
     others.scene_file = "";
@@ -168,7 +168,8 @@ void sweep_one(const Case& c, const Scene& scene, Traces& traces, int w) {
     for (auto it = std::sregex_iterator(joined.begin(), joined.end(), pixel); it != std::sregex_iterator(); ++it) {
         const std::pair<int, int> named{std::stoi((*it)[1]), std::stoi((*it)[2])};
         const std::size_t at = static_cast<std::size_t>(it->position());
-        const bool interval = at >= 3 && (joined.compare(at - 3, 3, "in ") == 0 || joined.compare(at - 2, 2, "w ") == 0);
+        const bool interval = at >= 3 && (joined.compare(at - 3, 3, "in ") == 0 ||
+                                           (at >= 11 && joined.compare(at - 11, 11, "przedziale ") == 0));
         if (chosen.count(named) == 0 && !interval)
             FAIL_CHECK("pixel (" << named.first << ", " << named.second << ") named, not chosen: …"
                                  << joined.substr(at < 60 ? 0 : at - 60, 120) << "…");
