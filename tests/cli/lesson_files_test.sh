@@ -30,6 +30,6 @@ sed -i 's/^## \[exercise\]/## [cwiczenie]/' mine/pl/01-vectors.md
   bad "--check finds the step missing in one language: exit $code; $(cat err.txt)"
 
 # Step mode waits for Enter: with three lines of input it shows three steps and stops waiting at the end of input.
-printf '\n\n\n' | "$promyk" lesson vectors --step --lang en >out.txt 2>err.txt && grep -q "\[Enter: next step\]" err.txt &&
+printf '\n\n\n' | "$promyk" lesson vectors --step --lang en >out.txt 2>err.txt && grep -q "\[Enter: next step · b: back · q: quit\]" err.txt &&
   [ "$(grep -c '^── Step' out.txt)" = 7 ] && ok || bad "--step: $(grep -c '^── Step' out.txt) steps"
 summary
