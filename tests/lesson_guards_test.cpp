@@ -245,6 +245,14 @@ TEST_CASE("the formula of I_P is the one of the scene's effects, in lessons and 
     }
     const Run article(lesson, article_scene(), {{3, 4}}, "article");
     CHECK(render_step(article.view, 0).find("I_P = I·D / (r·√|K|²)") != std::string::npos);
+    // A light's contribution without Phong or colour is not shown with their letters.
+    const Lesson rows = parsed(with_body("## [a] A\n\n= light[0].contribution\n"));
+    const Run lights(rows, example("two_lights.json"), {{2, 2}}, "two_lights.json");
+    CHECK(render_step(lights.view, 0).find("= I·max(0, cos α)") != std::string::npos);
+    const Run shadows(rows, example("shadows.json"), {{2, 2}}, "shadows.json");
+    CHECK(render_step(shadows.view, 0).find("= v·I·max(0, cos α)") != std::string::npos);
+    const Run colour(rows, example("colour.json"), {{2, 2}}, "colour.json");
+    CHECK(render_step(colour.view, 0).find("= " + builtin_vocabulary().find("contribution")->formula) != std::string::npos);
 }
 
 TEST_CASE("--check reads the new forms: conditions, needs, {i} in prose; and reports their faults", "[lesson][guards]") {

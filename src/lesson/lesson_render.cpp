@@ -160,6 +160,11 @@ bool scene_shown(const LessonView& view, const LessonPart& part) {
 
 // A table row's formula of I_P: the one of the scene's effects.
 std::string row_formula(const LessonView& view, const std::string& key, const VocabularyEntry& entry, bool latex) {
+    // A light's contribution: without Phong and colour, the part of it the scene uses.
+    if (path_key(key) == "contribution" && !view.traces.empty()) {
+        const IntensityFormula& formula = intensity_formula(effect_set(view.traces.front()));
+        if (!formula.contribution.empty()) return latex ? formula.contribution_latex : formula.contribution;
+    }
     if (key == "I_P" && !view.traces.empty()) {
         const std::string effects = effect_set(view.traces.front());
         if (effects != "lambert") {

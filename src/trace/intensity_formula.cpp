@@ -22,7 +22,8 @@ const std::vector<IntensityFormula>& formulas() {
         const nlohmann::json vocabulary = nlohmann::json::parse(embedded::embedded_vocabulary_json);
         for (const nlohmann::json& item : vocabulary.at("intensity_formulas"))
             out.push_back({item.at("effects").get<std::string>(), item.at("formula").get<std::string>(),
-                           item.at("formula_latex").get<std::string>(), item.value("pl", ""), item.value("en", "")});
+                           item.at("formula_latex").get<std::string>(), item.value("pl", ""), item.value("en", ""),
+                           item.value("contribution", ""), item.value("contribution_latex", "")});
         return out;
     }();
     return all;

@@ -19,6 +19,9 @@ struct IntensityFormula {
     std::string formula;  // plain Unicode text
     std::string formula_latex;
     std::string pl, en;  // what its letters mean, when the article did not say (may be empty)
+    // One light's contribution in that effect set; empty: the vocabulary's
+    // own (the full one, with colour).
+    std::string contribution, contribution_latex;
 };
 
 // The effect set of a scene: colour when a colour reaches a pixel, else
