@@ -233,7 +233,7 @@ std::string pane_figure(const LessonView& view) {
                     cell = mark(k);
                     break;
                 }
-            out += cell + " ";
+            out += cell + (j + 1 < view.w ? " " : "");
         }
         out += "\n";
     }
