@@ -191,6 +191,7 @@ TEST_CASE("a scene block is shown on its scene only; a scene without the lesson'
     CHECK(text.find("OWN") == std::string::npos);
     CHECK(text.find("ALWAYS") != std::string::npos);
     CHECK(text.find("has no shadows, which this lesson is about: see its example scene, shadows.json") != std::string::npos);
+    CHECK(text.find("\"article\" has no shadows") != std::string::npos);
     const Run floor(lesson, example("floor.json"), {{3, 4}}, "floor.json");
     CHECK(floor.text().find("FLOOR") != std::string::npos);
 }

@@ -180,7 +180,21 @@ std::string needs_text(const LessonView& view, const LessonStep& step) {
     std::string out;
     for (const std::string& branch : step.needs_branches)
         out += (out.empty() ? "" : " / ") + optional_message(view.lesson.language, "branch_name_" + branch).value_or(branch);
-    for (const Condition& condition : step.needs) out += (out.empty() ? "" : ", ") + condition.text;
+    // A condition in words: the value's symbol and whose it is ("s₁ (light 0, sphere 0) > 0").
+    for (const Condition& condition : step.needs) {
+        if (condition.op == Condition::Op::on_scene) continue;
+        const VocabularyEntry* entry = view.vocabulary.find(path_key(condition.path));
+        const std::string named =
+            (entry ? lesson_symbol(view.lesson.language, *entry) : condition.path) + group_suffix(view, condition.path);
+        static const char* const ops[] = {"", "", " < ", " ≤ ", " > ", " ≥ "};
+        std::string text = message(view.lesson.language, "lesson_needs_has", {{"value", named}});
+        if (condition.op == Condition::Op::missing)
+            text = message(view.lesson.language, "lesson_needs_missing", {{"value", named}});
+        else if (condition.op != Condition::Op::exists)
+            text = named + ops[static_cast<int>(condition.op)] +
+                   shown_number(condition.bound, view.lesson.language, 0);
+        out += (out.empty() ? "" : ", ") + text;
+    }
     return out;
 }
 
