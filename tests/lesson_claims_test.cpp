@@ -7,6 +7,7 @@
 // a test).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -349,4 +350,77 @@ TEST_CASE("lessons 01, 02 and 08: the numbers of their prose", "[lesson][claims]
     CHECK(std::get<Vec3d>(*N).z == 0);
     CHECK(lesson_text("en", "08-planes.md").find("N = [−1, 0, 0]") != std::string::npos);
     CHECK(lesson_text("pl", "08-planes.md").find("N = [−1; 0; 0]") != std::string::npos);
+}
+
+TEST_CASE("lesson 09: a shadow ray tested against its own sphere finds a root s of about 1e-16", "[lesson][claims]") {
+    const Scene scene = load_scene_file(source + "/lessons/scenes/shadows.json");
+    const Vec3d S = scene.spheres.at(0).S;
+    const double r = scene.spheres.at(0).r;
+    std::vector<double> roots;
+    for (int i = 0; i < 8; ++i) {
+        for (int j = 0; j < 8; ++j) {
+            const PixelTrace trace = trace_pixel(scene, 8, i, j);
+            const std::optional<StepValue> nearest = lesson_value(trace, "nearest");
+            if (!nearest || std::get<std::string>(*nearest) != "sphere 0") continue;
+            const Vec3d P = std::get<Vec3d>(*lesson_value(trace, "P"));
+            const Vec3d K = std::get<Vec3d>(*lesson_value(trace, "light[0].K"));
+            // |K|² s² − 2b s + c = 0 with b = K·(S − P), c = |S − P|² − r²: c is a rounding error.
+            const Vec3d d{S.x - P.x, S.y - P.y, S.z - P.z};
+            const double KK = K.x * K.x + K.y * K.y + K.z * K.z, b = K.x * d.x + K.y * d.y + K.z * d.z;
+            const double c = d.x * d.x + d.y * d.y + d.z * d.z - r * r;
+            const double q = b + std::copysign(std::sqrt(b * b - KK * c), b);  // the root near 0 is c/q
+            if (c != 0) roots.push_back(std::fabs(c / q));
+        }
+    }
+    REQUIRE(roots.size() >= 5);
+    std::sort(roots.begin(), roots.end());
+    const double median = roots[roots.size() / 2];
+    INFO("median |s| " << median);
+    CHECK(median > 1e-17);
+    CHECK(median < 1e-15);
+    check_states("09-shadows.md", "10⁻¹⁶");
+}
+
+TEST_CASE("lesson 11: the digits each type keeps, and the numbers of its exercise b)", "[lesson][claims]") {
+    CHECK(std::numeric_limits<float>::digits == 24);
+    CHECK(std::numeric_limits<double>::digits == 53);
+    CHECK(FLT128_MANT_DIG == 113);
+    CHECK(std::lround(24 * std::log10(2.0)) == 7);
+    CHECK(std::lround(53 * std::log10(2.0)) == 16);
+    CHECK(std::lround(113 * std::log10(2.0)) == 34);
+    for (const std::string language : {"pl", "en"}) CHECK(lesson_text(language, "11-precision.md").find("113") != std::string::npos);
+    // b): 2²⁶ ≈ 6.7·10⁷, 2²⁷ ≈ 1.3·10⁸; floats there 8 apart, doubles 2⁻²⁶; 99999999 is a float 10⁸.
+    CHECK(std::round(std::ldexp(1.0, 26) / 1e6) / 10 == 6.7);
+    CHECK(std::round(std::ldexp(1.0, 27) / 1e7) / 10 == 1.3);
+    CHECK(std::nextafter(99999999.0f, 0.0f) == 99999992.0f);
+    CHECK(float(99999999.0) == 1e8f);
+    CHECK(std::nextafter(99999999.0, 1e9) - 99999999.0 == std::ldexp(1.0, -26));
+    check_states("11-precision.md", "6.7·10⁷");
+    check_states("11-precision.md", "1.3·10⁸");
+    // |E|² and E·S are about 10⁸ on the far sphere's pane.
+    const Scene scene = load_scene_file(source + "/lessons/scenes/far_sphere.json");
+    const PixelTrace corner = trace_pixel(scene, 8, 0, 0);
+    CHECK(number_of(corner, "EE") / 1e8 == Approx(1).epsilon(1e-7));
+    CHECK(number_of(corner, "C") == 1e8);
+}
+
+TEST_CASE("lesson 10: its first two pixels' R·V differ by less than a fifth, their highlights by far more", "[lesson][claims]") {
+    const Scene scene = load_scene_file(source + "/lessons/scenes/phong.json");
+    const PixelTrace first = trace_pixel(scene, 8, 3, 5), second = trace_pixel(scene, 8, 2, 4);
+    const double RV1 = number_of(first, "light[0].RV"), RV2 = number_of(second, "light[0].RV");
+    CHECK(std::fabs(RV1 - RV2) < RV1 / 5);
+    CHECK(number_of(second, "light[0].specular") < number_of(first, "light[0].specular") / 5);
+    // 20 = 10100 in binary: 4 squarings and one product, 5 multiplications.
+    CHECK(fmt::format("{:b}", 20) == "10100");
+}
+
+TEST_CASE("lesson 02: on an even pane the centre is the corner of four squares", "[lesson][claims]") {
+    const Scene article = load_scene_file(source + "/lessons/scenes/article.json");
+    for (const auto& [i, j] : std::vector<std::pair<int, int>>{{3, 3}, {3, 4}, {4, 3}, {4, 4}}) {
+        const Vec3d E = std::get<Vec3d>(*lesson_value(trace_pixel(article, 8, i, j), "E"));
+        CHECK(std::fabs(E.x) == 0.125);
+        CHECK(std::fabs(E.y) == 0.125);
+    }
+    for (const std::string language : {"pl", "en"})
+        CHECK(lesson_text(language, "02-pane.md").find("(3, 3), (3, 4), (4, 3)") != std::string::npos);
 }
