@@ -130,7 +130,7 @@ std::string Worksheet::answer_template() const {
             if (const VocabularyEntry* entry = view_.vocabulary.find(path_key(path))) {
                 std::string symbol = optional_message(language, "symbol_" + entry->key).value_or(entry->symbol);
                 if (blank->component != 0) symbol += std::string(".") + blank->component;
-                if (symbol != key && symbol != path) lines.back() += ") " + symbol;
+                if (symbol != key && symbol != path && symbol != path_key(path)) lines.back() += ") " + symbol;
             }
         }
     }
