@@ -334,6 +334,11 @@ TEST_CASE("lessons 01, 02 and 08: the numbers of their prose", "[lesson][claims]
     const double SS = number_of(trace_pixel(article, 8, 3, 4), "SS");
     CHECK(fmt::format("{}", SS) == "10.240000000000002");
     check_states("01-vectors.md", fmt::format("{}", SS));
+    // The stored 3.2 is a hair larger than 3.2; exercise c)'s vectors are perpendicular, of length 3.
+    CHECK(quad(3.2) * 10 > quad(32));
+    CHECK(1 * 2 + 2 * -2 + 2 * 1 == 0);
+    CHECK(1 * 1 + 2 * 2 + 2 * 2 == 9);
+    CHECK(2 * 2 + -2 * -2 + 1 * 1 == 9);
     // Lesson 02, exercise a): square (3, 2) of a 4 × 4 pane.
     const std::optional<StepValue> E = lesson_value(trace_pixel(article, 4, 3, 2), "E");
     REQUIRE(E);
