@@ -14,6 +14,8 @@
 #include "bench/accuracy.hpp"
 #include "render/kernel.hpp"
 #include "scene/scene.hpp"
+#include "trace/messages.hpp"
+#include "util/text.hpp"
 
 using namespace promyk;
 using namespace promyk::bench;
@@ -196,10 +198,31 @@ TEST_CASE("a tiny run: one row per scene x spp x type x formula, the baseline ti
     CHECK(report.timeable);
     CHECK(report.shortest_ms >= 20);
 
+    const Language before = ui_language();
+    set_ui_language(Language::en);
     const std::string table = accuracy_table(report);
-    CHECK(table.find("scene far_sphere: z_E = 8000, S = (0, 0, 10000), r = 1, L = (5000, 5000, 0), I = 1") !=
+    CHECK(table.find("scene far_sphere:\n  z_E = 8000, S = (0, 0, 10000), r = 1, L = (5000, 5000, 0), I = 1\n") !=
           std::string::npos);
     CHECK(table.find("no ratio") == std::string::npos);
+    CHECK(table.find("spp 4: ") != std::string::npos);
+    set_ui_language(Language::pl);
+    const std::string polish = accuracy_table(report);
+    set_ui_language(before);
+    CHECK(polish.find("scena far_sphere:\n  z_E = 8000; S = (0; 0; 10000); r = 1; L = (5000; 5000; 0); I = 1\n") !=
+          std::string::npos);
+    CHECK(polish.find("36 pikseli na szybę") != std::string::npos);  // w = 6
+    // Both languages fit 80 columns, and the Polish table has no English heading.
+    for (const std::string* text : {&table, &polish}) {
+        std::size_t start = 0;
+        for (std::size_t end; (end = text->find('\n', start)) != std::string::npos; start = end + 1) {
+            INFO(text->substr(start, end - start));
+            CHECK(display_width(std::string_view(*text).substr(start, end - start)) <= 80);
+        }
+    }
+    for (const char* english : {"formula", "medians", "scene ", "pixels", "the whole run"}) {
+        INFO(english);
+        CHECK(polish.find(english) == std::string::npos);
+    }
 
     const nlohmann::json json = nlohmann::json::parse(accuracy_json(report));
     CHECK(json["bench"] == "accuracy");

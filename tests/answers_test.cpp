@@ -173,7 +173,7 @@ TEST_CASE("a wrong number is pinpointed: which key, which pixel, what was expect
     const std::string en = answers_report(checks, traces, builtin_vocabulary(), Language::en);
     INFO(en);
     CHECK(en.find("pixel (3, 4)") != std::string::npos);
-    CHECK(en.find("✗ Δ/4 (delta) = 4.5600: wrong; to as many decimals it is 4.5578") != std::string::npos);
+    CHECK(en.find("✗ Δ/4 (delta) = 4.5600: wrong; rounded to as many decimals, it is 4.5578") != std::string::npos);
     CHECK(en.find("✓ |E|² (EE) = 5,53: right") != std::string::npos);
     CHECK(en.find("Right: 4 of 5; wrong: 1") != std::string::npos);
     const std::string pl = answers_report(checks, traces, builtin_vocabulary(), Language::pl);

@@ -1,4 +1,5 @@
 #include "bench/accuracy.hpp"
+#include "bench/bench_text.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -16,7 +17,10 @@
 #include "scene/scene_json.hpp"
 #include "trace/json_text.hpp"
 #include "trace/messages.hpp"
+#include "trace/number_text.hpp"
 #include "util/interrupt.hpp"
+#include "util/text_table.hpp"
+#include "util/wrap.hpp"
 
 namespace promyk::bench {
 
@@ -81,21 +85,23 @@ int side_for(double seconds, double seconds_per_pixel) {
     return static_cast<int>(std::clamp(std::lround(side), 4L, 32768L));
 }
 
-std::string number_text(double value) {
-    std::string out;
-    json_text::append_number(out, value);
-    return out;
-}
+// The scene's numbers as the trace's "given" line writes them: in Polish a
+// decimal comma, so a semicolon between values.
+std::string separator() { return ui_language() == Language::pl ? "; " : ", "; }
+
+std::string value_text(double value) { return number_text(value, ui_language()); }
 
 std::string vector_text(const Vec3d& v) {
-    return fmt::format("({}, {}, {})", number_text(v.x), number_text(v.y), number_text(v.z));
+    return "(" + value_text(v.x) + separator() + value_text(v.y) + separator() + value_text(v.z) + ")";
 }
 
 // "z_E = 2, S = (0, 0, 3.2), r = 1.1, L = (1.5, 1, 1), I = 1" (one sphere, one light).
 std::string scene_parameters(const Scene& scene) {
-    std::string text = "z_E = " + number_text(scene.z_E);
-    for (const Sphere& s : scene.spheres) text += ", S = " + vector_text(s.S) + ", r = " + number_text(s.r);
-    for (const Light& l : scene.lights) text += ", L = " + vector_text(l.L) + ", I = " + number_text(l.I);
+    std::string text = "z_E = " + value_text(scene.z_E);
+    for (const Sphere& s : scene.spheres)
+        text += separator() + "S = " + vector_text(s.S) + separator() + "r = " + value_text(s.r);
+    for (const Light& l : scene.lights)
+        text += separator() + "L = " + vector_text(l.L) + separator() + "I = " + value_text(l.I);
     return text;
 }
 
@@ -103,7 +109,7 @@ std::string scene_parameters(const Scene& scene) {
 std::string error_text(double e) {
     if (e == 0) return "0";
     if (!std::isfinite(e)) return "inf";
-    return fmt::format("{:.2e}", e);
+    return local_number_text(fmt::format("{:.2e}", e), ui_language());
 }
 
 void append_error(std::string& out, double e) {
@@ -305,54 +311,69 @@ AccuracyReport run_accuracy_bench(const AccuracyOptions& options) {
 }
 
 std::string accuracy_table(const AccuracyReport& report) {
-    std::string out = fmt::format(
-        "promyk bench accuracy: w = {} ({} pixels a pane), {} thread{}, {} alternating round{}, medians\n"
-        "  error: |I - I_ref| of each pixel's intensity (absolute: I is in [0, 1]) against quad/geometric\n"
-        "  at the same spp on the same pixels, computed in this run, the difference taken in quad between\n"
-        "  the exact values (a long double's 1e-20 shows); max over every pixel, median over the sphere's pixels\n"
-        "  (reference branch not miss); branch ≠: pixels whose branch differs from the reference's.\n"
-        "  ns/pixel: wall-clock time rendering the scene with {} thread{} (each combination at its own pane\n"
-        "  size, so that a run takes about {:.0f} ms, repeated while a run is under 20 ms); × base: over\n"
-        "  double/article at spp 1 on the same scene.\n",
-        report.w, static_cast<long long>(report.w) * report.w, report.threads, report.threads == 1 ? "" : "s",
-        report.rounds, report.rounds == 1 ? "" : "s", report.threads, report.threads == 1 ? "" : "s",
-        report.target_ms);
+    const std::string threads = counted(report.threads, "bench_threads");
+    std::string out = wrap_text(ui_message("bench_accuracy_title",
+                                           {{"w", std::to_string(report.w)},
+                                            {"pixels", counted(static_cast<long long>(report.w) * report.w, "bench_pixels")},
+                                            {"threads", threads},
+                                            {"rounds", counted(report.rounds, "bench_rounds")}}),
+                                2) +
+                      "\n" +
+                      wrap_text("  " + ui_message("bench_accuracy_explained",
+                                                  {{"threads", threads}, {"target", fixed(report.target_ms, 0)}}),
+                                2) +
+                      "\n";
     for (std::size_t s = 0; s < report.scenes.size(); ++s) {
         const AccuracyScene& scene = report.scenes[s];
-        out += fmt::format("\nscene {}: {}\n  base (double/article, spp 1): {:.2f} ns/pixel\n", scene.name,
-                           scene_parameters(scene.scene), scene.base_ns_per_pixel);
-        out += fmt::format("  {:>4}  {:<11} {:<9} {:>10} {:>8} {:>10} {:>10} {:>9} {:>7}\n", "spp", "real", "formula",
-                           "ns/pixel", "× base", "max error", "median", "branch ≠", "sphere");
+        out += "\n" + wrap_text(ui_message("bench_accuracy_scene", {{"name", scene.name},
+                                                                    {"parameters", "  " + scene_parameters(scene.scene)}}),
+                                4);
+        out += "\n" + wrap_text("  " + ui_message("bench_accuracy_base", {{"ns", fixed(scene.base_ns_per_pixel, 2)}}), 4) +
+               "\n";
+        TextTable table({{ui_message("bench_col_spp")},
+                         {ui_message("bench_col_real"), true},
+                         {ui_message("bench_col_formula"), true},
+                         {ui_message("bench_col_ns_pixel")},
+                         {ui_message("bench_col_x_base")},
+                         {ui_message("bench_col_max_error")},
+                         {ui_message("bench_col_median")},
+                         {ui_message("bench_col_branch_differs")}},
+                        2, 2);
+        // The reference's sphere pixels depend on the spp only: one line a group.
+        std::string sphere_pixels;
         int last_spp = 0;
         for (const AccuracyRow& row : report.rows) {
             if (row.scene != s) continue;
-            if (last_spp != 0 && row.spp != last_spp) out += '\n';
+            if (row.spp != last_spp) {
+                if (last_spp != 0) table.add_break();
+                sphere_pixels += wrap_text("  " + ui_message("bench_accuracy_sphere_pixels",
+                                                             {{"spp", std::to_string(row.spp)},
+                                                              {"pixels", counted(row.errors.sphere_pixels, "bench_pixels")}}),
+                                           4) +
+                                 "\n";
+            }
             last_spp = row.spp;
-            const bool has_ratio = row.untimed.empty();
-            const std::string ratio = has_ratio ? fmt::format("{:.2f}", row.ratio) : "-";
-            const std::string ns = row.ns_per_pixel > 0 ? fmt::format("{:.1f}", row.ns_per_pixel) : "-";
-            out += fmt::format("  {:>4}  {:<11} {:<9} {:>10} {:>8} {:>10} {:>10} {:>9} {:>7}\n", row.spp,
-                               real_type_name(row.real), formula_name(row.formula), ns, ratio,
-                               error_text(row.errors.max_error), error_text(row.errors.median_error),
-                               row.errors.branch_differs, row.errors.sphere_pixels);
+            table.add_row({std::to_string(row.spp), std::string(real_type_name(row.real)),
+                           std::string(formula_name(row.formula)),
+                           row.ns_per_pixel > 0 ? fixed(row.ns_per_pixel, 1) : "-",
+                           row.untimed.empty() ? fixed(row.ratio, 2) : "-", error_text(row.errors.max_error),
+                           error_text(row.errors.median_error), std::to_string(row.errors.branch_differs)});
         }
+        out += table.text() + sphere_pixels;
     }
     bool first = true;
     for (const AccuracyRow& row : report.rows) {
         if (row.untimed.empty()) continue;
         out += first ? "\n" : "";
         first = false;
-        std::string note = ui_message("bench_accuracy_untimed_row", {{"scene", report.scenes[row.scene].name},
+        const std::string note = ui_message("bench_accuracy_untimed_row", {{"scene", report.scenes[row.scene].name},
                                                                      {"spp", std::to_string(row.spp)},
                                                                      {"real", std::string(real_type_name(row.real))},
                                                                      {"formula", std::string(formula_name(row.formula))},
                                                                      {"why", row.untimed}});
-        // Indented as the table is, continuation lines included.
-        for (std::size_t at = note.find('\n'); at != std::string::npos; at = note.find('\n', at + 3))
-            note.replace(at, 1, "\n  ");
-        out += "  " + note + "\n";
+        out += indented(note) + "\n";
     }
-    out += fmt::format("\n  the whole run took {:.1f} s\n", report.seconds);
+    out += "\n" + wrap_text("  " + ui_message("bench_accuracy_took", {{"seconds", fixed(report.seconds, 1)}}), 2) + "\n";
     return out;
 }
 

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "bench/bench_text.hpp"
 #include "bench/cpu_pinning.hpp"
 #include "bench/timing.hpp"
 #include "render/renderer.hpp"
@@ -17,6 +18,8 @@
 #include "util/embedded_files.hpp"
 #include "util/interrupt.hpp"
 #include "util/standard_output.hpp"
+#include "util/text_table.hpp"
+#include "util/wrap.hpp"
 
 namespace promyk::bench {
 
@@ -68,11 +71,12 @@ int run_effects_bench(const EffectsOptions& options) {
     std::vector<int> cpus = allowed_cpus();
     std::optional<PinnedToCpu> pin;
     if (!cpus.empty()) pin.emplace(cpus.front());  // one core for every run: like with like
-    print_standard_output("promyk bench effects: every example scene at w = {} ({} pixels), one thread,\n"
-               "  {} alternating round{}, medians; each timed run repeats the pane until it lasts\n"
-               "  at least {:.0f} ms\n\n",
-               w, w * static_cast<long>(w), options.repetitions, options.repetitions == 1 ? "" : "s",
-               TimingPolicy{}.min_run_seconds * 1e3);
+    print_standard_output("{}\n\n", wrap_text(ui_message("bench_effects_title",
+                                                      {{"w", std::to_string(w)},
+                                                       {"pixels", counted(w * static_cast<long long>(w), "bench_pixels")},
+                                                       {"rounds", counted(options.repetitions, "bench_rounds")},
+                                                       {"ms", fixed(TimingPolicy{}.min_run_seconds * 1e3, 0)}}),
+                                           2));
     flush_standard_output();
     std::vector<TimedWork> jobs;
     for (std::size_t k = 0; k < scenes.size(); ++k) {
@@ -88,25 +92,35 @@ int run_effects_bench(const EffectsOptions& options) {
     const std::vector<Timing> timings = time_side_by_side(jobs, policy);
 
     const Timing& article = timings.front();
-    print_standard_output("  {:<12} {:>9} {:>9}  {:>13} {:>13} {:>12}  {}\n", "scene", "ns/pixel", "× article",
-               "shadow rays/px", "sphere tests/px", "plane tests/px", "stages");
+    TextTable table({{ui_message("bench_col_scene"), true},
+                     {ui_message("bench_col_ns_pixel")},
+                     {ui_message("bench_col_x_article")},
+                     {ui_message("bench_col_shadow_rays")},
+                     {ui_message("bench_col_sphere_tests")},
+                     {ui_message("bench_col_plane_tests")}});
     std::vector<std::string> problems;
     for (std::size_t k = 0; k < scenes.size(); ++k) {
         const Timing& t = timings[k];
         const RenderStats& s = stats[k];
         if (!t.timed) problems.push_back(ui_message("bench_effects_untimed", {{"scene", scenes[k].name}, {"why", t.problem}}));
-        const std::string ns = t.timed ? fmt::format("{:.2f}", t.median_seconds_per_unit / pixels * 1e9) : "-";
-        const std::string ratio =
-            t.timed && article.timed ? fmt::format("{:.2f}", t.median_seconds_per_unit / article.median_seconds_per_unit)
-                                     : "-";
-        print_standard_output("  {:<12} {:>9} {:>9}  {:>13.3f} {:>13.3f} {:>12.3f}  {}\n", scenes[k].name, ns, ratio,
-                   static_cast<double>(s.shadow_rays) / pixels, static_cast<double>(s.sphere_tests) / pixels,
-                   static_cast<double>(s.plane_tests) / pixels, stage_list(scenes[k]));
+        table.add_row({scenes[k].name, t.timed ? fixed(t.median_seconds_per_unit / pixels * 1e9, 2) : "-",
+                       t.timed && article.timed ? fixed(t.median_seconds_per_unit / article.median_seconds_per_unit, 2) : "-",
+                       fixed(static_cast<double>(s.shadow_rays) / pixels, 3),
+                       fixed(static_cast<double>(s.sphere_tests) / pixels, 3),
+                       fixed(static_cast<double>(s.plane_tests) / pixels, 3)});
     }
+    print_standard_output("{}", table.text());
     if (!problems.empty()) print_standard_output("\n");
-    for (const std::string& problem : problems) print_standard_output("  {}\n", problem);
-    print_standard_output("\n  × article: the scene's time per pixel over the article's (1.00). Every pixel casts one primary "
-               "ray;\n  the work columns count what the scene's stages add per pixel.\n");
+    for (const std::string& problem : problems) print_standard_output("{}\n", wrap_text("  " + problem, 4));
+    print_standard_output("\n{}\n", wrap_text("  " + ui_message("bench_effects_stages"), 2));
+    // The longest list of stages goes on below its scene's name.
+    std::size_t name_width = 0;
+    for (const Scene& scene : scenes) name_width = std::max(name_width, display_width(scene.name));
+    for (const Scene& scene : scenes) {
+        const std::string line = "    " + scene.name + std::string(name_width - display_width(scene.name) + 2, ' ') + stage_list(scene);
+        print_standard_output("{}\n", wrap_text(line, 6 + name_width));
+    }
+    print_standard_output("\n{}\n", wrap_text("  " + ui_message("bench_effects_explained"), 2));
     return 0;
 }
 

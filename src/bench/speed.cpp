@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "bench/article_literal.hpp"
+#include "bench/bench_text.hpp"
 #include "bench/cpu_pinning.hpp"
 #include "bench/timing.hpp"
 #include "render/quantize.hpp"
@@ -20,6 +21,8 @@
 #include "util/errors.hpp"
 #include "util/interrupt.hpp"
 #include "util/standard_output.hpp"
+#include "util/text_table.hpp"
+#include "util/wrap.hpp"
 
 namespace promyk::bench {
 
@@ -123,14 +126,14 @@ int run_speed_bench(const SpeedOptions& options) {
         render(scene, {w, threads}, PixelSelection{}, sink);
     }));
 
-    print_standard_output("promyk bench speed: the article's scene, w = {} ({} pixels),\n  {} alternating round{}, medians\n", w,
-               w * static_cast<long>(w), options.repetitions, options.repetitions == 1 ? "" : "s");
-    print_standard_output(
-        "  literal: the article's program compiled from the pseudocode (one file, t[i, j]\n"
-        "  of doubles); engine: promyk's renderer, including the conversion of every\n"
-        "  intensity to an 8-bit grey level; each timed run repeats the pane until it\n"
-        "  lasts at least {:.0f} ms\n\n",
-        TimingPolicy{}.min_run_seconds * 1e3);
+    print_standard_output("{}\n", wrap_text(ui_message("bench_speed_title",
+                                                    {{"w", std::to_string(w)},
+                                                     {"pixels", counted(w * static_cast<long long>(w), "bench_pixels")},
+                                                     {"rounds", counted(options.repetitions, "bench_rounds")}}),
+                                         2));
+    print_standard_output("{}\n\n", wrap_text("  " + ui_message("bench_speed_explained",
+                                                              {{"ms", fixed(TimingPolicy{}.min_run_seconds * 1e3, 0)}}),
+                                             2));
     flush_standard_output();
     TimingPolicy policy;
     policy.rounds = options.repetitions;
@@ -141,7 +144,10 @@ int run_speed_bench(const SpeedOptions& options) {
     const bool identical = engine_image == literal_image && threaded_image == literal_image;
     const auto ns_per_pixel = [&](const Timing& t) { return t.median_seconds_per_unit / pixels * 1e9; };
 
-    print_standard_output("  single thread          literal ns/pixel  engine ns/pixel  engine/literal\n");
+    TextTable table({{ui_message("bench_col_single_thread"), true},
+                     {ui_message("bench_col_literal_ns")},
+                     {ui_message("bench_col_engine_ns")},
+                     {ui_message("bench_col_engine_over_literal")}});
     std::vector<double> ratios;
     std::vector<std::string> problems;
     double throughput_sum = 0;  // panes per second, summed over cores
@@ -150,46 +156,45 @@ int run_speed_bench(const SpeedOptions& options) {
     for (std::size_t c = 0; c < cpus.size(); ++c) {
         const Timing& lit = timings[2 * c];
         const Timing& eng = timings[2 * c + 1];
-        const std::string where = pinned ? fmt::format("on core {}", cpus[c]) : "any core";
+        const std::string where = pinned ? ui_message("bench_speed_on_core", {{"cpu", std::to_string(cpus[c])}})
+                                         : ui_message("bench_speed_any_core");
         std::string ratio = "-";
         if (lit.timed && eng.timed) {
             // Per round, the two runs that were taken next to each other.
             for (std::size_t r = 0; r < lit.seconds_per_unit.size(); ++r)
                 ratios.push_back(eng.seconds_per_unit[r] / lit.seconds_per_unit[r]);
             throughput_sum += 1 / eng.median_seconds_per_unit;
-            ratio = fmt::format("{:.3f}", eng.median_seconds_per_unit / lit.median_seconds_per_unit);
+            ratio = fixed(eng.median_seconds_per_unit / lit.median_seconds_per_unit, 3);
         } else {
             all_timed = false;
             for (const Timing* t : {&lit, &eng})
                 if (!t->timed)
-                    problems.push_back(ui_message("bench_speed_untimed_core",
-                                                  {{"what", t == &lit ? "literal" : "engine"},
-                                                   {"where", where},
-                                                   {"why", t->problem}}));
+                    problems.push_back(ui_message(
+                        "bench_speed_untimed_core",
+                        {{"what", ui_message(t == &lit ? "bench_speed_what_literal" : "bench_speed_what_engine")},
+                         {"where", where},
+                         {"why", t->problem}}));
         }
-        print_standard_output("  {:<22} {:>16} {:>16} {:>15}\n", where,
-                   lit.timed ? fmt::format("{:.2f}", ns_per_pixel(lit)) : "-",
-                   eng.timed ? fmt::format("{:.2f}", ns_per_pixel(eng)) : "-", ratio);
+        table.add_row({where, lit.timed ? fixed(ns_per_pixel(lit), 2) : "-", eng.timed ? fixed(ns_per_pixel(eng), 2) : "-",
+                       ratio});
     }
-    if (threaded.timed)
-        print_standard_output("  engine, {} thread{}: {:.2f} ns/pixel\n\n", threads, threads == 1 ? "" : "s",
-                   ns_per_pixel(threaded));
-    else
-        print_standard_output("  engine, {} thread{}: -\n\n", threads, threads == 1 ? "" : "s");
-
-    if (!ratios.empty())
-        print_standard_output("  engine / literal, 1 thread (median over rounds and cores): {:.3f}\n  (target <= 1.05)\n",
-                   median_of(ratios));
+    print_standard_output("{}", table.text());
+    const auto line = [](const std::string& text) { print_standard_output("{}\n", indented(text)); };
+    line(ui_message("bench_speed_threaded", {{"threads", counted(threads, "bench_threads")},
+                                             {"ns", threaded.timed ? fixed(ns_per_pixel(threaded), 2) : "-"}}));
+    print_standard_output("\n");
+    if (!ratios.empty()) line(ui_message("bench_speed_ratio", {{"ratio", fixed(median_of(ratios), 3)}}));
     if (all_timed) {
         const double t_one = 1 / (throughput_sum / static_cast<double>(cpus.size()));  // the average core
-        print_standard_output("  {} threads / 1 thread speed-up (1 thread: the average core): {:.2f}\n  (target >= 1.8 on 2 cores)\n",
-                   threads, t_one / threaded.median_seconds_per_unit);
+        line(ui_message("bench_speed_speedup", {{"threads", counted(threads, "bench_threads")},
+                                                {"speedup", fixed(t_one / threaded.median_seconds_per_unit, 2)}}));
         if (pinned && threads == static_cast<int>(cpus.size()))
-            print_standard_output("  parallel efficiency (threaded throughput / sum of the cores' own): {:.2f}\n",
-                       (1 / threaded.median_seconds_per_unit) / throughput_sum);
+            line(ui_message("bench_speed_efficiency",
+                            {{"efficiency", fixed((1 / threaded.median_seconds_per_unit) / throughput_sum, 2)}}));
     }
-    for (const std::string& problem : problems) print_standard_output("  {}\n", problem);
-    print_standard_output("  images identical (engine, threaded, literal): {}\n\n", identical ? "yes" : "NO");
+    for (const std::string& problem : problems) line(problem);
+    line(ui_message("bench_speed_identical", {{"answer", ui_message(identical ? "bench_yes" : "bench_no")}}));
+    print_standard_output("\n");
     flush_standard_output();
 
     const int tw = options.trace_w;
@@ -199,10 +204,11 @@ int run_speed_bench(const SpeedOptions& options) {
         trace_sink.finish();
     });
     const double trace_pixels = static_cast<double>(tw) * tw;
-    print_standard_output("  traces, JSON Lines of every pixel at w = {}, {} thread{}, to a temporary file:\n", tw, threads,
-               threads == 1 ? "" : "s");
-    print_standard_output("    {:.0f} pixels/s, {:.1f} MB/s, {:.0f} bytes a pixel\n", trace_pixels / t_traces,
-               trace_sink.bytes() / t_traces / 1e6, trace_sink.bytes() / trace_pixels);
+    line(ui_message("bench_speed_traces", {{"w", std::to_string(tw)},
+                                           {"threads", counted(threads, "bench_threads")},
+                                           {"pixels_per_second", fixed(trace_pixels / t_traces, 0)},
+                                           {"mb_per_second", fixed(trace_sink.bytes() / t_traces / 1e6, 1)},
+                                           {"bytes", fixed(trace_sink.bytes() / trace_pixels, 0)}}));
     return identical ? 0 : 1;
 }
 

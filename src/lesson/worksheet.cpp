@@ -122,9 +122,16 @@ std::string Worksheet::answer_template() const {
         lines.push_back(fmt::format("[{},{}]", i, j));
         for (const WorksheetBlank* blank : mine) {
             const auto [path, settings] = split_settings(blank->key);
-            lines.push_back(qualified_path(path, blank->component, settings) + " = ");
+            const std::string key = qualified_path(path, blank->component, settings);
+            lines.push_back(key + " = ");
             width = std::max(width, lines.back().size());
             lines.back() += "\t" + std::to_string(blank->number);
+            // The symbol beside a key that does not read as one (delta: Δ/4, EE: |E|²).
+            if (const VocabularyEntry* entry = view_.vocabulary.find(path_key(path))) {
+                std::string symbol = optional_message(language, "symbol_" + entry->key).value_or(entry->symbol);
+                if (blank->component != 0) symbol += std::string(".") + blank->component;
+                if (symbol != key && symbol != path && symbol != path_key(path)) lines.back() += ") " + symbol;
+            }
         }
     }
     // "key = " then a comment naming the blank, aligned.
@@ -134,7 +141,9 @@ std::string Worksheet::answer_template() const {
             out += "    " + line + "\n";
         } else {
             const std::string start = line.substr(0, tab);
-            out += "    " + start + std::string(width - start.size() + 8, ' ') + "# (" + line.substr(tab + 1) + ")\n";
+            const std::string comment = line.substr(tab + 1);  // "21) Δ/4", or "7" alone
+            out += "    " + start + std::string(width - start.size() + 8, ' ') + "# (" + comment +
+                   (comment.find(')') == std::string::npos ? ")" : "") + "\n";
         }
     }
     return out;

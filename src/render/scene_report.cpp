@@ -4,39 +4,28 @@
 #include <limits>
 #include <string_view>
 
-#include <fmt/format.h>
-
 #include "render/stages.hpp"
 #include "trace/messages.hpp"
+#include "trace/number_text.hpp"
 
 namespace promyk {
 
 namespace {
 
-std::string point_text(const Vec3d& v) { return fmt::format("({}, {}, {})", v.x, v.y, v.z); }
+// Numbers as the trace's "given" line writes them: the shortest text that
+// reads back, U+2212 for a minus, in Polish a decimal comma and so a
+// semicolon between a point's coordinates.
+std::string number(double value) { return number_text(value, ui_language()); }
 
-std::string count_text(std::size_t n, std::string_view noun) {
-    return fmt::format("{} {}{}", n, noun, n == 1 ? "" : "s");
+std::string point_text(const Vec3d& v) {
+    const std::string separator = ui_language() == Language::pl ? "; " : ", ";
+    return "(" + number(v.x) + separator + number(v.y) + separator + number(v.z) + ")";
 }
 
-std::string colour_text(const Colour& c) { return is_grey(c) ? fmt::format("{}", c.x) : point_text(c); }
+std::string colour_text(const Colour& c) { return is_grey(c) ? number(c.x) : point_text(c); }
 
 std::string material_text(int material) {
-    return material == no_material ? "" : fmt::format(", material {}", material);
-}
-
-// What each stage computes, by the id of render/stages.hpp (the reasons it
-// runs or not are messages.json's stage_why_<id> and stage_skip_<id>).
-std::string_view stage_formula(std::string_view id) {
-    if (id == "sphere") return "Δ/4 = C² − |E|²·(|S|² − r²), a miss when ≤ 0; t = (C − √(Δ/4))/|E|², the far root when t ≤ 0";
-    if (id == "plane") return "t = (n̂·Q)/(n̂·E), a miss when n̂·E = 0";
-    if (id == "nearest") return "the smallest t > 0, ties going to the earlier object";
-    if (id == "lambert") return "D = N·K, K = L − P, for each light with D > 0";
-    if (id == "ambient") return "k_a·I for each light";
-    if (id == "shadows") return "P + s·K, 0 < s < 1, against every object";
-    if (id == "phong") return "I·k_s·(R̂·V̂)ⁿ when R̂·V̂ > 0";
-    if (id == "colour") return "the same computation for red, green and blue";
-    return "";
+    return material == no_material ? "" : ui_message("report_uses_material", {{"m", std::to_string(material)}});
 }
 
 // A plane as the engine uses it: n̂ = n/√(n·n), each component divided, and
@@ -130,51 +119,60 @@ Probe probe_pane(const Scene& scene, int w) {
 }
 
 void add_contents(const Scene& scene, SceneReport& report) {
-    report.contents.push_back(fmt::format("name \"{}\", pane at z_E = {}, background {}", scene.name, scene.z_E,
-                                          colour_text(scene.background)));
-    report.contents.push_back(fmt::format(
-        "{}, {}, {}, {}; shadows {}", count_text(scene.spheres.size(), "sphere"),
-        count_text(scene.planes.size(), "plane"), count_text(scene.lights.size(), "light"),
-        count_text(scene.materials.size(), "material"), scene.shadows ? "on" : "off"));
+    report.contents.push_back(ui_message(
+        "report_name", {{"name", scene.name}, {"z_E", number(scene.z_E)}, {"background", colour_text(scene.background)}}));
+    const auto count = [](std::size_t n, std::string_view id) { return counted(static_cast<long long>(n), id); };
+    report.contents.push_back(ui_message("report_counts",
+                                         {{"spheres", count(scene.spheres.size(), "report_spheres")},
+                                          {"planes", count(scene.planes.size(), "report_planes")},
+                                          {"lights", count(scene.lights.size(), "report_lights")},
+                                          {"materials", count(scene.materials.size(), "report_materials")},
+                                          {"shadows", ui_message(scene.shadows ? "report_shadows_on" : "report_shadows_off")}}));
     for (std::size_t k = 0; k < scene.spheres.size(); ++k)
-        report.contents.push_back(fmt::format("sphere {}: S = {}, r = {}{}", k, point_text(scene.spheres[k].S),
-                                              scene.spheres[k].r, material_text(scene.spheres[k].material)));
+        report.contents.push_back(ui_message("report_sphere", {{"k", std::to_string(k)},
+                                                               {"S", point_text(scene.spheres[k].S)},
+                                                               {"r", number(scene.spheres[k].r)},
+                                                               {"material", material_text(scene.spheres[k].material)}}));
     for (std::size_t k = 0; k < scene.planes.size(); ++k)
-        report.contents.push_back(fmt::format("plane {}: Q = {}, n = {}{}", k, point_text(scene.planes[k].Q),
-                                              point_text(scene.planes[k].n), material_text(scene.planes[k].material)));
+        report.contents.push_back(ui_message("report_plane", {{"k", std::to_string(k)},
+                                                              {"Q", point_text(scene.planes[k].Q)},
+                                                              {"n", point_text(scene.planes[k].n)},
+                                                              {"material", material_text(scene.planes[k].material)}}));
     for (std::size_t k = 0; k < scene.lights.size(); ++k) {
         const Light& light = scene.lights[k];
-        report.contents.push_back(fmt::format("light {}: L = {}, I = {}{}", k, point_text(light.L), light.I,
-                                              light.colour == white ? "" : ", colour " + point_text(light.colour)));
+        report.contents.push_back(ui_message(
+            "report_light",
+            {{"k", std::to_string(k)},
+             {"L", point_text(light.L)},
+             {"I", number(light.I)},
+             {"colour", light.colour == white ? "" : ui_message("report_light_colour", {{"colour", point_text(light.colour)}})}}));
     }
     for (std::size_t k = 0; k < scene.materials.size(); ++k) {
         const Material& m = scene.materials[k];
-        report.contents.push_back(fmt::format("material {}: ambient {}, diffuse {}, specular {}, exponent {}, colour {}",
-                                              k, m.ambient, m.diffuse, m.specular, m.exponent,
-                                              point_text(m.colour)));
+        report.contents.push_back(ui_message("report_material", {{"k", std::to_string(k)},
+                                                                 {"ambient", number(m.ambient)},
+                                                                 {"diffuse", number(m.diffuse)},
+                                                                 {"specular", number(m.specular)},
+                                                                 {"exponent", number(m.exponent)},
+                                                                 {"colour", point_text(m.colour)}}));
     }
     bool any_default = false;
     for (const Sphere& s : scene.spheres) any_default = any_default || s.material == no_material;
     for (const Plane& p : scene.planes) any_default = any_default || p.material == no_material;
     if (any_default)
-        report.contents.push_back(fmt::format("{} the default material: ambient 0, diffuse 1, specular 0, white",
-                                              scene.materials.empty() ? "every object has"
-                                                                      : "an object without \"material\" has"));
+        report.contents.push_back(ui_message(scene.materials.empty() ? "report_default_every" : "report_default_some"));
 }
 
 void add_stages(const Scene& scene, SceneReport& report) {
     const Stages stages = plan_stages(scene);
-    report.stages.push_back("pane: E = ((2j+1)/w − 1, −(2i+1)/w + 1, z_E) for each pixel");
-    if (stages.article)
-        report.stages.push_back(
-            "article: the article's program and nothing else (one sphere in front of the eye, one white light, the "
-            "default material, grey, no shadows): its image and every traced value are the program's, bit for bit");
+    report.stages.push_back(ui_message("report_stage_pane"));
+    if (stages.article) report.stages.push_back(ui_message("report_stage_article"));
     for (const StageNote& note : stage_notes(scene, stages)) {
         const std::string why = ui_message(note.reason);
         if (note.runs)
-            report.stages.push_back(fmt::format("{}: {} ({})", note.id, why, stage_formula(note.id)));
+            report.stages.push_back(note.id + ": " + why + " (" + ui_message("stage_formula_" + note.id) + ")");
         else
-            report.skipped.push_back(fmt::format("{}: {}", note.id, why));
+            report.skipped.push_back(note.id + ": " + why);
     }
 }
 

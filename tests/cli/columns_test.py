@@ -2,7 +2,7 @@
 """Every text output fits 80 columns (display width in code points), in
 Polish and English: lesson --list, every lesson with its default pixels and
 other pixels, worksheets with their keys, traces of every example scene
-(narrow layout) and their comparisons, scene check, and the messages of
+(narrow layout) and their comparisons, scene check, the bench's tables, and the messages of
 common mistakes. `trace --wide` and `--help` are exempt, as the issue allows.
 
 usage: columns_test.py PROMYK LESSONS_DIR"""
@@ -44,6 +44,11 @@ for lang in ("pl", "en"):
         run(["lesson", name, "--lang", lang, "--worksheet", "--key"])
         run(["lesson", name, "--lang", lang, "--worksheet", "--pixel", "1,2", "--pixel", "3,4", "--pixel", "5,1",
              "--real", "long-double", "--formula", "geometric", "--spp", "4"])
+    # the bench's tables, at the smallest sizes (the layout, not the timings)
+    run(["bench", "speed", "--lang", lang, "--w", "8", "--repetitions", "1", "--trace-w", "4"], expect_ok=False)
+    run(["bench", "effects", "--lang", lang, "--w", "4", "--repetitions", "1"])
+    run(["bench", "accuracy", "--lang", lang, "--w", "4", "--repetitions", "1", "--spp", "1,4",
+         "--real", "long-double", "--formula", "geometric"])
     for scene in scenes:
         run(["scene", "check", scene, "--lang", lang])
         for pixel in ("0,0", "3,4", "5,1", "4,4", "7,2"):

@@ -58,7 +58,7 @@ promyk_cli_test(lesson_list_polish ARGS lesson --list --lang pl EXIT 0 STDOUT "^
 promyk_cli_test(lesson_check ARGS lesson --check --lang en EXIT 0 STDOUT "lessons checked: 22; all is well")
 promyk_cli_test(lesson_unknown ARGS lesson nosuch EXIT 2 STDERR "no lesson 'nosuch'; the lessons are vectors, pane, sphere, lambert, program")
 promyk_cli_test(lesson_sphere ARGS lesson sphere --lang en --pixel 3,4 --pixel 0,0 EXIT 0
-                STDOUT "^Lesson: .*pixels: \\(3, 4\\), \\(0, 0\\).*Step 1 of 8: .*Step 8 of 8")
+                STDOUT "^Lesson: .*pixels: \\(3, 4\\), \\(0, 0\\).*Step 1 of 7: .*Step 7 of 7")
 promyk_cli_test(lesson_markdown ARGS lesson program --lang pl --format markdown EXIT 0
                 STDOUT "^# Lekcja: .*\\| \\| piksel \\(0, 0\\) \\| piksel \\(5, 1\\) \\| piksel \\(3, 4\\) \\|.*<details><summary>Odpowiedź</summary>")
 promyk_cli_test(lesson_pixel_outside ARGS lesson pane --pixel 8,0 EXIT 2 STDERR "outside the 8 × 8 pane")

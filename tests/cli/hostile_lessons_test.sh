@@ -8,13 +8,13 @@ set -u
 promyk=$1 dir=$2 here=$(cd "$(dirname "$0")" && pwd)
 . "$(dirname "$0")/lib.sh"
 
-# expect NAME CODE PATTERN -- ARGS...: exit CODE within 10 s (PROMYK_TEST_SECONDS:
+# expect NAME CODE PATTERN -- ARGS...: exit CODE within 20 s (PROMYK_TEST_SECONDS:
 # a sanitizer build runs about ten times slower), stderr matching
 # PATTERN (grep -E), and no control character but newline and tab in the output.
 expect() {
   local name=$1 want=$2 pattern=$3
   shift 4
-  timeout "${PROMYK_TEST_SECONDS:-10}" "$promyk" "$@" >out.txt 2>err.txt </dev/null
+  timeout "${PROMYK_TEST_SECONDS:-20}" "$promyk" "$@" >out.txt 2>err.txt </dev/null
   local code=$?
   if [ "$code" != "$want" ]; then bad "$name: exit $code, expected $want; $(head -c 300 err.txt)"; return; fi
   # messages are wrapped to 80 columns (continuation lines indented by 4): join them

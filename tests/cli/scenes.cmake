@@ -34,7 +34,12 @@ promyk_cli_test(scene_check_hidden ARGS scene check ${scenes}/hidden_sphere.json
 
 # The stages: what runs, what is skipped and why.
 promyk_cli_test(scene_check_everything ARGS scene check ${PROJECT_SOURCE_DIR}/lessons/scenes/everything.json EXIT 0
-                STDOUT "3 spheres, 1 plane, 2 lights, 4 materials; shadows on\n.*plane 0: Q = \\(0, -1.1, 0\\), n = \\(0, 1, 0\\), material 3\n.*the engine runs.*  - nearest: .*every object is tested; the nearest hit wins .*  - shadows: .*  - phong: .*  - colour: ")
+                STDOUT "3 spheres, 1 plane, 2 lights, 4 materials; shadows on\n.*plane 0: Q = \\(0, −1.1, 0\\), n = \\(0, 1, 0\\), material 3\n.*the engine runs.*  - nearest: .*every object is tested; the nearest hit wins .*  - shadows: .*  - phong: .*  - colour: ")
+# In Polish, every word and number of the report is Polish: decimal commas,
+# ';' between a point's coordinates (CMake splits a regex at ';': '.' stands for it).
+promyk_cli_test(scene_check_everything_polish ARGS --lang pl scene check ${PROJECT_SOURCE_DIR}/lessons/scenes/everything.json EXIT 0
+                STDOUT "3 kule, 1 płaszczyzna, 2 światła, 4 materiały. cienie włączone\n  - kula 0: S = \\(−0,6. −0,3. 3,4\\). r = 0,8. materiał 0\n.*  - materiał 0: otoczenie 0,1. rozproszenie 0,8. odblask 0,4. wykładnik 30. *\n? *barwa .*\\(najmniejsze t > 0. przy remisie wygrywa wcześniejszy obiekt\\)"
+                NOSTDOUT "sphere [0-9]|material [0-9]|background|shadows on|for each|a miss|[0-9]\\.[0-9]")
 promyk_cli_test(scene_check_floor ARGS scene check ${PROJECT_SOURCE_DIR}/lessons/scenes/floor.json EXIT 0
                 STDOUT "  - plane: the ray is intersected with every plane \\(t = .*and skips:\n  - ambient: .*  - shadows: no shadow ray: the scene does not ask for shadows\n  - phong: .*  - colour: one channel")
 foreach(name floor everything colour phong shadows two_lights two_spheres)

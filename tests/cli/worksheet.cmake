@@ -2,11 +2,11 @@
 # student meet them. Included from tests/CMakeLists.txt.
 
 promyk_cli_test(lesson_worksheet ARGS lesson sphere --worksheet --lang en EXIT 0
-                STDOUT "^Lesson: .*Worksheet: .*--answers ANSWERS.txt.*\\(3, 4\\): \\.\\.\\.\\.\\.\\.\\.\\.\\.\\.\\(3\\)")
+                STDOUT "^Lesson: .*Worksheet: .*--answers ANSWERS.txt.*\\(3, 4\\): \\.\\.\\.\\.\\.\\.\\.\\.\\.\\.\\(6\\)")
 promyk_cli_test(lesson_worksheet_form ARGS lesson sphere --worksheet --lang en EXIT 0
-                STDOUT "── The file ANSWERS.txt ──.*\\[3,4\\]\n +E = +# \\(20\\)\n +EE = +# \\(3\\)\n")
+                STDOUT "── The file ANSWERS.txt ──.*\\[3,4\\]\n +E = +# \\(3\\)\n +EE = +# \\(6\\) \\|E\\|²\n +SS = +# \\(12\\) \\|S\\|²\n +C = +# \\(9\\) E·S\n +delta = +# \\(15\\) Δ/4\n +Delta = +# \\(18\\) Δ\n")
 promyk_cli_test(lesson_worksheet_key ARGS lesson sphere --worksheet --key --lang pl --format markdown EXIT 0
-                STDOUT "## Klucz odpowiedzi \\(dla nauczyciela\\)\n\n- \\(1\\) piksel \\(0, 0\\): \\|E\\|² = 5,531   \\[EE\\]\n")
+                STDOUT "## Klucz odpowiedzi \\(dla nauczyciela\\)\n\n- \\(1\\) piksel \\(0, 0\\): E = \\(−0,875; 0,875; 2\\)   \\[E\\]\n")
 promyk_cli_test(lesson_key_alone ARGS lesson sphere --key EXIT 2 STDERR "--key needs --worksheet")
 promyk_cli_test(lesson_answers_and_worksheet ARGS lesson sphere --worksheet --answers a.txt EXIT 2 STDERR "--worksheet cannot be used together with --answers")
 promyk_cli_test(lesson_answers_missing ARGS lesson sphere --answers missing.txt EXIT 3 STDERR "missing.txt: cannot read")

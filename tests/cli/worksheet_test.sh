@@ -103,8 +103,8 @@ awk '
   END {
     for (k = 1; k <= n; ++k) {
       line = lines[k]
-      if (line ~ /# \([0-9]+\)$/) {
-        number = line; sub(/.*# \(/, "", number); sub(/\)$/, "", number)
+      if (line ~ /# \([0-9]+\)/) {
+        number = line; sub(/.*# \(/, "", number); sub(/\).*$/, "", number)
         sub(/ *#.*/, "", line); line = line " " values[number]
       }
       print line

@@ -21,7 +21,7 @@ ELLIPSIS = "…"
 MARKER = re.compile(r"^<!--\s*(output|not run|exit|file|run as|pending):\s*(.*?)\s*-->\s*$")
 FENCE = re.compile(r"^```(\S*)\s*$")
 PROGRAM = re.compile(r"^(promyk|build/release/promyk)(\s|$)")
-NUMBER = re.compile(r"[-+−]?\d+(?:[.,]\d+)*(?:[eE][-+]?\d+)?")
+NUMBER = re.compile(r"[-+−]?\d+(?:[.,]\d+)*(?:[eE][-+−]?\d+)?")
 COMMAND_SECONDS = 120
 
 
