@@ -35,6 +35,13 @@ std::string shown_kind(const Vocabulary& vocabulary, const std::string& path, co
     return kind;
 }
 
+// A table's cell for a value the pixel's computation never reached: why not,
+// in the branch's short name ("— (not computed: miss)").
+std::string not_reached_cell(const PixelTrace& trace, Language language) {
+    return message(language, "table_not_reached",
+                   {{"branch", message(language, "branch_name_" + std::string(branch_name(trace.branch)))}});
+}
+
 std::string branch_text(const Vocabulary& vocabulary, Branch branch, Language language) {
     const BranchEntry* entry = vocabulary.find_branch(branch_name(branch));
     if (entry == nullptr) return std::string(branch_name(branch));
@@ -401,7 +408,7 @@ std::string text_values(const LessonView& view, const LessonPart& part) {
         for (const PixelTrace& trace : view.traces) {
             const std::optional<LessonNumber> number = lesson_number(view, trace, key);
             cells.push_back(fmt::format("({}, {}): {}", trace.header.i, trace.header.j,
-                                        number ? cell_text(view, trace, key, *number) : message(language, "not_reached")));
+                                        number ? cell_text(view, trace, key, *number) : not_reached_cell(trace, language)));
         }
         std::size_t total = 4;
         for (const std::string& cell : cells) total += display_width(cell) + 4;
@@ -463,7 +470,7 @@ std::string markdown_values(const LessonView& view, const LessonPart& part) {
         out += "| $" + math + "$" + group_suffix(view, key) + " |";
         for (const PixelTrace& trace : view.traces) {
             const std::optional<LessonNumber> number = lesson_number(view, trace, key);
-            out += " " + (number ? cell_text(view, trace, key, *number) : message(language, "not_reached")) + " |";
+            out += " " + (number ? cell_text(view, trace, key, *number) : not_reached_cell(trace, language)) + " |";
         }
         out += "\n";
     }
