@@ -286,7 +286,7 @@ TEST_CASE("more digits than a double holds: right when at least as near the exac
     CHECK(pl.find("✓ t = 1,3667504955662156: dobrze, i to z większą liczbą cyfr, niż mieści typ double") != std::string::npos);
 }
 
-TEST_CASE("property: the computed value typed in full is right; one unit off in its last typed digit is wrong",
+TEST_CASE("property: the computed value typed in full is right, one unit off in its last typed digit is wrong",
           "[answers][forgiving]") {
     const Scene scene = article_scene();
     int checked = 0;

@@ -143,7 +143,7 @@ TEST_CASE("the eye inside a sphere of radius 2 at the origin sees its inside", "
     CHECK(trace.branch == Branch::lit);
 }
 
-TEST_CASE("a sphere behind the eye is not drawn; its trace shows the program's t", "[effects]") {
+TEST_CASE("a sphere behind the eye is not drawn, its trace shows the program's t", "[effects]") {
     Scene scene = base(2);
     scene.spheres = {Sphere{{0, 0, -3.2}, 1.1}};
     scene.lights = {Light{{1.5, 1, 1}, 1}};
@@ -179,7 +179,7 @@ TEST_CASE("Phong's peak: a light mirrored from the eye about the normal gives R 
     CHECK(number(off, Key::RV_n, "light 0") == Approx(std::pow(RV_off, 7)).epsilon(1e-14));
 }
 
-TEST_CASE("a sphere exactly between P and the light shadows P; ambient remains", "[effects]") {
+TEST_CASE("a sphere exactly between P and the light shadows P, ambient remains", "[effects]") {
     Scene scene = floor_scene();
     scene.shadows = true;
     scene.spheres = {Sphere{{-1, 0.5, 2}, 0.5}};  // centre halfway between P = (-1, -1, 2) and L = (-1, 2, 2)

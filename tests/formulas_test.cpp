@@ -230,7 +230,7 @@ TEST_CASE("tangent rays: the article's formula reports false hits by rounding, t
 // at most 2.7u D / sqrt(0.19) = 6.2u D, which against q, about 2D, is 3.1u.
 // So q is within u + 3.1u + u, and t_c = c / q within 3u + 5.1u + u, about
 // 9u: at most 9 ulps of t (an ulp of t is at least u t). We assert 10.
-TEST_CASE("far small spheres in float: the article's formula loses the sphere past 4096; geometric keeps t",
+TEST_CASE("far small spheres in float: the article's formula loses the sphere past 4096, geometric keeps t",
           "[formula]") {
     // D = 1000: every ray hits, but t keeps only the digits above D / r.
     FanResult article = far_sphere_fan<float>(Formula::article, 1000);

@@ -177,7 +177,7 @@ TEST_CASE("a wildcard row makes one row an object, and a row about an object the
     CHECK(expanded_keys(lights.view, {"light[*].sphere[*].s_1"}).size() == 2);
 }
 
-TEST_CASE("a scene block is shown on its scene only; a scene without the lesson's effect says so", "[lesson][guards]") {
+TEST_CASE("a scene block is shown on its scene only, a scene without the lesson's effect says so", "[lesson][guards]") {
     const Lesson lesson = parsed(with_body("## [a] A\n\n::: scene\nOWN\n:::\n\n::: scene floor.json\nFLOOR\n:::\n\nALWAYS\n",
                                            "scene: shadows.json\neffect: shadows\n"));
     const Run own(lesson, example("shadows.json"), {{3, 4}}, "shadows.json");
@@ -256,7 +256,7 @@ TEST_CASE("the formula of I_P is the one of the scene's effects, in lessons and 
     CHECK(render_step(colour.view, 0).find("= " + builtin_vocabulary().find("contribution")->formula) != std::string::npos);
 }
 
-TEST_CASE("--check reads the new forms: conditions, needs, {i} in prose; and reports their faults", "[lesson][guards]") {
+TEST_CASE("lesson checks read the new forms (conditions, needs, {i} in prose) and report their faults", "[lesson][guards]") {
     const auto problems = [](const std::string& body) {
         std::vector<LessonProblem> found;
         const Lesson lesson = parse_lesson(with_body(body), "x.md", Language::en, found);

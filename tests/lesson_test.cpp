@@ -101,7 +101,7 @@ TEST_CASE("a lesson file is read into its header and steps", "[lesson]") {
     CHECK(has_answers(lesson.steps[1]));
 }
 
-TEST_CASE("placeholders: keys, components, decimals, symbols; LaTeX braces are not placeholders", "[lesson]") {
+TEST_CASE("placeholders: keys, components, decimals, symbols, LaTeX braces are not placeholders", "[lesson]") {
     const std::vector<Placeholder> found = find_placeholders(R"(a {t} b {P.x:3} {symbol:delta} $\frac{a}{b}$ x^{2} {{t}} {delta:18} {t)");
     REQUIRE(found.size() == 5);
     CHECK(found[0].name == "t");
@@ -383,7 +383,7 @@ TEST_CASE("placeholders name values inside groups: {sphere[1].t}, {light[0].sphe
     CHECK(path_key("light[0].sphere[1].delta_s") == "delta_s");
 }
 
-TEST_CASE("a placeholder in a group shows that group's value; {t_hit} is the top level's; words are translated", "[lesson]") {
+TEST_CASE("a placeholder in a group shows that group's value, {t_hit} is the top level's, words are translated", "[lesson]") {
     const Scene scene = two_spheres_scene();
     // (3, 4): both spheres are hit and sphere 0 is nearer; (2, 5): only sphere 1.
     const PixelTrace both = trace_pixel(scene, 8, 3, 4);

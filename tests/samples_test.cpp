@@ -76,7 +76,7 @@ TEST_CASE("the sample hash is pinned: every build gives the same samples", "[sam
     CHECK(centre_sample(3, 4, 4) == 3);  // (0.2197, 0.0049) is the nearest the centre
 }
 
-TEST_CASE("one sample is the pixel's centre; more put one sample in each cell of an n × n grid", "[samples]") {
+TEST_CASE("one sample is the pixel's centre, more put one sample in each cell of an n × n grid", "[samples]") {
     for (const int i : {0, 3, 7, 1000}) {
         for (const int j : {0, 5, 999}) {
             CHECK(sample_offset(i, j, 0, 1).u == 0.0);

@@ -93,7 +93,7 @@ TEST_CASE("at most 20 faults are reported, then how many more", "[scene][faults]
     CHECK(promyk::ui_message("scene_more_faults", {{"count", "5"}}) == "and 5 more");
 }
 
-TEST_CASE("a missing key is reported where its object ends; unknown keys where they stand", "[scene][faults]") {
+TEST_CASE("a missing key is reported where its object ends, unknown keys where they stand", "[scene][faults]") {
     const RunLanguage english(Language::en);
     const auto errors = errors_of(R"({"spheres": [{"x": 1, "r": -1, "y": 2}], "lights": [{"L": [1, 1, 1]}], "q": 1})");
     REQUIRE(errors);

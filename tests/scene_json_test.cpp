@@ -368,7 +368,7 @@ TEST_CASE("a scene needs at least one object and at least one light", "[scene]")
     check_rejected(scene_text("", article_sphere, R"({"I": 1})"), "/lights/0/L", {"missing", "'L'"});
 }
 
-TEST_CASE("the eye inside or on a sphere is accepted; |S|² − r² must be finite", "[scene]") {
+TEST_CASE("the eye inside or on a sphere is accepted, |S|² − r² must be finite", "[scene]") {
     // The engine sees the inside (the far root); scene check warns.
     const Scene inside = parse_scene(scene_text("", R"({"S": [0, 0, 1], "r": 2})"), "test.json");
     CHECK(inside.spheres.at(0).r == 2);

@@ -129,7 +129,7 @@ TEST_CASE("render, lesson library and bench messages in Polish", "[messages][sta
     check_polish(t[0].problem);
 }
 
-TEST_CASE("every status message fits 80 columns after 'promyk: ', in both languages; errors on one line",
+TEST_CASE("every status message fits 80 columns after 'promyk: ', in both languages, errors on one line",
           "[messages][status]") {
     std::ifstream file(PROMYK_SOURCE_DIR "/lessons/messages_status.json");
     REQUIRE(file);

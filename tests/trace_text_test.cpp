@@ -79,7 +79,7 @@ TEST_CASE("trace text: a colour is called a colour, with one kind of bracket", "
     CHECK(text_of(trace, Language::pl).find("kolor: [") != std::string::npos);
 }
 
-TEST_CASE("trace text: --digits rounds every value shown; the default shows every digit", "[trace-text]") {
+TEST_CASE("trace text: --digits rounds every value shown, the default shows every digit", "[trace-text]") {
     const PixelTrace trace = trace_pixel(article_scene(), 8, 3, 4);
     const std::string all = text_of(trace, Language::en), four = text_of(trace, Language::en, 4);
     CHECK(all.find("= 4.557812500000004\n") != std::string::npos);
