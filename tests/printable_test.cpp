@@ -80,7 +80,7 @@ TEST_CASE("printable escapes characters that reorder or hide text", "[printable]
           utf8(0x2027) + utf8(0x202F) + utf8(0x2065) + utf8(0x206A));  // their neighbours are kept
 }
 
-TEST_CASE("printable writes each byte of invalid UTF-8 as \\xNN", "[printable]") {
+TEST_CASE("printable writes each byte of invalid UTF-8 as a backslash, x and two hex digits", "[printable]") {
     CHECK(printable("\xff") == "\\xff");
     CHECK(printable("a\x80z") == "a\\x80z");                         // a stray continuation byte
     CHECK(printable("\xC5") == "\\xc5");                             // truncated at the end
