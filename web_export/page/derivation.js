@@ -163,6 +163,7 @@ export class Derivation {
       row.className = 'step';
       row.dataset.index = String(index);
       row.dataset.key = step.key;
+      row.dataset.kind = step.kind;
       row.style.setProperty('--quantity', quantityColour(step.key));
       const number = document.createElement('span');
       number.className = 'n';
