@@ -21,7 +21,7 @@ function typeset(element, tex) {
 // A number as TeX text: the formatter's characters, TeX's specials escaped.
 function texNumber(text) {
   const safe = text.replace(/[\\{}$%#&_^~]/g, (c) => `\\${c === '\\' ? 'backslash ' : c}`);
-  return /^[\d.,]+$/.test(text) ? `\\text{${safe}}` : `\\left(\\text{${safe}}\\right)`;
+  return /^[\d.,]+$/.test(text) || /^[([]/.test(text) ? `\\text{${safe}}` : `\\left(\\text{${safe}}\\right)`;
 }
 
 // The components of a shown vector "(a; b; c)" or "(a, b, c)".
@@ -33,7 +33,12 @@ function componentsOf(text, lang) {
 
 // The right-hand side of `tex` (after its last '=' outside braces) with the
 // known quantities replaced by their numbers; null when nothing is known.
+// Other spellings of a symbol in the vocabulary's formulas.
+const aliases = { '\\tfrac{\\Delta}{4}': ['\\Delta/4'] };
+
 export function withNumbers(tex, known) {
+  for (const [symbol, others] of Object.entries(aliases))
+    if (known.has(symbol)) for (const other of others) known.set(other, known.get(symbol));
   let depth = 0;
   let last = -1;
   for (let k = 0; k < tex.length; ++k) {
@@ -75,7 +80,8 @@ export function withNumbers(tex, known) {
       }
     }
     if (value !== null) {
-      if (previousWasNumber) out += '\\cdot ';
+      // a product written by juxtaposition (2j, 4|E|², C·C) keeps its dot
+      if (previousWasNumber || /[\d})]\s*$/.test(out)) out += '\\cdot ';
       out += texNumber(value);
       k += length;
       ++replaced;

@@ -20,7 +20,10 @@ function bytesOf(base64) {
 const utf8 = (bytes) => new TextDecoder().decode(bytes);
 
 function showError(error) {
-  $('status').textContent = t('page_error', { text: error && error.message ? error.message : String(error) });
+  const text = error && error.message ? error.message : String(error);
+  // Before the tracer has given the page its words, the error alone.
+  const worded = t('page_error', { text });
+  $('status').textContent = worded === 'page_error' ? text : worded;
   $('status').className = 'error';
 }
 
@@ -190,6 +193,8 @@ async function start() {
     };
     for (const [id, word] of Object.entries(words)) $(id).textContent = t(word, { i: '·', j: '·' });
     $('scene-line').textContent = t('page_scene', { scene: opened.scene, w: data.w });
+    $('full-digits').parentElement.title = t('page_digits_hint');
+    $('lang-switch').setAttribute('aria-label', t('page_language'));
     $('long-double-note').textContent = version.long_double ? '' : version.long_double_why || '';
     for (const button of document.querySelectorAll('#lang-switch button'))
       button.setAttribute('aria-pressed', String(button.dataset.lang === state.lang));
