@@ -123,10 +123,12 @@ void check_traces(const std::string& text, const std::string& path, const Scene&
                              ui_message("export_traces_not_trace",
                                         {{"what", trace.is_discarded() ? "invalid JSON" : "fields missing"}}));
         const std::string file_hash = trace["scene_hash"].get<std::string>();
+        const auto name = trace.find("scene");
+        const std::string file_scene = name != trace.end() && name->is_string() ? name->get<std::string>() : "?";
         if (file_hash != hash)
             throw InputError(path, where, ui_message("export_traces_other_scene",
-                                                     {{"file_scene", trace.value("scene", std::string("?"))},
-                                                      {"file_hash", file_hash},
+                                                     {{"file_scene", printable(file_scene)},
+                                                      {"file_hash", printable(file_hash)},
                                                       {"scene", scene.name},
                                                       {"hash", hash}}));
         const long long file_w = trace["w"].get<long long>();
@@ -139,7 +141,8 @@ void check_traces(const std::string& text, const std::string& path, const Scene&
 // The page's data as JSON inside <script type="application/json">: '<', '>'
 // and '&' escaped, so no text of a scene or a file can end the element.
 std::string page_data(const nlohmann::json& data) {
-    const std::string text = data.dump(-1, ' ', true);
+    // A path's bytes need not be UTF-8: such a byte becomes U+FFFD, not a crash.
+    const std::string text = data.dump(-1, ' ', true, nlohmann::json::error_handler_t::replace);
     std::string safe;
     safe.reserve(text.size());
     for (const char c : text) {

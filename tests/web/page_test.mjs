@@ -124,6 +124,9 @@ async function selectPixel(page, i, j) {
   }, [i, j]);
 }
 
+// The page's step keys work when no input, the image or the 3D view has focus.
+const blur = (page) => page.evaluate(() => document.activeElement && document.activeElement.blur());
+
 async function selected(page) {
   const fragment = new URLSearchParams((await page.evaluate(() => location.hash)).slice(1));
   return fragment.get('p').split(',').map(Number);
@@ -174,7 +177,7 @@ try {
   await page.selectOption('#formula', 'article');
 
   // --- keys: step through the derivation ---
-  await page.focus('body');
+  await blur(page);
   const steps = (await shownSteps(page)).length;
   await page.keyboard.press('End');
   assert.equal(await page.textContent('#step-counter'), `step ${steps} of ${steps}`);
@@ -199,6 +202,7 @@ try {
 
   // --- language: Polish words and numbers, remembered, and the URL state ---
   await selectPixel(page, 3, 4);
+  await blur(page);
   await page.keyboard.press('End');
   await page.click('#lang-switch button[data-lang="pl"]');
   assert.match(await page.textContent('#derivation-heading'), /Wyprowadzenie piksela \(3, 4\)/);
@@ -233,6 +237,7 @@ try {
   });
   const dIndex = await page.$$eval('#steps .step', (rows) => rows.findIndex((row) => row.dataset.key === 'D'));
   assert.ok(dIndex >= 0, 'the lit pixel has a step D');
+  await blur(page);
   await page.keyboard.press('Home');
   for (let k = 0; k < dIndex; ++k) await page.keyboard.press('ArrowRight');
   assert.equal(await page.getAttribute('#steps .step.current', 'data-key'), 'D');

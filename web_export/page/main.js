@@ -102,9 +102,16 @@ async function start() {
       redraw();
       return;
     }
-    const view = tracer.view(current.text, { lang: state.lang, digits: 4 });
-    current.view = view;
-    current.geometry = tracer.view(current.text, { lang: 'en', digits: 0 });
+    let view;
+    try {
+      view = tracer.view(current.text, { lang: state.lang, digits: 4 });
+      current.view = view;
+      current.geometry = tracer.view(current.text, { lang: 'en', digits: 0 });
+    } catch (error) {
+      current = null;
+      showError(error);
+      return redrawTrace();
+    }
     const h = view.header;
     $('derivation-heading').textContent = t('page_derivation', { i: h.i, j: h.j });
     $('source-note').textContent = current.fromFile
