@@ -55,7 +55,20 @@ const inline = (text) => {
   return text.replace(/<\/script/gi, '<\\/script');
 };
 const appJs = inline(script.outputFiles[0].text);
-const wasm = inline(readFileSync(wasmJs, 'utf8'));
+// The module carries the wasm as a data: URL, which emscripten 3.1.6 hands
+// to fetch() first: the CSP refuses that (a console error) before the
+// module falls back to decoding it. So the wasm goes into a data block of
+// its own, and the page passes the bytes as Module.wasmBinary: no fetch.
+const moduleText = readFileSync(wasmJs, 'utf8');
+const prefix = 'data:application/octet-stream;base64,';
+const starts = [];
+for (let at = moduleText.indexOf(prefix); at >= 0; at = moduleText.indexOf(prefix, at + 1))
+  if (/[A-Za-z0-9+/]/.test(moduleText[at + prefix.length])) starts.push(at + prefix.length);
+if (starts.length !== 1) throw new Error(`${wasmJs}: expected one inlined wasm (SINGLE_FILE), found ${starts.length}`);
+let end = starts[0];
+while (/[A-Za-z0-9+/=]/.test(moduleText[end])) ++end;
+const wasmBase64 = moduleText.slice(starts[0], end);
+const wasm = inline(moduleText.slice(0, starts[0]) + moduleText.slice(end));
 const css = style.outputFiles[0].text.replace(/<\/style/gi, '<\\/style');
 if (/url\((?!["']?data:)/.test(css)) throw new Error('the style sheet names a file that is not embedded');
 
@@ -67,6 +80,7 @@ const fill = (text, marker, value) => {
 };
 let html = fill(parts, '/*@PROMYK_CSS@*/', css);
 html = fill(html, '/*@PROMYK_WASM@*/', wasm);
+html = fill(html, '@PROMYK_WASM_BINARY@', wasmBase64);
 html = fill(html, '/*@PROMYK_APP@*/', appJs);
 if (html.split('@PROMYK_EXPORT_DATA@').length !== 2) throw new Error('the data marker must appear exactly once');
 writeFileSync(output + '.tmp', html);

@@ -226,6 +226,9 @@ export class Derivation {
       if (step.symbol_tex) {
         const components = step.components_shown || null;
         learn(step.symbol_tex, step.value_shown, components);
+        // The program's name on the formula's left (C for E·S, D for N·K).
+        const name = step.formula_tex ? /^\s*([A-Za-z])\s*=/.exec(step.formula_tex) : null;
+        if (name && name[1] !== step.symbol_tex) learn(name[1], step.value_shown, components);
         if (/^[A-Z](_P)?$/.test(step.symbol_tex)) learn(`\\vec{${step.symbol_tex}}`, step.value_shown, components);
       }
     });
@@ -287,6 +290,10 @@ export class Derivation {
     if (!row) return;
     for (let block = row.parentElement; block && block !== this.container; block = block.parentElement)
       if (block.tagName === 'DETAILS') block.open = true;
-    row.scrollIntoView({ block: 'nearest' });
+    // Scroll the steps' box only, never the page (the header stays in view).
+    const box = this.container;
+    const top = row.getBoundingClientRect().top - box.getBoundingClientRect().top + box.scrollTop;
+    if (top < box.scrollTop || top + row.offsetHeight > box.scrollTop + box.clientHeight)
+      box.scrollTop = Math.max(0, top - box.clientHeight / 3);
   }
 }

@@ -31,7 +31,8 @@ async function start() {
   const data = JSON.parse($('promyk-data').textContent);
   data.image = bytesOf(data.image);
   data.branchMap = bytesOf(data.branch_map);
-  const M = await createPromyk(); // eslint-disable-line no-undef
+  // The wasm's bytes from their data block (build_page.mjs): nothing fetched.
+  const M = await createPromyk({ wasmBinary: bytesOf($('promyk-wasm').textContent) }); // eslint-disable-line no-undef
   const tracer = makeTracer(M);
   const version = tracer.version();
   const opened = tracer.openScene(utf8(bytesOf(data.scene_text)), data.scene_file || '', data.w);
@@ -202,7 +203,10 @@ async function start() {
     $('scene-line').textContent = t('page_scene', { scene: opened.scene, w: data.w });
     $('full-digits').parentElement.title = t('page_digits_hint');
     $('lang-switch').setAttribute('aria-label', t('page_language'));
-    $('long-double-note').textContent = version.long_double ? '' : version.long_double_why || '';
+    // Why the page has no long double, in the page's language when the
+    // tracer's messages word it (wasm_no_long_double), else as it says.
+    const why = t('wasm_no_long_double');
+    $('long-double-note').textContent = version.long_double ? '' : why !== 'wasm_no_long_double' ? why : version.long_double_why || '';
     for (const button of document.querySelectorAll('#lang-switch button'))
       button.setAttribute('aria-pressed', String(button.dataset.lang === state.lang));
     fillSelect($('compare'), [['', t('page_compare_none')], ...reals.flatMap((r) => formulas.map((f) => [`${r},${f}`, `${r}, ${f}`]))]);

@@ -31,7 +31,8 @@ export class View3D {
     sun.position.set(3, 5, 4);
     this.scene.add(sun);
     this.camera = new PerspectiveCamera(45, 1, 0.05, 200);
-    this.orbit = { theta: 0.9, phi: 1.1, radius: 9, target: new Vector3(0, 0, -2.5) };
+    // From the right of the eye and a little above: the ray runs across the view.
+    this.orbit = { theta: 1.15, phi: 1.2, radius: 5.5, target: new Vector3(0.3, 0, -2.3) };
     this.world = new Group();
     this.pixelGroup = new Group();
     this.scene.add(this.world, this.pixelGroup);
@@ -158,7 +159,8 @@ export class View3D {
     const groups = view.groups || [];
     const ancestor = (step, kind) => {
       for (let g = step.group; g >= 0 && g < groups.length; g = groups[g].parent) if (groups[g].kind === kind) return groups[g].index;
-      return -1;
+      // The article's scene has one light and no light groups: its steps are light 0's.
+      return kind === 'light' && !groups.some((g) => g.kind === 'light') ? 0 : -1;
     };
     const vec = (step) => (step && step.components_full ? step.components_full.map(numberOf) : null);
     const steps = view.steps;
@@ -238,7 +240,7 @@ export class View3D {
   // Draws the current step's quantity bold and the others faint.
   setStep(step, view) {
     const groups = (view && view.groups) || [];
-    let light = -1;
+    let light = groups.some((g) => g.kind === 'light') ? -1 : 0;
     if (step) for (let g = step.group; g >= 0 && g < groups.length; g = groups[g].parent) if (groups[g].kind === 'light') { light = groups[g].index; break; }
     const key = step ? step.key : null;
     for (const mark of this.marks) {
