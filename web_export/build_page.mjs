@@ -7,6 +7,7 @@
 // a script of its own. Nothing is loaded from anywhere at run time: the
 // page's Content-Security-Policy forbids it.
 import { readFileSync, writeFileSync, renameSync } from 'node:fs';
+import { gzipSync } from 'node:zlib';
 import { createRequire } from 'node:module';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -57,8 +58,8 @@ const inline = (text) => {
 const appJs = inline(script.outputFiles[0].text);
 // The module carries the wasm as a data: URL, which emscripten 3.1.6 hands
 // to fetch() first: the CSP refuses that (a console error) before the
-// module falls back to decoding it. So the wasm goes into a data block of
-// its own, and the page passes the bytes as Module.wasmBinary: no fetch.
+// module falls back to decoding it. So the wasm goes, gzipped, into a data
+// block of its own, and the page passes the bytes as Module.wasmBinary.
 const moduleText = readFileSync(wasmJs, 'utf8');
 const prefix = 'data:application/octet-stream;base64,';
 const starts = [];
@@ -67,7 +68,9 @@ for (let at = moduleText.indexOf(prefix); at >= 0; at = moduleText.indexOf(prefi
 if (starts.length !== 1) throw new Error(`${wasmJs}: expected one inlined wasm (SINGLE_FILE), found ${starts.length}`);
 let end = starts[0];
 while (/[A-Za-z0-9+/=]/.test(moduleText[end])) ++end;
-const wasmBase64 = moduleText.slice(starts[0], end);
+// gzip: 9 MB of wasm become about 1.7 MB; the page inflates it with the
+// browser's own DecompressionStream (no library, nothing fetched).
+const wasmBase64 = gzipSync(Buffer.from(moduleText.slice(starts[0], end), 'base64'), { level: 9 }).toString('base64');
 const wasm = inline(moduleText.slice(0, starts[0]) + moduleText.slice(end));
 const css = style.outputFiles[0].text.replace(/<\/style/gi, '<\\/style');
 if (/url\((?!["']?data:)/.test(css)) throw new Error('the style sheet names a file that is not embedded');

@@ -19,6 +19,11 @@ function bytesOf(base64) {
 
 const utf8 = (bytes) => new TextDecoder().decode(bytes);
 
+async function gunzip(bytes) {
+  const stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream('gzip'));
+  return new Uint8Array(await new Response(stream).arrayBuffer());
+}
+
 function showError(error) {
   const text = error && error.message ? error.message : String(error);
   // Before the tracer has given the page its words, the error alone.
@@ -31,8 +36,8 @@ async function start() {
   const data = JSON.parse($('promyk-data').textContent);
   data.image = bytesOf(data.image);
   data.branchMap = bytesOf(data.branch_map);
-  // The wasm's bytes from their data block (build_page.mjs): nothing fetched.
-  const M = await createPromyk({ wasmBinary: bytesOf($('promyk-wasm').textContent) }); // eslint-disable-line no-undef
+  // The wasm's bytes from their data block (gzip, build_page.mjs): nothing fetched.
+  const M = await createPromyk({ wasmBinary: await gunzip(bytesOf($('promyk-wasm').textContent)) }); // eslint-disable-line no-undef
   const tracer = makeTracer(M);
   const version = tracer.version();
   const opened = tracer.openScene(utf8(bytesOf(data.scene_text)), data.scene_file || '', data.w);
