@@ -55,8 +55,8 @@ function cliTrace(i, j, w, { scene, real = 'double', formula = 'article', spp = 
 // A shown full-digit text (English: "−0.125", "(0.1, 0.2, 3)") as its parts.
 const parts = (text) => text.replace(/\u2212/g, '-').replace(/^[([]|[)\]]$/g, '').split(', ');
 
-// The page's steps (key, full text) must equal the CLI's values, number for
-// number; a real type other than double also text for text (real_text).
+// The page's steps (key, full text) must equal the CLI's values: a double
+// number for number, another real type text for text (its real_text).
 function assertSameValues(pageSteps, cli, what) {
   const numeric = cli.steps.filter((s) => typeof s.value !== 'string');
   const shown = pageSteps.filter((s) => s.kind !== 'word');
@@ -70,8 +70,10 @@ function assertSameValues(pageSteps, cli, what) {
     assert.equal(got.length, values.length, `${what}: ${step.key} has ${values.length} components, shown ${page.full}`);
     values.forEach((value, c) => {
       if (value === null) return; // non-finite: the text beside it is checked by the CLI's own tests
-      assert.equal(Number(got[c]), value, `${what}: ${step.key}[${c}] shown ${got[c]}, the CLI has ${value}`);
-      if (texts) assert.equal(got[c], texts[c], `${what}: ${step.key}[${c}] real text`);
+      // float and quad: the shortest text in their own type (real_text);
+      // double: the number itself (the JSON's double).
+      if (texts) assert.equal(got[c], texts[c], `${what}: ${step.key}[${c}] shown ${got[c]}, the CLI's real text ${texts[c]}`);
+      else assert.equal(Number(got[c]), value, `${what}: ${step.key}[${c}] shown ${got[c]}, the CLI has ${value}`);
     });
   });
 }
@@ -227,7 +229,8 @@ try {
   // --- the screenshot: a lit pixel of the article's scene at step D ---
   const shot = exportPage('article64.html', ['--w', '64']);
   page = await open(shot);
-  const firstPaint = await page.evaluate(() => performance.getEntriesByType('paint').map((e) => `${e.name} ${e.startTime.toFixed(0)} ms`).join(', '));
+  const firstPaint = await page.evaluate(() => [...performance.getEntriesByType('paint').map((e) => `${e.name} ${e.startTime.toFixed(0)} ms`),
+    `tracer ready ${Number(document.body.dataset.readyMs).toFixed(0)} ms`].join(', '));
   const traceTime = await page.evaluate(() => {
     const canvas = document.getElementById('image');
     const box = canvas.getBoundingClientRect();
@@ -268,7 +271,7 @@ try {
     '--trace-region', '10,10,12,12', '-o', join(work, 'traces.png')]);
   const lines = readFileSync(traces, 'utf8').trim().split('\n');
   await page.setInputFiles('#traces-input', traces);
-  assert.match(await page.textContent('#traces-status'), /9 traced pixels \(float, article, 4 samples\)/);
+  assert.match(await page.textContent('#traces-status'), /9 traced pixels \(float, article, samples per pixel: 4\)/);
   await selectPixel(page, 11, 12);
   assert.match(await page.textContent('#source-note'), /not recomputed/);
   assertSameValues(await shownSteps(page), cliSteps(lines[5]), 'trace file line (11, 12)');
@@ -286,7 +289,7 @@ try {
   const hostileName = '<img src=x onerror="window.__pwned=1"><script>window.__pwned=2</script>&amp;';
   const sceneText = JSON.parse(readFileSync(join(lessons, 'scenes', 'article.json'), 'utf8'));
   sceneText.name = hostileName;
-  const hostileScene = join(work, 'hostile <b>scene</b>.json');
+  const hostileScene = join(work, 'hostile <b>scene&amp;.json');
   writeFileSync(hostileScene, JSON.stringify(sceneText));
   const hostileTraces = join(work, 'hostile.jsonl');
   run(['render', '--scene', hostileScene, '--w', '8', '--traces', hostileTraces, '--trace-pixel', '3,4', '-o', join(work, 'hostile.png')]);

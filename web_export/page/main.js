@@ -351,6 +351,7 @@ async function start() {
   applyLanguage();
   if (data.traces) openTraces(bytesOf(data.traces), data.traces_file);
   else retrace();
+  document.body.dataset.readyMs = String(performance.now());
   document.body.dataset.ready = 'true';
 }
 
