@@ -177,6 +177,17 @@ try {
     }
   }
   await page.selectOption('#formula', 'article');
+  // "compare": two settings side by side, the agreeing digits marked
+  await page.selectOption('#compare', 'quad,geometric');
+  const compared = await page.$$eval('#comparison tr', (rows) => rows.length);
+  assert.ok(compared > 10 && (await page.$$eval('#comparison mark', (marks) => marks.length)) > 0, 'compare marks no digits');
+  await page.selectOption('#compare', '');
+  assert.equal(await page.$$eval('#comparison tr', (rows) => rows.length), 0);
+  // "full digits": every value with all its digits, 4 significant ones otherwise
+  await page.check('#full-digits');
+  assert.equal(await page.textContent('#steps .step[data-key="t"] .v'), `= ${await page.getAttribute('#steps .step[data-key="t"] .v', 'title')}`);
+  await page.uncheck('#full-digits');
+  assert.match(await page.textContent('#steps .step[data-key="t"] .v'), /^= 1\.058$/);
 
   // --- keys: step through the derivation ---
   await blur(page);
