@@ -49,6 +49,8 @@ export function withNumbers(tex, known) {
   }
   if (last < 0) return null;
   const rhs = tex.slice(last + 1);
+  // A minimum over a set or a sum over samples has no single number per symbol.
+  if (/\\min\\\{|\\sum/.test(rhs)) return null;
   const literals = [...known.keys()].sort((a, b) => b.length - a.length);
   let out = '';
   let replaced = 0;
@@ -119,10 +121,11 @@ export class Derivation {
     learn('i', String(header.i));
     learn('j', String(header.j));
     learn('w', String(header.w));
-    for (const given of header.given || []) {
+    const learnGiven = (given) => {
       learn(given.symbol_tex, given.value_shown, componentsOf(given.value_shown, lang));
       if (/^[A-Z]$/.test(given.symbol_tex)) learn(`\\vec{${given.symbol_tex}}`, given.value_shown, componentsOf(given.value_shown, lang));
-    }
+    };
+    for (const given of header.given || []) learnGiven(given);
     const givenGroups = header.given_groups || [];
 
     // The given values, as a first block.
@@ -160,11 +163,27 @@ export class Derivation {
       blocks.set(index, details);
       for (const g of givenGroups)
         if (g.kind === group.kind && g.index === group.index)
-          for (const item of g.values || []) learn(item.symbol_tex, item.value_shown, componentsOf(item.value_shown, lang));
+          for (const item of g.values || []) learnGiven(item);
       return details;
     };
 
+    // Inside an object's block, S, r, Q, n are that object's (learned as the
+    // block opens); after the objects, the hit object's again.
+    const hit = /^(sphere|plane) (\d+)$/.exec(view.hit_object || '');
+    const hitGiven = hit ? givenGroups.find((g) => g.kind === hit[1] && g.index === Number(hit[2])) : null;
+    const inObject = (group) => {
+      for (let g = group; g >= 0 && g < groups.length; g = groups[g].parent)
+        if (groups[g].kind === 'sphere' || groups[g].kind === 'plane') return true;
+      return false;
+    };
+    let objectsLearned = false;
     view.steps.forEach((step, index) => {
+      if (inObject(step.group)) objectsLearned = true;
+      else if (objectsLearned && hitGiven) {
+        for (const item of hitGiven.values || []) learnGiven(item);
+        objectsLearned = false;
+      }
+      const parent = blockOf(step.group); // opens the block, learning its givens
       const row = document.createElement('div');
       row.className = 'step';
       row.dataset.index = String(index);
@@ -221,7 +240,7 @@ export class Derivation {
         body.append(description);
       }
       row.append(number, symbol, body);
-      blockOf(step.group).append(row);
+      parent.append(row);
       this.rows.push(row);
       if (step.symbol_tex) {
         const components = step.components_shown || null;
