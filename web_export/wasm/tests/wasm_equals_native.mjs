@@ -16,6 +16,7 @@ import { execFileSync } from 'node:child_process';
 import { statSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
+import { gunzipSync } from 'node:zlib';
 import { performance } from 'node:perf_hooks';
 
 const args = process.argv.slice(2);
@@ -27,7 +28,7 @@ const modulePath = option('--module') && resolve(option('--module'));
 const promyk = option('--promyk');
 const tamper = args.includes('--tamper');
 if (!modulePath || !promyk) {
-  console.error('usage: node wasm_equals_native.mjs --module PROMYK_JS --promyk PROMYK [--tamper]');
+  console.error('usage: node wasm_equals_native.mjs --module PROMYK_JS --promyk PROMYK [--gz WASM_GZ --glue GLUE_JS] [--tamper]');
   process.exit(2);
 }
 
@@ -162,6 +163,22 @@ for (const step of view.steps)
 if (!text4.includes('= ' + view.I_P_shown + '\n') || !/^0,\d{4}$/.test(view.I_P_shown)) fail('view: I_P_shown ' + view.I_P_shown);
 const legend = json('promyk_legend', ['string'], ['en']);
 if (legend.categories?.length !== 7 || legend.categories[0].id !== 'miss') fail('legend: ' + JSON.stringify(legend));
+
+// ---- the split module (wasm gzip-compressed + glue) traces the same -------
+const gz = option('--gz'), glue = option('--glue');
+if (gz && glue) {
+  const createFromParts = require(resolve(glue));
+  const P = await createFromParts({ wasmBinary: gunzipSync(readFileSync(gz)) });
+  const none = P.ccall('promyk_trace', 'string', ['number', 'number', 'string'], [3, 4, '{}']);
+  if (none !== '{"error":"No scene is open yet.","code":2}') fail('the split module, no scene: ' + none);
+  P.ccall('promyk_open_scene', 'string', ['string', 'string', 'number'], ['', '', 8]);
+  for (const settings of ['{}', '{"real":"quad","formula":"fma","spp":4}']) {
+    const one = M.ccall('promyk_trace', 'string', ['number', 'number', 'string'], [3, 4, settings]);
+    const other = P.ccall('promyk_trace', 'string', ['number', 'number', 'string'], [3, 4, settings]);
+    if (other !== one) fail('the split module: ' + settings);
+  }
+  console.log(`split module: wasm.gz ${statSync(gz).size} bytes, glue ${statSync(glue).size} bytes`);
+}
 
 // ---- figures ---------------------------------------------------------------
 const t0 = performance.now();
