@@ -1,20 +1,19 @@
 // Bundles the web page into one HTML template (issue 16):
-//   node build_page.mjs NODE_MODULES WASM_JS OUTPUT
+//   node build_page.mjs NODE_MODULES GLUE_JS WASM_GZ OUTPUT
 // page/main.js and its modules, three.js and KaTeX are bundled by esbuild
 // into one script; page/style.css and KaTeX's CSS into one style sheet, with
 // KaTeX's fonts as data: URLs (woff2 only: every browser that runs the page
 // reads it); the wasm module (one JavaScript file, the wasm inside) goes in
-// a script of its own. Nothing is loaded from anywhere at run time: the
+// a script of its own, the wasm in a data block. Nothing is loaded from anywhere at run time: the
 // page's Content-Security-Policy forbids it.
 import { readFileSync, writeFileSync, renameSync } from 'node:fs';
-import { gzipSync } from 'node:zlib';
 import { createRequire } from 'node:module';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
-const [modules, wasmJs, output] = process.argv.slice(2);
+const [modules, glueJs, wasmGz, output] = process.argv.slice(2);
 if (!output) {
-  console.error('usage: node build_page.mjs NODE_MODULES WASM_JS OUTPUT');
+  console.error('usage: node build_page.mjs NODE_MODULES GLUE_JS WASM_GZ OUTPUT');
   process.exit(2);
 }
 const here = dirname(fileURLToPath(import.meta.url));
@@ -56,22 +55,13 @@ const inline = (text) => {
   return text.replace(/<\/script/gi, '<\\/script');
 };
 const appJs = inline(script.outputFiles[0].text);
-// The module carries the wasm as a data: URL, which emscripten 3.1.6 hands
-// to fetch() first: the CSP refuses that (a console error) before the
-// module falls back to decoding it. So the wasm goes, gzipped, into a data
-// block of its own, and the page passes the bytes as Module.wasmBinary.
-const moduleText = readFileSync(wasmJs, 'utf8');
-const prefix = 'data:application/octet-stream;base64,';
-const starts = [];
-for (let at = moduleText.indexOf(prefix); at >= 0; at = moduleText.indexOf(prefix, at + 1))
-  if (/[A-Za-z0-9+/]/.test(moduleText[at + prefix.length])) starts.push(at + prefix.length);
-if (starts.length !== 1) throw new Error(`${wasmJs}: expected one inlined wasm (SINGLE_FILE), found ${starts.length}`);
-let end = starts[0];
-while (/[A-Za-z0-9+/=]/.test(moduleText[end])) ++end;
-// gzip: 9 MB of wasm become about 1.7 MB; the page inflates it with the
-// browser's own DecompressionStream (no library, nothing fetched).
-const wasmBase64 = gzipSync(Buffer.from(moduleText.slice(starts[0], end), 'base64'), { level: 9 }).toString('base64');
-const wasm = inline(moduleText.slice(0, starts[0]) + moduleText.slice(end));
+// The tracer as wasm.cmake splits it (wasm/split_module.mjs): the glue, whose
+// inline wasm is emptied, and the wasm gzip-compressed. The wasm goes into a
+// data block of its own (base64); the page inflates it and passes it as
+// createPromyk({wasmBinary}), so the glue never fetches its data: URL (the
+// CSP would refuse that, with a console error).
+const wasm = inline(readFileSync(glueJs, 'utf8'));
+const wasmBase64 = readFileSync(wasmGz).toString('base64');
 const css = style.outputFiles[0].text.replace(/<\/style/gi, '<\\/style');
 if (/url\((?!["']?data:)/.test(css)) throw new Error('the style sheet names a file that is not embedded');
 
