@@ -32,7 +32,7 @@ const woff2Only = {
   },
 };
 
-const common = { bundle: true, minify: true, write: false, logLevel: 'error', nodePaths: [modules], charset: 'utf8' };
+const common = { bundle: true, minify: true, write: false, logLevel: 'error', nodePaths: [modules], charset: 'ascii' }; // no raw bidi controls in promyk's C++ literal
 const script = await esbuild.build({
   ...common,
   entryPoints: [join(here, 'page', 'main.js')],

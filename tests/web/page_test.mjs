@@ -129,6 +129,13 @@ async function selectPixel(page, i, j) {
 // The page's step keys work when no input, the image or the 3D view has focus.
 const blur = (page) => page.evaluate(() => document.activeElement && document.activeElement.blur());
 
+// Reading a picked file is asynchronous: wait until the page says something.
+async function pickFile(page, file, where) {
+  await page.evaluate((where) => { document.getElementById(where).textContent = ''; }, where);
+  await page.setInputFiles('#traces-input', file);
+  await page.waitForFunction((where) => document.getElementById(where).textContent !== '', where);
+}
+
 async function selected(page) {
   const fragment = new URLSearchParams((await page.evaluate(() => location.hash)).slice(1));
   return fragment.get('p').split(',').map(Number);
@@ -281,7 +288,7 @@ try {
   run(['render', '--scene', everything, '--w', String(everythingW), '--real', 'float', '--spp', '4', '--traces', traces,
     '--trace-region', '10,10,12,12', '-o', join(work, 'traces.png')]);
   const lines = readFileSync(traces, 'utf8').trim().split('\n');
-  await page.setInputFiles('#traces-input', traces);
+  await pickFile(page, traces, 'traces-status');
   assert.match(await page.textContent('#traces-status'), /9 traced pixels \(float, article, samples per pixel: 4\)/);
   await selectPixel(page, 11, 12);
   assert.match(await page.textContent('#source-note'), /not recomputed/);
@@ -293,7 +300,7 @@ try {
   // a trace file of another w is refused, with a message
   const other = join(work, 'other.jsonl');
   run(['render', '--w', '8', '--traces', other, '--trace-pixel', '3,4', '-o', join(work, 'other.png')]);
-  await page.setInputFiles('#traces-input', other);
+  await pickFile(page, other, 'status');
   assert.match(await page.textContent('#status'), /w = 8/);
 
   // --- hostile strings are shown as text and run nothing ---
