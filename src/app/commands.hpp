@@ -17,5 +17,6 @@ std::function<int()> setup_bench(CLI::App& app);
 std::function<int()> setup_lesson(CLI::App& app);
 std::function<int()> setup_scene(CLI::App& app);
 std::function<int()> setup_diff(CLI::App& app);
+std::function<int()> setup_export(CLI::App& app);
 
 }  // namespace promyk::app

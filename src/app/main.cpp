@@ -168,14 +168,15 @@ int main(int argc, char** argv) {
     const auto lesson = promyk::app::setup_lesson(app);
     const auto scene = promyk::app::setup_scene(app);
     const auto diff = promyk::app::setup_diff(app);
-    const std::vector<std::string> commands = {"render", "trace", "lesson", "scene", "diff", "bench"};
+    const auto export_page = promyk::app::setup_export(app);
+    const std::vector<std::string> commands = {"render", "trace", "lesson", "scene", "diff", "bench", "export"};
     add_command_footers(app, "promyk");
     promyk::app::describe_global_options(app);
     app.footer(
         "Run 'promyk COMMAND --help' for a command's options. --help is always in English; --lang\n"
         "chooses the language of everything else.\n"
         "Exit codes: 0 success, 1 a negative answer (diff diverges, --answers wrong), 2 bad command line,\n"
-        "3 bad input file, 4 output not written,\n"
+        "3 bad input file, 4 output not written (export: also a promyk built without the web page),\n"
         "129/130/143 interrupted (nothing half-written), 141 reader of standard output quit,\n"
         "70 internal error.");
 
@@ -239,6 +240,7 @@ int main(int argc, char** argv) {
                                       : name == "lesson" ? lesson
                                       : name == "scene"  ? scene
                                       : name == "diff"   ? diff
+                                      : name == "export" ? export_page
                                                          : bench;
     try {
         const int code = run();

@@ -142,7 +142,7 @@ DiffComponent compare(char component, const DiffNumber& a, const DiffNumber& b, 
     out.b = b;
     out.difference = absolute_difference(a.exact, b.exact);
     const TypedNumber& larger = compare_magnitude(a.exact, b.exact) >= 0 ? a.exact : b.exact;
-    const quad magnitude = fabsq(to_quad(larger));
+    const quad magnitude = quad_math::fabs(to_quad(larger));
     // Each side's tolerance, relative to the larger magnitude.
     const auto tolerance_of = [&](const DiffNumber& side) -> quad {
         if (side.bits > 0) return ldexpq(1, -side.bits);

@@ -103,6 +103,7 @@ TypedNumber exact_decimal(double value) {
     return expand(std::signbit(value), static_cast<std::uint64_t>(std::ldexp(mantissa, 53)), exponent - 53);
 }
 
+#if PROMYK_HAS_X87_LONG_DOUBLE
 TypedNumber exact_decimal(long double value) {
     int exponent = 0;
     const long double mantissa = std::frexp(std::fabs(value), &exponent);
@@ -114,10 +115,12 @@ TypedNumber exact_decimal(long double value) {
     }
 }
 
+#endif
+
 TypedNumber exact_decimal(quad value) {
     int exponent = 0;
-    const quad mantissa = frexpq(fabsq(value), &exponent);
-    return expand(signbitq(value) != 0, static_cast<uint128>(ldexpq(mantissa, 113)), exponent - 113);
+    const quad mantissa = quad_math::frexp(quad_math::fabs(value), &exponent);
+    return expand(quad_math::signbit(value), static_cast<uint128>(quad_math::ldexp(mantissa, 113)), exponent - 113);
 }
 
 std::optional<TypedNumber> exact_value_of(const std::string& text, RealType type) {
@@ -137,13 +140,19 @@ std::optional<TypedNumber> exact_value_of(const std::string& text, RealType type
             break;
         }
         case RealType::long_double: {
+#if PROMYK_HAS_X87_LONG_DOUBLE
             const long double x = std::strtold(begin, &end);
             if (std::isfinite(x)) out = exact_decimal(x);
+#else
+            // No x87 here (wasm): the text read in quad, rounded to the x87's 64 bits.
+            const quad x = x87_rounded(quad_math::from_text(begin, &end));
+            if (quad_math::finite(x)) out = exact_decimal(x);
+#endif
             break;
         }
         case RealType::quad_: {
-            const quad x = strtoflt128(begin, &end);
-            if (finiteq(x)) out = exact_decimal(x);
+            const quad x = quad_math::from_text(begin, &end);
+            if (quad_math::finite(x)) out = exact_decimal(x);
             break;
         }
     }
@@ -194,7 +203,19 @@ TypedNumber multiply(const TypedNumber& a, const TypedNumber& b) {
 
 quad to_quad(const TypedNumber& number) {
     const std::string text = (number.negative ? "-" : "") + strip_zeros(number.digits) + "e" + std::to_string(-number.scale);
-    return strtoflt128(text.c_str(), nullptr);
+    return quad_math::from_text(text.c_str(), nullptr);
+}
+
+quad x87_rounded(quad x) {
+    if (!quad_math::finite(x) || x == 0) return x;
+    int exponent = 0;
+    const quad m = quad_math::frexp(quad_math::fabs(x), &exponent);  // [1/2, 1)
+    // m × 2^64 rounded to an integer, half to even (the default rounding):
+    // adding and subtracting 2^112 leaves no fraction bits in quad.
+    const quad big = quad_math::ldexp(quad(1), 112);
+    const quad rounded = (quad_math::ldexp(m, 64) + big) - big;
+    const quad magnitude = quad_math::ldexp(rounded, exponent - 64);
+    return quad_math::signbit(x) ? -magnitude : magnitude;
 }
 
 }  // namespace promyk

@@ -23,7 +23,9 @@ struct TypedNumber {
 // The value's exact decimal expansion (digits without leading zeros; "0" for
 // zero). The value must be finite.
 TypedNumber exact_decimal(double value);
+#if PROMYK_HAS_X87_LONG_DOUBLE
 TypedNumber exact_decimal(long double value);
+#endif
 TypedNumber exact_decimal(quad value);
 
 // `text` (a real_text, "0.1", "-1.5e-3") read in `type` (correctly rounded,
@@ -48,5 +50,10 @@ bool is_zero(const TypedNumber& number);
 
 // The number in quad (rounded once): for ratios that need no exactness.
 quad to_quad(const TypedNumber& number);
+
+// x rounded to the x87 long double's 64-bit significand (half to even), for
+// reading a long-double trace where there is no x87 (wasm). Subnormal x87
+// values are not treated apart (a trace's values are far from them).
+quad x87_rounded(quad x);
 
 }  // namespace promyk

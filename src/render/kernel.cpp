@@ -41,7 +41,11 @@ std::unique_ptr<Kernel> make_kernel(const Scene& scene, RealType real, Formula f
         case RealType::float_:
             return kernels::make_kernel_in<float>(scene, stages, formula, spp);
         case RealType::long_double:
+#if PROMYK_HAS_X87_LONG_DOUBLE
             return kernels::make_kernel_in<long double>(scene, stages, formula, spp);
+#else
+            throw UsageError(ui_message("wasm_no_long_double"));
+#endif
         case RealType::quad_:
             return kernels::make_kernel_in<quad>(scene, stages, formula, spp);
         case RealType::double_:

@@ -5,32 +5,13 @@
 
 #include <fmt/format.h>
 
+#include "render/branch_names.hpp"
 #include "trace/messages.hpp"
 
 namespace promyk {
 namespace {
 
 Paint colour(Rgb8 c) { return {c.r, c.g, c.b}; }
-
-const char* branch_message(BranchCategory category) {
-    switch (category) {
-        case BranchCategory::miss:
-            return "branch_name_miss";
-        case BranchCategory::dark:
-            return "branch_name_dark";
-        case BranchCategory::lit:
-            return "branch_name_lit";
-        case BranchCategory::shadowed:
-            return "branch_name_shadowed";
-        case BranchCategory::non_finite:
-            return "branch_name_non-finite";
-        case BranchCategory::tangent:
-            return "note_name_tangent";
-        case BranchCategory::behind:
-            break;
-    }
-    return "note_name_behind";
-}
 
 std::vector<Paint> ramp() {
     std::vector<Paint> colours;
@@ -58,7 +39,7 @@ Legend map_legend(MapKind kind, const ColourScale* scale, Language language) {
     if (kind == MapKind::branch) {
         for (int k = 0; k < branch_category_count; ++k) {
             const auto category = static_cast<BranchCategory>(k);
-            legend.swatches.push_back({colour(branch_colour(category).rgb), message(language, branch_message(category))});
+            legend.swatches.push_back({colour(branch_colour(category).rgb), message(language, branch_category_message(category))});
         }
         return legend;
     }

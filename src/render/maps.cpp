@@ -1,4 +1,5 @@
 #include "render/maps.hpp"
+#include "render/branch_names.hpp"
 #include "trace/messages.hpp"
 #include "trace/number_text.hpp"
 
@@ -362,8 +363,8 @@ protected:
         bool finite = true;
         for (const quad difference : {I.x - I_ref.x, I.y - I_ref.y, I.z - I_ref.z}) {
             // NaN fails every comparison: a NaN or an infinity on either side is non-finite.
-            if (!(fabsq(difference) <= RealTraits<quad>::max())) finite = false;
-            else if (fabsq(difference) > error) error = fabsq(difference);
+            if (!(quad_math::fabs(difference) <= RealTraits<quad>::max())) finite = false;
+            else if (quad_math::fabs(difference) > error) error = quad_math::fabs(difference);
         }
         if (!finite)
             pixel.kind = ScalarPixel::Kind::non_finite;
@@ -420,6 +421,26 @@ std::optional<MapKind> parse_map_name(std::string_view name) {
     for (const MapKind kind : map_kinds)
         if (map_name(kind) == name) return kind;
     return std::nullopt;
+}
+
+const char* branch_category_message(BranchCategory category) {
+    switch (category) {
+        case BranchCategory::miss:
+            return "branch_name_miss";
+        case BranchCategory::dark:
+            return "branch_name_dark";
+        case BranchCategory::lit:
+            return "branch_name_lit";
+        case BranchCategory::shadowed:
+            return "branch_name_shadowed";
+        case BranchCategory::non_finite:
+            return "branch_name_non-finite";
+        case BranchCategory::tangent:
+            return "note_name_tangent";
+        case BranchCategory::behind:
+            break;
+    }
+    return "note_name_behind";
 }
 
 const LegendColour& branch_colour(BranchCategory category) {

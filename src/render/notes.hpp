@@ -47,7 +47,7 @@ struct PixelNotes {
 template <class Real>
 Real epsilon_of() {
     if constexpr (std::is_same_v<Real, quad>)
-        return nextafterq(quad(1), quad(2)) - quad(1);
+        return quad_math::nextafter(quad(1), quad(2)) - quad(1);
     else
         return std::numeric_limits<Real>::epsilon();
 }

@@ -14,8 +14,10 @@
 // its operands against the result's largest (max-norms); a dot
 // product x_P x_Q + y_P y_Q + z_P z_Q takes its largest term as the operand
 // (max |term| / |sum|). Everything is computed from the values of the actual
-// type: each magnitude's log10 in its own type (a quad's magnitude may lie
-// beyond the range of a double), then the difference of the logs as a double.
+// type: each magnitude's log10 from its own type's exponent and significand
+// (a quad's magnitude may lie beyond the range of a double), then the
+// difference of the logs as a double; the log10 is math/portable_log10.hpp,
+// so that the CLI and the web page (wasm) give the same estimates.
 //
 // Only a recorder that asks for estimates (Recorder::estimates) computes
 // them: rendering never does (trace/recorder.hpp).
@@ -25,8 +27,7 @@
 #include <cmath>
 #include <limits>
 
-#include <quadmath.h>
-
+#include "math/portable_log10.hpp"
 #include "math/real.hpp"
 #include "math/vec3.hpp"
 
@@ -58,11 +59,6 @@ inline double rounded_digits(double digits) { return std::round(digits * 10) / 1
 inline bool loses_many_digits(double digits) { return rounded_digits(digits) >= many_digits_lost; }
 
 namespace digits_detail {
-
-inline double log10_magnitude(float x) { return std::log10(std::fabs(static_cast<double>(x))); }
-inline double log10_magnitude(double x) { return std::log10(std::fabs(x)); }
-inline double log10_magnitude(long double x) { return static_cast<double>(std::log10(std::fabs(x))); }
-inline double log10_magnitude(quad x) { return static_cast<double>(log10q(fabsq(x))); }
 
 template <class Real>
 bool finite(Real x) {

@@ -6,8 +6,9 @@
 #include <tuple>
 
 #include <fmt/format.h>
-#include <quadmath.h>
 
+#include "math/decimal.hpp"
+#include "math/portable_log10.hpp"
 #include "math/real.hpp"
 #include "trace/messages.hpp"
 #include "trace/trace_text.hpp"
@@ -95,8 +96,12 @@ namespace {
 quad exact_value(const std::string& text, const std::string& type) {
     if (type == "float") return std::strtof(text.c_str(), nullptr);
     if (type == "double") return std::strtod(text.c_str(), nullptr);
+#if PROMYK_HAS_X87_LONG_DOUBLE
     if (type == "long-double") return std::strtold(text.c_str(), nullptr);
-    return strtoflt128(text.c_str(), nullptr);
+#else
+    if (type == "long-double") return x87_rounded(quad_math::from_text(text.c_str(), nullptr));
+#endif
+    return quad_math::from_text(text.c_str(), nullptr);
 }
 
 }  // namespace
@@ -107,8 +112,8 @@ int agreeing_digits(const std::string& value, const std::string& value_type, con
     const quad b = exact_value(reference, reference_type);
     if (a == b) return -1;
     if (!(a * 0 == 0) || !(b * 0 == 0) || b == 0) return 0;
-    const quad relative = fabsq((a - b) / b);
-    return std::max(0, static_cast<int>(std::floor(-static_cast<double>(log10q(relative)))));
+    const quad relative = quad_math::fabs((a - b) / b);
+    return std::max(0, static_cast<int>(std::floor(-log10_magnitude(relative))));
 }
 
 std::string mark_digits(const std::string& value, int digits) {

@@ -57,41 +57,43 @@ std::string wrap(const std::string& first, const std::string& text, std::size_t 
 std::string value_of(const StepValue& value, const Vocabulary& vocabulary, const std::string& key, Language language,
                      int digits = 0);
 
+}  // namespace
+
 // The pixel's intensities when they follow from the steps (lit or
 // shadowed); empty when the branch fixes the result (background, dark).
-std::vector<double> computed_intensities(const PixelTrace& trace) {
+std::vector<double> trace_intensities(const PixelTrace& trace) {
     if (trace.branch != Branch::lit && trace.branch != Branch::shadowed && !trace.samples) return {};
     if (trace.result_rgb) return {trace.result_rgb->x, trace.result_rgb->y, trace.result_rgb->z};
     return {trace.result};
 }
 
-bool alarming(const Step& step, const PixelTrace& trace) {
-    return digits_lost_alarm(step.digits_lost, full_digits_of(trace.header.real), computed_intensities(trace));
+bool trace_step_alarm(const Step& step, const PixelTrace& trace) {
+    return digits_lost_alarm(step.digits_lost, full_digits_of(trace.header.real), trace_intensities(trace));
 }
 
 // A step that loses many digits: "⚠ 9.1 digits lost" when the loss matters
 // (digits_alarm.hpp), "3.0 digits lost" when it is shown only as a count;
 // empty below the count's threshold.
-std::string digits_lost_mark(const Step& step, const PixelTrace& trace, Language language) {
+std::string trace_digits_lost_mark(const Step& step, const PixelTrace& trace, Language language) {
     if (std::isnan(step.digits_lost) || !loses_many_digits(step.digits_lost)) return "";
     const std::string text = message(language, "trace_digits_lost_count",
                                      {{"digits", number_text(rounded_digits(step.digits_lost), language, 1)},
                                       {"full", number_text(std::round(full_digits_of(trace.header.real)), language, 0)}});
-    return alarming(step, trace) ? "⚠ " + text : text;
+    return trace_step_alarm(step, trace) ? "⚠ " + text : text;
 }
 
-std::string kind_of(const Vocabulary& vocabulary, const std::string& key);
+std::string trace_kind(const Vocabulary& vocabulary, const std::string& key);
 
 // A step's value as text, rounded to `digits` significant digits (0: every
 // digit): in a real type other than double, from its exact text in that
 // type (the Polish way in Polish: a decimal comma); else value_of.
-std::string step_value_text(const Step& step, const Vocabulary& vocabulary, const std::string& key,
+std::string trace_step_value_text(const Step& step, const Vocabulary& vocabulary, const std::string& key,
                             Language language, const std::string& real, int digits) {
     if (step.real_text.empty()) return value_of(step.value, vocabulary, key, language, digits);
     const RealType type = real == "float" ? RealType::float_ : real == "long-double" ? RealType::long_double : RealType::quad_;
     auto local = [&](const std::string& text) { return shown_real_text(text, type, language, digits); };
     if (step.real_text.size() == 1) return local(step.real_text.front());
-    const std::string kind = kind_of(vocabulary, key);
+    const std::string kind = trace_kind(vocabulary, key);
     const char* separator = language == Language::pl ? "; " : ", ";
     const bool vector = kind == "vector" || kind == "colour";
     std::string out = vector ? "[" : "(";
@@ -103,16 +105,18 @@ std::string step_value_text(const Step& step, const Vocabulary& vocabulary, cons
 // A key's symbol in the language: the vocabulary's, unless messages have a
 // "symbol_KEY" for the language (the symbols that are English words:
 // background, found, nearest, flipped, blocker).
-std::string symbol_of(const Vocabulary& vocabulary, const std::string& key, Language language) {
+std::string trace_symbol(const Vocabulary& vocabulary, const std::string& key, Language language) {
     if (std::optional<std::string> own = optional_message(language, "symbol_" + key)) return *own;
     const VocabularyEntry* entry = vocabulary.find(key);
     return entry ? entry->symbol : key;
 }
 
-std::string kind_of(const Vocabulary& vocabulary, const std::string& key) {
+std::string trace_kind(const Vocabulary& vocabulary, const std::string& key) {
     const VocabularyEntry* entry = vocabulary.find(key);
     return entry ? entry->kind : "point";
 }
+
+namespace {
 
 std::string header_text(const PixelTrace& trace, const Vocabulary& vocabulary, Language language) {
     const TraceHeader& h = trace.header;
@@ -141,7 +145,7 @@ std::string header_text(const PixelTrace& trace, const Vocabulary& vocabulary, L
     }
     std::string given;
     for (const GivenValue& value : h.given) {
-        given += (given.empty() ? "" : separator) + symbol_of(vocabulary, value.key, language) + " = " +
+        given += (given.empty() ? "" : separator) + trace_symbol(vocabulary, value.key, language) + " = " +
                  value_of(value.value, vocabulary, value.key, language);
     }
     const std::string lead = message(language, "trace_given");
@@ -149,7 +153,7 @@ std::string header_text(const PixelTrace& trace, const Vocabulary& vocabulary, L
     for (const GivenGroup& group : h.given_groups) {
         std::string values;
         for (const GivenValue& value : group.values)
-            values += (values.empty() ? "" : separator) + symbol_of(vocabulary, value.key, language) + " = " +
+            values += (values.empty() ? "" : separator) + trace_symbol(vocabulary, value.key, language) + " = " +
                       value_of(value.value, vocabulary, value.key, language);
         const std::string title = "  " + group_text(language, group.kind, group.index) + ": ";
         out += wrap(title, values, display_width(title), separator);
@@ -192,17 +196,17 @@ std::string narrow_steps(const PixelTrace& trace, const Vocabulary& vocabulary, 
         const std::size_t indent = margin.size() + number_width + 2 + key_width + 2;
         const std::string key(key_name(step.key));
         const VocabularyEntry* entry = vocabulary.find(key);
-        const std::string symbol = symbol_of(vocabulary, key, options.language);
+        const std::string symbol = trace_symbol(vocabulary, key, options.language);
         const std::string lead = fmt::format("{}{:>{}}  {}", margin, k + 1, number_width, pad(key, key_width + 2));
         out += wrap(lead, entry && !entry->formula.empty() ? symbol + " = " + entry->formula : symbol, indent);
         if (options.explain && entry)
             out += wrap(std::string(indent, ' '), options.language == Language::pl ? entry->pl : entry->en, indent);
         out += wrap(std::string(indent, ' ') + "= ",
-                    step_value_text(step, vocabulary, key, options.language, trace.header.real, options.digits),
+                    trace_step_value_text(step, vocabulary, key, options.language, trace.header.real, options.digits),
                     indent + 2,
                     // a word ("behind the eye: ...") breaks at spaces; a Polish vector only after "; "
                     options.language == Language::pl && !std::holds_alternative<std::string>(step.value) ? "; " : " ");
-        const std::string mark = digits_lost_mark(step, trace, options.language);
+        const std::string mark = trace_digits_lost_mark(step, trace, options.language);
         if (!mark.empty()) out += std::string(indent, ' ') + mark + "\n";
     }
     return out;
@@ -226,9 +230,9 @@ std::string wide_steps(const PixelTrace& trace, const Vocabulary& vocabulary, co
             key = group_text(language, group.kind, group.index) + " / " + key;
         }
         const VocabularyEntry* entry = vocabulary.find(bare);
-        const std::string mark = digits_lost_mark(step, trace, language);
-        rows.push_back({std::to_string(k + 1), key, symbol_of(vocabulary, bare, language), entry ? entry->formula : "",
-                        step_value_text(step, vocabulary, bare, language, trace.header.real, options.digits) +
+        const std::string mark = trace_digits_lost_mark(step, trace, language);
+        rows.push_back({std::to_string(k + 1), key, trace_symbol(vocabulary, bare, language), entry ? entry->formula : "",
+                        trace_step_value_text(step, vocabulary, bare, language, trace.header.real, options.digits) +
                             (mark.empty() ? "" : "  " + mark)});
     }
     std::size_t widths[4] = {0, 0, 0, 0};
@@ -277,7 +281,7 @@ std::string digits_lost_notes(const PixelTrace& trace, const Vocabulary& vocabul
     bool marked = false;
     const Step* worst = nullptr;
     for (const Step& step : trace.steps) {
-        if (std::isnan(step.digits_lost) || !loses_many_digits(step.digits_lost) || !alarming(step, trace)) continue;
+        if (std::isnan(step.digits_lost) || !loses_many_digits(step.digits_lost) || !trace_step_alarm(step, trace)) continue;
         marked = true;
         if (geometric_avoids(step.key) && (!worst || step.digits_lost > worst->digits_lost)) worst = &step;
     }
@@ -288,7 +292,7 @@ std::string digits_lost_notes(const PixelTrace& trace, const Vocabulary& vocabul
     if (worst && trace.header.formula != "geometric") {
         const std::string key(key_name(worst->key));
         out += wrap("", message(language, "trace_suggest_geometric",
-                                {{"symbol", symbol_of(vocabulary, key, language)},
+                                {{"symbol", trace_symbol(vocabulary, key, language)},
                                  {"digits", number_text(rounded_digits(worst->digits_lost), language, 1)},
                                  {"formula", trace.header.formula}}),
                     2);
@@ -319,7 +323,7 @@ std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, c
                                          : shown_number(trace.result, language, options.digits);
     if (!trace.result_real_text.empty()) {
         const Step exact{Key::E, StepValue{0.0}, -1, trace.result_real_text};
-        value = step_value_text(exact, vocabulary, trace.result_rgb ? "m" : "I_P", language, trace.header.real,
+        value = trace_step_value_text(exact, vocabulary, trace.result_rgb ? "m" : "I_P", language, trace.header.real,
                                 options.digits);
     }
     if (trace.samples) out += samples_text(*trace.samples, trace.header.spp, language);
@@ -360,7 +364,7 @@ std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, c
         out += wrap(message(language, "trace_first_non_finite"),
                     message(language, decides ? "trace_non_finite_decides" : "trace_non_finite_lesson",
                             {{"k", std::to_string(k + 1)},
-                             {"symbol", symbol_of(vocabulary, key, language)},
+                             {"symbol", trace_symbol(vocabulary, key, language)},
                              {"value", value_of(trace.steps[k].value, vocabulary, key, language)}}),
                     2);
     }
@@ -381,7 +385,7 @@ std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, c
 
 std::string value_of(const StepValue& value, const Vocabulary& vocabulary, const std::string& key, Language language,
                      int digits) {
-    return shown_value_text(value, kind_of(vocabulary, key), language, digits);
+    return shown_value_text(value, trace_kind(vocabulary, key), language, digits);
 }
 
 }  // namespace

@@ -1,0 +1,24 @@
+# The web page in a real browser (tests/web/page_test.mjs; included from
+# tests/CMakeLists.txt). The release pass only: it runs Debian's chromium
+# headless on pages the release promyk exports, and the sanitizers' promyk
+# would export the same bytes, slowly. Registered whenever the page is built;
+# CI builds with PROMYK_REQUIRE_WEB=ON, so there it is never missing.
+if(NOT PROMYK_SANITIZE AND PROMYK_WEB_PAGE_BUILT)
+  add_test(NAME web.page
+           COMMAND "${PROMYK_NODE}" "${CMAKE_CURRENT_SOURCE_DIR}/web/page_test.mjs" $<TARGET_FILE:promyk>
+                   "${PROMYK_NPM_MODULES}" "${PROJECT_SOURCE_DIR}/lessons" "${CMAKE_CURRENT_BINARY_DIR}/web/page")
+  set_tests_properties(web.page PROPERTIES TIMEOUT 300)
+endif()
+
+# promyk export's command line (tests/cli/export_test.sh): with the page, its
+# data and refusals; without it, the exit 4 that says what to install.
+if(PROMYK_WEB_PAGE_BUILT)
+  add_test(NAME cli.export COMMAND "${CMAKE_CURRENT_SOURCE_DIR}/cli/export_test.sh" $<TARGET_FILE:promyk>
+                                   "${CMAKE_CURRENT_BINARY_DIR}/cli/export")
+else()
+  add_test(NAME cli.export_without_web
+           COMMAND ${CMAKE_COMMAND} -DPROMYK=$<TARGET_FILE:promyk> "-DARGS=export" -DEXIT=4
+                   "-DSTDERR=built without the web page \\(missing at build time: .*\\); install them" -DEMPTY=ON
+                   -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/cli/export_without_web
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect.cmake)
+endif()

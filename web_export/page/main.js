@@ -1,0 +1,358 @@
+// The page: reads the data `promyk export` embedded, starts the tracer
+// (promyk's C++ in WebAssembly), and redraws every view from one state on
+// any change: the image, the derivation, the 3D view, the URL fragment.
+import { makeTracer } from './tracer.js';
+import { setMessages, t } from './words.js';
+import { defaultState, readFragment, writeFragment, rememberedLanguage, rememberLanguage, reals, formulas, spps } from './state.js';
+import { ImageView, patterns, drawPattern } from './image_view.js';
+import { Derivation } from './derivation.js';
+import { View3D } from './view3d.js';
+
+const $ = (id) => document.getElementById(id);
+
+function bytesOf(base64) {
+  const text = atob(base64 || '');
+  const bytes = new Uint8Array(text.length);
+  for (let k = 0; k < text.length; ++k) bytes[k] = text.charCodeAt(k);
+  return bytes;
+}
+
+const utf8 = (bytes) => new TextDecoder().decode(bytes);
+
+async function gunzip(bytes) {
+  const stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream('gzip'));
+  return new Uint8Array(await new Response(stream).arrayBuffer());
+}
+
+function showError(error) {
+  const text = error && error.message ? error.message : String(error);
+  // Before the tracer has given the page its words, the error alone.
+  const worded = t('page_error', { text });
+  $('status').textContent = worded === 'page_error' ? text : worded;
+  $('status').className = 'error';
+}
+
+async function start() {
+  const data = JSON.parse($('promyk-data').textContent);
+  data.image = bytesOf(data.image);
+  data.branchMap = bytesOf(data.branch_map);
+  // The wasm's bytes from their data block (gzip, build_page.mjs): nothing fetched.
+  const M = await createPromyk({ wasmBinary: await gunzip(bytesOf($('promyk-wasm').textContent)) }); // eslint-disable-line no-undef
+  const tracer = makeTracer(M);
+  const version = tracer.version();
+  const opened = tracer.openScene(utf8(bytesOf(data.scene_text)), data.scene_file || '', data.w);
+
+  const state = readFragment(defaultState(rememberedLanguage() || data.lang || 'en'), location.hash, data.w);
+  let messages = null;
+  let legend = null;
+  let traces = null; // the open trace file: {info, pixels: Set, name}
+  let current = null; // {text, view, geometry, fromFile}
+  let comparison = null;
+
+  const image = new ImageView($('image'), data, {
+    onSelect: (pixel) => {
+      state.pixel = pixel;
+      state.step = 0;
+      retrace();
+    },
+    onHover: (pixel) => {
+      if (!pixel) {
+        $('hover').textContent = '';
+        return;
+      }
+      const category = legend.categories.find((c) => c.index === image.category(pixel[0], pixel[1]));
+      $('hover').textContent = t('page_hover', {
+        i: pixel[0], j: pixel[1], value: image.grey(pixel[0], pixel[1]), branch: category ? category.name : '',
+      });
+    },
+  });
+  const derivation = new Derivation($('steps'), $('outcome'));
+  const view3d = new View3D($('view3d'), $('view-labels'));
+  view3d.setScene(opened.scene_content);
+
+  // The selected pixel's trace: the trace file's line when the file has the
+  // pixel (and its values are wanted), else computed live.
+  function retrace() {
+    current = null;
+    comparison = null;
+    if (state.pixel) {
+      const [i, j] = state.pixel;
+      try {
+        const fromFile = traces && state.useFile && traces.pixels.has(`${i},${j}`);
+        const text = fromFile ? tracer.traceFromFile(i, j) : tracer.trace(i, j, { real: state.real, formula: state.formula, spp: state.spp });
+        current = { text, fromFile };
+        if (state.compare && !fromFile) {
+          const [real, formula] = state.compare.split(',');
+          const other = tracer.trace(i, j, { real, formula, spp: state.spp });
+          comparison = { other, real, formula };
+        }
+        $('status').textContent = '';
+        $('status').className = '';
+      } catch (error) {
+        showError(error);
+      }
+    }
+    redrawTrace();
+  }
+
+  // Everything that depends on the trace and the language.
+  function redrawTrace() {
+    $('pick-hint').hidden = Boolean(current);
+    $('stepper').hidden = !current;
+    if (!current) {
+      derivation.container.replaceChildren();
+      derivation.outcome.replaceChildren();
+      $('comparison').replaceChildren();
+      $('source-note').textContent = '';
+      view3d.setPixel(null);
+      redraw();
+      return;
+    }
+    let view;
+    try {
+      view = tracer.view(current.text, { lang: state.lang, digits: 4 });
+      current.view = view;
+      current.geometry = tracer.view(current.text, { lang: 'en', digits: 0 });
+    } catch (error) {
+      current = null;
+      showError(error);
+      return redrawTrace();
+    }
+    const h = view.header;
+    $('derivation-heading').textContent = t('page_derivation', { i: h.i, j: h.j });
+    $('source-note').textContent = current.fromFile
+      ? t('page_from_file', { real: h.real, formula: h.formula, spp: h.spp })
+      : t('page_settings_live', { real: h.real, formula: h.formula, spp: h.spp });
+    derivation.show(view, state.full);
+    view3d.setPixel(current.geometry, data.w);
+    drawComparison();
+    state.step = Math.min(state.step, view.steps.length - 1);
+    redraw();
+  }
+
+  function drawComparison() {
+    const box = $('comparison');
+    box.replaceChildren();
+    if (!comparison || !current) return;
+    const result = tracer.compare(current.text, comparison.other, { lang: state.lang, digits: 4 });
+    const heading = document.createElement('h3');
+    const name = (s) => `${s.real}, ${s.formula}, spp ${s.spp}`;
+    heading.textContent = t('page_compare_heading', { a: name(result.a), b: name(result.b) });
+    const table = document.createElement('table');
+    for (const step of result.steps) {
+      const row = table.insertRow();
+      row.insertCell().textContent = step.symbol;
+      const marked = (text) => {
+        const cell = row.insertCell();
+        cell.className = 'number';
+        const bar = text.indexOf('|');
+        if (bar < 0) {
+          cell.textContent = text;
+          return;
+        }
+        const agree = document.createElement('mark');
+        agree.textContent = text.slice(0, bar);
+        cell.append(agree, text.slice(bar + 1));
+      };
+      marked(step.a_marked || step.a_full || '');
+      marked(step.b_marked || step.b_full || '');
+      row.insertCell().textContent = step.agree === -1 ? t('page_compare_equal') : step.agree === null ? '—' : t('page_compare_agree', { agree: step.agree });
+    }
+    box.append(heading, table);
+  }
+
+  // The views that depend on the state only (cheap): redrawn on any change.
+  function redraw() {
+    image.selected = state.pixel;
+    image.atlas = state.atlas;
+    image.draw();
+    $('zoom-label').textContent = `${t('page_zoom')} ${image.zoom}×`;
+    $('legend').hidden = !state.atlas;
+    $('atlas-toggle').checked = state.atlas;
+    $('full-digits').checked = state.full;
+    $('real').value = state.real;
+    $('formula').value = state.formula;
+    $('spp').value = String(state.spp);
+    $('compare').value = state.compare;
+    $('use-file').checked = state.useFile;
+    if (current && current.view) {
+      const n = current.view.steps.length;
+      state.step = Math.max(0, Math.min(state.step, n - 1));
+      $('step-counter').textContent = t('page_step_of', { k: state.step + 1, n });
+      $('step-first').disabled = $('step-prev').disabled = state.step === 0;
+      $('step-last').disabled = $('step-next').disabled = state.step === n - 1;
+      derivation.setStep(state.step);
+      view3d.setStep(current.geometry.steps[state.step], current.geometry);
+    }
+    writeFragment(state);
+  }
+
+  // The interface's words in the chosen language.
+  function applyLanguage() {
+    messages = tracer.messages(state.lang);
+    setMessages(messages.messages);
+    legend = tracer.legend(state.lang);
+    image.setLegend(legend.categories);
+    document.documentElement.lang = state.lang;
+    document.title = t('page_title');
+    const words = {
+      title: 'page_title', 'image-heading': 'page_image', 'atlas-label': 'page_atlas', 'legend-title': 'page_legend_title',
+      'traces-open': 'page_traces_open', 'traces-drop': 'page_traces_drop', 'use-file-label': 'page_traces_use_file',
+      'derivation-heading': 'page_derivation', 'pick-hint': 'page_pick_pixel', 'real-label': 'page_real',
+      'formula-label': 'page_formula', 'spp-label': 'page_spp', 'compare-label': 'page_compare',
+      'full-digits-label': 'page_full_digits', 'step-first': 'page_first', 'step-prev': 'page_prev',
+      'step-next': 'page_next', 'step-last': 'page_last', 'keys-hint': 'page_keys_hint', 'view-heading': 'page_view3d',
+      'view-hint': 'page_view3d_hint', notices: 'page_notices',
+    };
+    for (const [id, word] of Object.entries(words)) $(id).textContent = t(word, { i: '·', j: '·' });
+    $('scene-line').textContent = t('page_scene', { scene: opened.scene, w: data.w });
+    $('full-digits').parentElement.title = t('page_digits_hint');
+    $('lang-switch').setAttribute('aria-label', t('page_language'));
+    // Why the page has no long double, in the page's language when the
+    // tracer's messages word it (wasm_no_long_double), else as it says.
+    const why = t('wasm_no_long_double');
+    $('long-double-note').textContent = version.long_double ? '' : why !== 'wasm_no_long_double' ? why : version.long_double_why || '';
+    for (const button of document.querySelectorAll('#lang-switch button'))
+      button.setAttribute('aria-pressed', String(button.dataset.lang === state.lang));
+    fillSelect($('compare'), [['', t('page_compare_none')], ...reals.flatMap((r) => formulas.map((f) => [`${r},${f}`, `${r}, ${f}`]))]);
+    drawLegend();
+    if (traces) describeTraces();
+    redrawTrace();
+  }
+
+  function fillSelect(select, options) {
+    select.replaceChildren(...options.map(([value, label]) => {
+      const option = document.createElement('option');
+      option.value = value;
+      option.textContent = label;
+      return option;
+    }));
+  }
+
+  function drawLegend() {
+    const { first, count } = image.tally();
+    const list = $('legend-list');
+    list.replaceChildren();
+    for (const category of legend.categories) {
+      const item = document.createElement('li');
+      const swatch = document.createElement('canvas');
+      swatch.width = swatch.height = 18;
+      swatch.className = 'swatch';
+      const ctx = swatch.getContext('2d');
+      ctx.fillStyle = category.hex;
+      ctx.fillRect(0, 0, 18, 18);
+      ctx.strokeStyle = ctx.fillStyle = 'rgba(0,0,0,0.75)';
+      ctx.lineWidth = 2;
+      drawPattern(ctx, patterns[category.index], 0, 0, 18);
+      const name = document.createElement('span');
+      name.textContent = `${category.name} (${count.get(category.index) || 0})`;
+      const go = document.createElement('button');
+      go.type = 'button';
+      go.dataset.category = category.id;
+      go.title = t('page_goto_first_title');
+      const at = first.get(category.index);
+      go.textContent = at ? `${t('page_goto_first')} (${at[0]}, ${at[1]})` : t('page_none_of_kind');
+      go.disabled = !at;
+      go.addEventListener('click', () => {
+        state.pixel = at;
+        state.step = 0;
+        retrace();
+      });
+      item.append(swatch, ' ', name, ' ', go);
+      list.append(item);
+    }
+  }
+
+  function describeTraces() {
+    const info = traces.info;
+    $('traces-status').textContent = t('page_traces_loaded', {
+      file: traces.name, count: info.count, real: info.real, formula: info.formula, spp: info.spp,
+    });
+    $('use-file-row').hidden = false;
+  }
+
+  // A trace file (embedded by export, picked or dropped): read by the C++
+  // trace reader in the wasm; refused when of another scene or w.
+  function openTraces(bytes, name) {
+    try {
+      const info = tracer.openTraces(bytes);
+      if (info.w !== data.w) throw new Error(t('page_traces_other_w', { file_w: info.w, w: data.w }));
+      if (info.scene_hash !== opened.scene_hash)
+        throw new Error(t('page_traces_other_scene', { file_scene: info.scene, scene: opened.scene }));
+      traces = { info, name, pixels: new Set(info.pixels.map(([i, j]) => `${i},${j}`)) };
+      image.traced = traces.pixels;
+      describeTraces();
+      $('status').textContent = '';
+      retrace();
+    } catch (error) {
+      showError(error);
+    }
+  }
+
+  // --- controls ---
+  fillSelect($('real'), reals.map((r) => [r, r]));
+  fillSelect($('formula'), formulas.map((f) => [f, f]));
+  fillSelect($('spp'), spps.map((s) => [String(s), String(s)]));
+  $('real').addEventListener('change', (e) => { state.real = e.target.value; retrace(); });
+  $('formula').addEventListener('change', (e) => { state.formula = e.target.value; retrace(); });
+  $('spp').addEventListener('change', (e) => { state.spp = Number(e.target.value); retrace(); });
+  $('compare').addEventListener('change', (e) => { state.compare = e.target.value; retrace(); });
+  $('use-file').addEventListener('change', (e) => { state.useFile = e.target.checked; retrace(); });
+  $('full-digits').addEventListener('change', (e) => {
+    state.full = e.target.checked;
+    derivation.setFull(state.full);
+    redraw();
+  });
+  $('atlas-toggle').addEventListener('change', (e) => { state.atlas = e.target.checked; redraw(); });
+  $('zoom-in').addEventListener('click', () => { image.setZoom(image.zoom * 2); redraw(); });
+  $('zoom-out').addEventListener('click', () => { image.setZoom(Math.floor(image.zoom / 2)); redraw(); });
+  for (const button of document.querySelectorAll('#lang-switch button'))
+    button.addEventListener('click', () => {
+      state.lang = button.dataset.lang;
+      rememberLanguage(state.lang);
+      applyLanguage();
+    });
+  const step = (to) => {
+    if (!current || !current.view) return;
+    state.step = Math.max(0, Math.min(to, current.view.steps.length - 1));
+    redraw();
+  };
+  $('step-first').addEventListener('click', () => step(0));
+  $('step-prev').addEventListener('click', () => step(state.step - 1));
+  $('step-next').addEventListener('click', () => step(state.step + 1));
+  $('step-last').addEventListener('click', () => step(Infinity));
+  document.addEventListener('keydown', (event) => {
+    const focus = document.activeElement;
+    if (focus && (/^(INPUT|SELECT|TEXTAREA)$/.test(focus.tagName) || focus === $('image') || focus === $('view3d'))) return;
+    if (event.altKey || event.ctrlKey || event.metaKey) return;
+    const keys = { ArrowLeft: () => step(state.step - 1), ArrowRight: () => step(state.step + 1), Home: () => step(0), End: () => step(Infinity) };
+    if (!keys[event.key]) return;
+    event.preventDefault();
+    keys[event.key]();
+  });
+  $('traces-input').addEventListener('change', async (event) => {
+    const file = event.target.files[0];
+    if (file) openTraces(new Uint8Array(await file.arrayBuffer()), file.name);
+  });
+  const frame = $('image-frame');
+  frame.addEventListener('dragover', (event) => event.preventDefault());
+  frame.addEventListener('drop', async (event) => {
+    event.preventDefault();
+    const file = event.dataTransfer.files[0];
+    if (file) openTraces(new Uint8Array(await file.arrayBuffer()), file.name);
+  });
+  window.addEventListener('hashchange', () => {
+    const before = JSON.stringify(state);
+    readFragment(state, location.hash, data.w);
+    if (JSON.stringify(state) !== before) applyLanguage();
+  });
+
+  $('status').textContent = '';
+  applyLanguage();
+  if (data.traces) openTraces(bytesOf(data.traces), data.traces_file);
+  else retrace();
+  document.body.dataset.readyMs = String(performance.now());
+  document.body.dataset.ready = 'true';
+}
+
+start().catch(showError);

@@ -1,0 +1,85 @@
+// The page's state, kept in the URL fragment (#p=3,4&s=16&lang=pl&...) so a
+// link reopens the same view; the language is also remembered in the
+// browser. Every view is redrawn from this one state.
+export const reals = ['float', 'double', 'quad'];
+export const formulas = ['article', 'stable', 'fma', 'geometric'];
+export const spps = [1, 4, 9, 16, 64];
+
+export function defaultState(lang) {
+  return {
+    pixel: null, // [i, j]
+    step: 0, // 0-based index into the derivation's steps
+    lang,
+    atlas: false,
+    real: 'double',
+    formula: 'article',
+    spp: 1,
+    compare: '', // "quad,geometric" or ""
+    full: false,
+    useFile: true,
+  };
+}
+
+// Reads the fragment over `state`; values that make no sense are ignored.
+export function readFragment(state, hash, w) {
+  const params = new URLSearchParams(hash.replace(/^#/, ''));
+  const p = params.get('p');
+  if (p && /^\d+,\d+$/.test(p)) {
+    const [i, j] = p.split(',').map(Number);
+    if (i < w && j < w) state.pixel = [i, j];
+  }
+  const s = params.get('s');
+  if (s && /^\d+$/.test(s)) state.step = Number(s);
+  const lang = params.get('lang');
+  if (lang === 'pl' || lang === 'en') state.lang = lang;
+  if (params.get('atlas') === '1') state.atlas = true;
+  const real = params.get('real');
+  if (reals.includes(real)) state.real = real;
+  const formula = params.get('formula');
+  if (formulas.includes(formula)) state.formula = formula;
+  const spp = Number(params.get('spp'));
+  if (spps.includes(spp)) state.spp = spp;
+  const compare = params.get('cmp');
+  if (compare) {
+    const [r, f] = compare.split(',');
+    if (reals.includes(r) && formulas.includes(f)) state.compare = `${r},${f}`;
+  }
+  if (params.get('full') === '1') state.full = true;
+  if (params.get('file') === '0') state.useFile = false;
+  return state;
+}
+
+export function writeFragment(state) {
+  const params = new URLSearchParams();
+  if (state.pixel) {
+    params.set('p', state.pixel.join(','));
+    params.set('s', String(state.step));
+  }
+  params.set('lang', state.lang);
+  if (state.atlas) params.set('atlas', '1');
+  if (state.real !== 'double') params.set('real', state.real);
+  if (state.formula !== 'article') params.set('formula', state.formula);
+  if (state.spp !== 1) params.set('spp', String(state.spp));
+  if (state.compare) params.set('cmp', state.compare);
+  if (state.full) params.set('full', '1');
+  if (!state.useFile) params.set('file', '0');
+  const hash = '#' + params.toString().replace(/%2C/g, ',');
+  if (location.hash !== hash) history.replaceState(null, '', hash);
+}
+
+export function rememberedLanguage() {
+  try {
+    const lang = localStorage.getItem('promyk.lang');
+    return lang === 'pl' || lang === 'en' ? lang : null;
+  } catch {
+    return null; // storage refused (a private window, a strict setting)
+  }
+}
+
+export function rememberLanguage(lang) {
+  try {
+    localStorage.setItem('promyk.lang', lang);
+  } catch {
+    // not remembered: the fragment still carries it
+  }
+}

@@ -1,0 +1,67 @@
+// The tracer: promyk's C++ compiled to WebAssembly (web_export/wasm/API.md).
+// Every call returns a JSON text; a failure is {"error", "code"}, thrown here
+// as a TracerError. Text arguments are copied into the module's heap (a
+// scene may be 1 MiB, more than ccall's stack copy should carry).
+
+export class TracerError extends Error {
+  constructor(message, code) {
+    super(message);
+    this.code = code;
+  }
+}
+
+export function makeTracer(M) {
+  const withText = (text, use) => {
+    const size = M.lengthBytesUTF8(text) + 1;
+    const at = M._malloc(size);
+    try {
+      M.stringToUTF8(text, at, size);
+      return use(at, size - 1);
+    } finally {
+      M._free(at);
+    }
+  };
+  const checked = (text) => {
+    const value = JSON.parse(text);
+    if (value && typeof value === 'object' && 'error' in value) throw new TracerError(String(value.error), value.code);
+    return value;
+  };
+  const callText = (name, texts, numbers = []) => {
+    const go = (pointers) =>
+      M.ccall(name, 'string', [...numbers.map(() => 'number'), ...pointers.map(() => 'number')],
+        [...numbers, ...pointers]);
+    const nest = (k, pointers) => (k === texts.length ? go(pointers) : withText(texts[k], (at) => nest(k + 1, [...pointers, at])));
+    return nest(0, []);
+  };
+  return {
+    version: () => checked(M.ccall('promyk_version', 'string', [], [])),
+    openScene: (sceneText, sceneFile, w) =>
+      checked(withText(sceneText, (a) => withText(sceneFile, (b) =>
+        M.ccall('promyk_open_scene', 'string', ['number', 'number', 'number'], [a, b, w])))),
+    // The trace's own text (what `promyk trace --format json` prints).
+    trace(i, j, settings) {
+      const text = callText('promyk_trace', [JSON.stringify(settings)], [i, j]);
+      checked(text);
+      return text;
+    },
+    view: (traceText, view) => checked(callText('promyk_view', [traceText, JSON.stringify(view)])),
+    compare: (a, b, view) => checked(callText('promyk_compare', [a, b, JSON.stringify(view)])),
+    openTraces(bytes) {
+      const at = M._malloc(bytes.length + 1);
+      try {
+        M.HEAPU8.set(bytes, at);
+        M.HEAPU8[at + bytes.length] = 0;
+        return checked(M.ccall('promyk_open_traces', 'string', ['number', 'number'], [at, bytes.length]));
+      } finally {
+        M._free(at);
+      }
+    },
+    traceFromFile(i, j) {
+      const text = M.ccall('promyk_trace_from_file', 'string', ['number', 'number'], [i, j]);
+      checked(text);
+      return text;
+    },
+    legend: (lang) => checked(callText('promyk_legend', [lang])),
+    messages: (lang) => checked(callText('promyk_messages', [lang])),
+  };
+}

@@ -1,0 +1,199 @@
+// The web page's tracer (promyk's C++ compiled to wasm) traces every pixel
+// exactly as the CLI does: for the article's scene and
+// lessons/scenes/everything.json (planes, shadows, Phong, colour), a sample
+// of pixels of every branch and every object hit, in float, double and
+// quad, with every formula, at 1 and 4 samples per pixel, promyk_trace's
+// text equals `promyk trace --format json` of the native binary byte for
+// byte (every field: real_text, digits_lost, ...). Also: a trace file of
+// `render --traces` read by the wasm's trace reader gives back its lines,
+// long double is refused, and the view model formats numbers as the CLI.
+//
+//   node wasm_equals_native.mjs --module build/.../promyk.js --promyk build/release/promyk
+//   (run from the source root; --tamper changes one wasm result on purpose,
+//   to see the comparison fail)
+import { createRequire } from 'node:module';
+import { execFileSync } from 'node:child_process';
+import { statSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, resolve } from 'node:path';
+import { gunzipSync } from 'node:zlib';
+import { performance } from 'node:perf_hooks';
+
+const args = process.argv.slice(2);
+const option = (name) => {
+  const k = args.indexOf(name);
+  return k >= 0 ? args[k + 1] : undefined;
+};
+const modulePath = option('--module') && resolve(option('--module'));
+const promyk = option('--promyk');
+const tamper = args.includes('--tamper');
+if (!modulePath || !promyk) {
+  console.error('usage: node wasm_equals_native.mjs --module PROMYK_JS --promyk PROMYK [--gz WASM_GZ --glue GLUE_JS] [--tamper]');
+  process.exit(2);
+}
+
+let failures = 0;
+const fail = (what) => {
+  failures += 1;
+  if (failures <= 10) console.error('FAIL: ' + what);
+};
+
+// ---- the module -----------------------------------------------------------
+const require = createRequire(import.meta.url);
+const started = performance.now();
+const createPromyk = require(modulePath);
+const M = await createPromyk();
+const instantiated = performance.now() - started;
+const call = (name, types, values) => M.ccall(name, 'string', types, values);
+const json = (name, types, values) => JSON.parse(call(name, types, values));
+
+const native = (cliArgs) =>
+  execFileSync(promyk, cliArgs, { encoding: 'utf8', maxBuffer: 1 << 26, stdio: ['ignore', 'pipe', 'pipe'] });
+
+// ---- the cases ------------------------------------------------------------
+const scenes = [
+  { text: '', file: '', cli: [], w: 8 },
+  { text: '', file: '', cli: [], w: 33 },  // odd: a centre column and row (zeros, -0)
+  { text: readFileSync('lessons/scenes/everything.json', 'utf8'), file: 'lessons/scenes/everything.json',
+    cli: ['--scene', 'lessons/scenes/everything.json'], w: 24 },
+];
+const reals = ['float', 'double', 'quad'];
+const formulas = ['article', 'stable', 'fma', 'geometric'];
+const spps = [1, 4];
+
+let compared = 0;
+let firstTraceMs = null;
+for (const scene of scenes) {
+  const opened = json('promyk_open_scene', ['string', 'string', 'number'], [scene.text, scene.file, scene.w]);
+  if (opened.error) {
+    fail(`open_scene ${scene.file || 'article'}: ${opened.error}`);
+    continue;
+  }
+  // Every pixel in double: the sample takes up to two pixels of each
+  // branch and of each object hit (the first and the last in row order).
+  const kinds = new Map();
+  for (let i = 0; i < scene.w; ++i)
+    for (let j = 0; j < scene.w; ++j) {
+      const t0 = performance.now();
+      const trace = JSON.parse(call('promyk_trace', ['number', 'number', 'string'], [i, j, '{}']));
+      if (firstTraceMs === null) firstTraceMs = performance.now() - t0;
+      for (const kind of [`branch ${trace.branch}`, `hit ${trace.hit ?? 'none'}`]) {
+        if (!kinds.has(kind)) kinds.set(kind, []);
+        kinds.get(kind).push([i, j]);
+      }
+    }
+  const sample = new Map();
+  for (const pixels of kinds.values())
+    for (const p of [pixels[0], pixels[pixels.length - 1]]) sample.set(p.join(','), p);
+  const branches = [...kinds.keys()].filter((k) => k.startsWith('branch')).join(', ');
+  console.log(`${scene.file || 'article'} w=${scene.w}: ${sample.size} pixels (${branches})`);
+  for (const [i, j] of sample.values())
+    for (const real of reals)
+      for (const formula of formulas)
+        for (const spp of spps) {
+          const settings = JSON.stringify({ real, formula, spp });
+          let mine = call('promyk_trace', ['number', 'number', 'string'], [i, j, settings]);
+          if (tamper && compared === 7) mine = mine.replace(/\d(?=")/, (d) => String((Number(d) + 1) % 10));
+          const theirs = native(['trace', '--format', 'json', '--pixel', `${i},${j}`, '--w', String(scene.w),
+                                 '--real', real, '--formula', formula, '--spp', String(spp), ...scene.cli]);
+          compared += 1;
+          if (mine + '\n' !== theirs) {
+            let k = 0;
+            while (k < mine.length && mine[k] === theirs[k]) ++k;
+            fail(`${scene.file || 'article'} w=${scene.w} (${i},${j}) ${settings}: differs at byte ${k}:\n` +
+                 `  wasm:   …${mine.slice(Math.max(0, k - 60), k + 60)}\n` +
+                 `  native: …${theirs.slice(Math.max(0, k - 60), k + 60)}`);
+          }
+        }
+}
+console.log(`${compared} traces compared`);
+if (compared < 300) fail(`only ${compared} traces compared`);
+
+// ---- long double is refused, with the reason ------------------------------
+json('promyk_open_scene', ['string', 'string', 'number'], ['', '', 8]);
+const refused = json('promyk_trace', ['number', 'number', 'string'], [3, 4, '{"real":"long-double"}']);
+if (refused.code !== 2 || !/long double/.test(refused.error)) fail('long double not refused: ' + JSON.stringify(refused));
+const outside = json('promyk_trace', ['number', 'number', 'string'], [8, 0, '{}']);
+if (outside.code !== 2) fail('a pixel outside the pane not refused: ' + JSON.stringify(outside));
+const badScene = json('promyk_open_scene', ['string', 'string', 'number'], ['{"spheres": 3}', 'bad.json', 8]);
+if (badScene.code !== 3 || !badScene.error.startsWith('bad.json: ')) fail('a bad scene not refused: ' + JSON.stringify(badScene));
+
+// ---- a trace file read by the wasm's trace reader -------------------------
+const dir = mkdtempSync(join(tmpdir(), 'promyk-wasm-'));
+try {
+  const tracesPath = join(dir, 'traces.jsonl');
+  native(['render', '--scene', 'lessons/scenes/everything.json', '--w', '12', '--real', 'quad', '--spp', '4',
+          '--trace-region', '2,3,5,7', '--traces', tracesPath, '-o', join(dir, 'image.png')]);
+  const bytes = readFileSync(tracesPath);
+  const lines = bytes.toString('utf8').split('\n').filter((line) => line.length > 0);
+  const pointer = M._malloc(bytes.length);
+  M.HEAPU8.set(bytes, pointer);
+  const file = json('promyk_open_traces', ['number', 'number'], [pointer, bytes.length]);
+  M._free(pointer);
+  if (file.error) fail('open_traces: ' + file.error);
+  else {
+    if (file.count !== lines.length || file.w !== 12 || file.real !== 'quad' || file.spp !== 4)
+      fail('open_traces summary: ' + JSON.stringify({ ...file, pixels: undefined }));
+    lines.forEach((line, k) => {
+      const [i, j] = file.pixels[k];
+      if (call('promyk_trace_from_file', ['number', 'number'], [i, j]) !== line) fail(`trace_from_file (${i},${j})`);
+    });
+    // The reader reads what the writer writes: viewing a line of the file works.
+    const view = json('promyk_view', ['string', 'string'], [lines[0], '{"lang":"pl","digits":4}']);
+    if (view.error || view.steps.length === 0) fail('view of a file line: ' + (view.error ?? 'no steps'));
+  }
+  const broken = json('promyk_open_traces', ['string', 'number'], ['{"schema":1}\n', 13]);
+  if (broken.code !== 3) fail('a broken trace file not refused: ' + JSON.stringify(broken));
+} finally {
+  rmSync(dir, { recursive: true, force: true });
+}
+
+// ---- the view model: numbers as the CLI's formatter writes them -----------
+json('promyk_open_scene', ['string', 'string', 'number'], ['', '', 8]);
+const quadTrace = call('promyk_trace', ['number', 'number', 'string'], [3, 4, '{"real":"quad"}']);
+const view = json('promyk_view', ['string', 'string'], [quadTrace, '{"lang":"pl","digits":4}']);
+// The CLI's text trace with its wrapped lines joined (a vector breaks after "; ").
+const unwrap = (text) => text.replace(/;\n +/g, '; ');
+const text = unwrap(native(['--lang', 'pl', 'trace', '--pixel', '3,4', '--w', '8', '--real', 'quad']));
+for (const step of view.steps)
+  if (!text.includes('= ' + step.value_full)) fail(`view: step ${step.path} = ${step.value_full} is not in the CLI's text trace`);
+const text4 = unwrap(native(['--lang', 'pl', '--digits', '4', 'trace', '--pixel', '3,4', '--w', '8', '--real', 'quad']));
+for (const step of view.steps)
+  if (!text4.includes('= ' + step.value_shown)) fail(`view: step ${step.path} = ${step.value_shown} is not in the CLI's --digits 4 trace`);
+if (!text4.includes('= ' + view.I_P_shown + '\n') || !/^0,\d{4}$/.test(view.I_P_shown)) fail('view: I_P_shown ' + view.I_P_shown);
+const legend = json('promyk_legend', ['string'], ['en']);
+if (legend.categories?.length !== 7 || legend.categories[0].id !== 'miss') fail('legend: ' + JSON.stringify(legend));
+
+// ---- the split module (wasm gzip-compressed + glue) traces the same -------
+const gz = option('--gz'), glue = option('--glue');
+if (gz && glue) {
+  const createFromParts = require(resolve(glue));
+  const P = await createFromParts({ wasmBinary: gunzipSync(readFileSync(gz)) });
+  const none = P.ccall('promyk_trace', 'string', ['number', 'number', 'string'], [3, 4, '{}']);
+  if (none !== '{"error":"No scene is open yet.","code":2}') fail('the split module, no scene: ' + none);
+  P.ccall('promyk_open_scene', 'string', ['string', 'string', 'number'], ['', '', 8]);
+  for (const settings of ['{}', '{"real":"quad","formula":"fma","spp":4}']) {
+    const one = M.ccall('promyk_trace', 'string', ['number', 'number', 'string'], [3, 4, settings]);
+    const other = P.ccall('promyk_trace', 'string', ['number', 'number', 'string'], [3, 4, settings]);
+    if (other !== one) fail('the split module: ' + settings);
+  }
+  console.log(`split module: wasm.gz ${statSync(gz).size} bytes, glue ${statSync(glue).size} bytes`);
+}
+
+// ---- figures ---------------------------------------------------------------
+const t0 = performance.now();
+const N = 20;
+for (let k = 0; k < N; ++k) call('promyk_trace', ['number', 'number', 'string'], [3, 4, '{"real":"quad"}']);
+const quadMs = (performance.now() - t0) / N;
+const t1 = performance.now();
+for (let k = 0; k < N; ++k) call('promyk_trace', ['number', 'number', 'string'], [3, 4, '{}']);
+const doubleMs = (performance.now() - t1) / N;
+console.log(`module ${statSync(modulePath).size} bytes; instantiated in ${instantiated.toFixed(0)} ms; ` +
+            `first trace ${firstTraceMs.toFixed(1)} ms; one pixel (article, w=8): double ${doubleMs.toFixed(2)} ms, ` +
+            `quad ${quadMs.toFixed(2)} ms`);
+
+if (failures > 0) {
+  console.error(`${failures} failure(s)`);
+  process.exit(1);
+}
+console.log('ok');
