@@ -3,6 +3,7 @@
 // group and branch; trace files line by line; faults refused with where.
 #include <catch2/catch.hpp>
 
+#include <random>
 #include <string>
 
 #include "render/trace_pixel.hpp"
@@ -77,4 +78,30 @@ TEST_CASE("a trace file is read line by line, and its faults are refused with th
     unknown_key.replace(unknown_key.find("\"key\":\"E\""), 9, "\"key\":\"Z\"");
     CHECK(where(unknown_key).rfind("t.jsonl: line 1, /steps/", 0) == 0);
     CHECK(where(std::string(max_trace_file_bytes + 1, ' ')) == "t.jsonl: ");
+}
+
+TEST_CASE("a damaged trace is read or refused as a bad input, never anything else", "[trace][read]") {
+    const Scene scene = load_scene_file(PROMYK_SOURCE_DIR "/lessons/scenes/everything.json");
+    const std::string good = json_of(trace_pixel(scene, 8, 5, 6, RealType::quad_, Formula::stable, 4));
+    std::mt19937 rng(16);
+    const std::string alphabet = "0123456789-+.eE[]{},:\"nultrfa \\x";
+    int refused = 0;
+    for (int n = 0; n < 3000; ++n) {
+        std::string text = good;
+        for (int k = 1 + static_cast<int>(rng() % 3); k > 0; --k) {
+            const std::size_t at = rng() % text.size();
+            switch (rng() % 3) {
+                case 0: text[at] = alphabet[rng() % alphabet.size()]; break;
+                case 1: text.erase(at, 1 + rng() % 8); break;
+                default: text.insert(at, 1, alphabet[rng() % alphabet.size()]);
+            }
+        }
+        try {
+            const PixelTrace trace = read_trace_json(text, "(test)");
+            json_of(trace);  // what is read can be written
+        } catch (const InputError&) {
+            ++refused;
+        }
+    }
+    CHECK(refused > 1000);
 }

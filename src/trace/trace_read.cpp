@@ -113,8 +113,10 @@ struct Reader {
         return {c[0], c[1], c[2]};
     }
 
-    void steps(const json& list, const std::string& pointer, int parent, PixelTrace& trace) const {
+    void steps(const json& list, const std::string& pointer, int parent, PixelTrace& trace, int depth = 0) const {
         if (!list.is_array()) bad(pointer, "not a list");
+        // Groups nest a sample, a light, an object: a few levels at most.
+        if (depth > 8) bad(pointer, "groups nested too deep");
         for (std::size_t k = 0; k < list.size(); ++k) {
             const json& item = list[k];
             const std::string at = pointer + "/" + std::to_string(k);
@@ -127,7 +129,7 @@ struct Reader {
                 group.index = integer(item, "index", at, 0, 1 << 20);
                 group.parent = parent;
                 trace.groups.push_back(group);
-                steps(field(item, "steps", at), at + "/steps", static_cast<int>(trace.groups.size()) - 1, trace);
+                steps(field(item, "steps", at), at + "/steps", static_cast<int>(trace.groups.size()) - 1, trace, depth + 1);
                 continue;
             }
             Step step;
@@ -262,7 +264,7 @@ struct Reader {
 json parse_json(std::string_view text, const Reader& reader) {
     try {
         return json::parse(negative_zeros_as_floats(text));
-    } catch (const json::parse_error& e) {
+    } catch (const json::exception& e) {  // a syntax error, a number too large for a double
         reader.fail("", ui_message("trace_read_not_trace", {{"problem", e.what()}}));
     }
 }

@@ -161,6 +161,23 @@ const text4 = unwrap(native(['--lang', 'pl', '--digits', '4', 'trace', '--pixel'
 for (const step of view.steps)
   if (!text4.includes('= ' + step.value_shown)) fail(`view: step ${step.path} = ${step.value_shown} is not in the CLI's --digits 4 trace`);
 if (!text4.includes('= ' + view.I_P_shown + '\n') || !/^0,\d{4}$/.test(view.I_P_shown)) fail('view: I_P_shown ' + view.I_P_shown);
+// compare: A's texts marked where they stop agreeing with B, as `trace --compare`.
+const floatTrace = call('promyk_trace', ['number', 'number', 'string'], [3, 4, '{"real":"float"}']);
+const comparison = json('promyk_compare', ['string', 'string', 'string'], [floatTrace, quadTrace, '{"lang":"en"}']);
+const table = native(['trace', '--compare', 'float,quad', '--pixel', '3,4', '--w', '8']).replace(/\u2212/g, '-');
+let marks = 0;
+for (const step of comparison.steps ?? []) {
+  if (step.kind !== 'scalar' || step.agree === null) continue;
+  const marked = step.a_marked.replace(/\u2212/g, '-');
+  if (!table.includes(`float  ${marked}  `)) fail(`compare: ${step.path} ${marked} is not in trace --compare`);
+  if (marked.includes('|')) marks += 1;
+}
+if (marks < 3) fail(`compare: only ${marks} marked steps`);
+// messages: every id in both languages, the page's words from the CLI's files.
+const pl = json('promyk_messages', ['string'], ['pl']), en = json('promyk_messages', ['string'], ['en']);
+const ids = (m) => Object.keys(m.messages ?? {}).sort().join(',');
+if (ids(pl) !== ids(en) || Object.keys(pl.messages).length < 300) fail('messages: ids differ or too few');
+if (pl.messages.branch_name_lit !== 'strona oświetlona' || pl.vocabulary?.delta?.symbol !== 'Δ/4') fail('messages: words');
 const legend = json('promyk_legend', ['string'], ['en']);
 if (legend.categories?.length !== 7 || legend.categories[0].id !== 'miss') fail('legend: ' + JSON.stringify(legend));
 
