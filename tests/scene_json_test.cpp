@@ -3,6 +3,7 @@
 
 #include <cerrno>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <csignal>
 #include <cstdint>
@@ -799,11 +800,14 @@ std::string many_members(std::size_t count, const std::string& first) {
 void check_rejected_in_time(const std::string& text, const std::string& where,
                             std::initializer_list<const char*> words) {
     REQUIRE(text.size() <= promyk::max_scene_file_bytes);
-    const auto start = std::chrono::steady_clock::now();
+    // Processor time, not wall-clock time: a busy machine does not count.
+    const std::clock_t start = std::clock();
     check_rejected(text, where, words);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    INFO("bytes: " << text.size() << ", seconds: " << seconds);
-    CHECK(seconds < 10);  // a bound for slow (sanitizer) builds, not a speed claim
+    const double seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
+    INFO("bytes: " << text.size() << ", CPU seconds: " << seconds);
+    // A bound for slow (sanitizer) builds, not a speed claim: the quadratic
+    // cost this guards against took 39.5 s a MiB in a release build.
+    CHECK(seconds < 20);
 }
 
 }  // namespace

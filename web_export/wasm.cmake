@@ -60,10 +60,15 @@ list(APPEND promyk_wasm_inputs "${PROJECT_SOURCE_DIR}/cmake/embed_files.cmake" "
 # em++ 3.1.6 from Debian runs its tools with node and needs Debian's node
 # modules; the native build's compiler launcher (ccache) is not em++'s.
 set(promyk_wasm_env "${CMAKE_COMMAND}" -E env --unset=CMAKE_CXX_COMPILER_LAUNCHER NODE_PATH=/usr/share/nodejs)
+# A compiler launcher the native build uses (ccache) serves em++ too; none by default.
+set(promyk_wasm_launcher)
+if(CMAKE_CXX_COMPILER_LAUNCHER)
+  set(promyk_wasm_launcher "-DCMAKE_CXX_COMPILER_LAUNCHER=${CMAKE_CXX_COMPILER_LAUNCHER}")
+endif()
 add_custom_command(
   OUTPUT "${PROMYK_WASM_JS}" "${PROMYK_WASM_GZ}" "${PROMYK_WASM_GLUE_JS}"
   COMMAND ${promyk_wasm_env} "${PROMYK_EMCMAKE}" "${CMAKE_COMMAND}" -S "${CMAKE_CURRENT_LIST_DIR}/wasm"
-          -B "${promyk_wasm_dir}" -DCMAKE_BUILD_TYPE=Release "-DPROMYK_VERSION=${PROJECT_VERSION}"
+          -B "${promyk_wasm_dir}" -DCMAKE_BUILD_TYPE=Release "-DPROMYK_VERSION=${PROJECT_VERSION}" ${promyk_wasm_launcher}
   # Two jobs at most: em++ is slow and the machine small.
   COMMAND ${promyk_wasm_env} "${CMAKE_COMMAND}" --build "${promyk_wasm_dir}" -j2
   COMMAND "${PROMYK_NODE}" "${CMAKE_CURRENT_LIST_DIR}/wasm/split_module.mjs" "${PROMYK_WASM_JS}" "${PROMYK_WASM_GZ}"
