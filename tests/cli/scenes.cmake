@@ -34,7 +34,7 @@ promyk_cli_test(scene_check_hidden ARGS scene check ${scenes}/hidden_sphere.json
 
 # The stages: what runs, what is skipped and why.
 promyk_cli_test(scene_check_everything ARGS scene check ${PROJECT_SOURCE_DIR}/lessons/scenes/everything.json EXIT 0
-                STDOUT "3 spheres, 1 plane, 2 lights, 4 materials; shadows on\n.*plane 0: Q = \\(0, −1.1, 0\\), n = \\(0, 1, 0\\), material 3\n.*the engine runs.*  - nearest: .*every object is tested; the nearest hit wins .*  - shadows: .*  - phong: .*  - colour: ")
+                STDOUT "3 spheres, 1 plane, 2 lights, 4 materials. shadows on\n.*plane 0: Q = \\(0, −1.1, 0\\), n = \\(0, 1, 0\\), material 3\n.*the engine runs.*  - nearest: .*every object is tested; the nearest hit wins .*  - shadows: .*  - phong: .*  - colour: ")
 # In Polish, every word and number of the report is Polish: decimal commas,
 # ';' between a point's coordinates (CMake splits a regex at ';': '.' stands for it).
 promyk_cli_test(scene_check_everything_polish ARGS --lang pl scene check ${PROJECT_SOURCE_DIR}/lessons/scenes/everything.json EXIT 0
