@@ -47,7 +47,7 @@ promyk_cli_test(scene_two_boms ARGS trace --scene ${scenes}/two_byte_order_marks
 
 # The trace speaks the lesson's languages.
 promyk_cli_test(trace_polish ARGS trace --lang pl EXIT 0
-                STDOUT "^piksel \\(i, j\\) = \\(3, 4\\) szyby 8 × 8; scena „article” \\(wbudowana\\).*dane: z_E = 2; S = \\(0; 0; 3,2\\).*= 4,557812500000004\n.*gałąź: lit — strona oświetlona.*poziom szarości: 177 z 255")
+                STDOUT "^piksel \\(i, j\\) = \\(3, 4\\) szyby 8 × 8; scena „article” \\(wbudowana\\).*dane: z_E = 2; S = \\(0; 0; 3,2\\).*= 4,557812500000004\n.*gałąź: strona oświetlona — .*poziom szarości: 177 z 255")
 promyk_cli_test(trace_explain ARGS trace --explain --lang en --pixel 0,0 EXIT 0
                 STDOUT "delta +Δ/4 = C² − \\|E\\|²·\\(\\|S\\|² − r²\\)\n +the quadratic's discriminant divided by 4")
 promyk_cli_test(trace_bad_lang ARGS trace --lang de EXIT 2 STDERR "--lang")
@@ -56,7 +56,7 @@ promyk_cli_test(trace_bad_lang ARGS trace --lang de EXIT 2 STDERR "--lang")
 promyk_cli_test(lesson_list ARGS lesson --lang en EXIT 0 STDOUT "^Lessons \\(promyk lesson NAME\\):\n +vectors .*pane .*sphere .*lambert .*program ")
 promyk_cli_test(lesson_list_polish ARGS lesson --list --lang pl EXIT 0 STDOUT "^Lekcje \\(promyk lesson NAZWA\\):")
 promyk_cli_test(lesson_check ARGS lesson --check --lang en EXIT 0 STDOUT "lessons checked: 22; all is well")
-promyk_cli_test(lesson_unknown ARGS lesson nosuch EXIT 2 STDERR "no lesson 'nosuch'; the lessons are vectors, pane, sphere, lambert, program")
+promyk_cli_test(lesson_unknown ARGS lesson nosuch EXIT 2 STDERR "no lesson 'nosuch'. The lessons: vectors, pane, sphere, lambert, program, spheres, lights, planes, shadows, phong, precision")
 promyk_cli_test(lesson_sphere ARGS lesson sphere --lang en --pixel 3,4 --pixel 0,0 EXIT 0
                 STDOUT "^Lesson: .*pixels: \\(3, 4\\), \\(0, 0\\).*Step 1 of 7: .*Step 7 of 7")
 promyk_cli_test(lesson_markdown ARGS lesson program --lang pl --format markdown EXIT 0

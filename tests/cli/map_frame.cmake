@@ -1,7 +1,9 @@
 # render --labels, --legend and --range (tests/image_frame_test.cpp checks the pixels).
 # Each test fixes the language through LC_ALL: the messages are the run's language's.
 function(promyk_cli_test_in language name)
-  promyk_cli_test(${name} ${ARGN})
+  # Forwarded through PARSE_ARGV so that a ';' inside a regex survives (see promyk_cli_test).
+  cmake_parse_arguments(PARSE_ARGV 2 W "" "" "")
+  promyk_cli_test(${name} ${W_UNPARSED_ARGUMENTS})
   set(locale C)
   if(language STREQUAL "pl")
     set(locale pl_PL.UTF-8)
