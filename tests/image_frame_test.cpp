@@ -17,7 +17,7 @@
 #include "image/framed_writer.hpp"
 #include "image/legend.hpp"
 #include "image/pane_labels.hpp"
-#include "render/image_writer.hpp"
+#include "image/image_writer.hpp"
 #include "render/map_legend.hpp"
 #include "render/maps.hpp"
 #include "render/renderer.hpp"

@@ -21,7 +21,7 @@
 
 #include "image/canvas.hpp"
 #include "image/grid_contrast.hpp"
-#include "render/image_writer.hpp"
+#include "image/image_writer.hpp"
 #include "util/atomic_file.hpp"
 #include "util/errors.hpp"
 #include "temp_dir.hpp"

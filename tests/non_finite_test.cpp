@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "render/quantize.hpp"
+#include "image/quantize.hpp"
 #include "render/renderer.hpp"
 #include "render/trace_pixel.hpp"
 

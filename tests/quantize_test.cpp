@@ -1,4 +1,4 @@
-// to_byte (src/render/quantize.hpp) against an independent computation of
+// to_byte (src/image/quantize.hpp) against an independent computation of
 // the rule of docs/conventions.md, round(clamp(v, 0, 1) * 255), halves rounded up, NaN to 0.
 //
 // The product clamp(v, 0, 1) * 255 is the double product, as the expression
@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "render/quantize.hpp"
+#include "image/quantize.hpp"
 
 namespace {
 

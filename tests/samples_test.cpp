@@ -9,7 +9,7 @@
 
 #include "article_literal.hpp"
 #include "render/kernel.hpp"
-#include "render/quantize.hpp"
+#include "image/quantize.hpp"
 #include "render/renderer.hpp"
 #include "render/samples.hpp"
 #include "render/trace_pixel.hpp"

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "article_literal.hpp"
-#include "render/quantize.hpp"
+#include "image/quantize.hpp"
 #include "render/renderer.hpp"
 #include "render/trace_pixel.hpp"
 #include "scene/scene_json.hpp"

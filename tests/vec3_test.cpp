@@ -5,7 +5,7 @@
 
 #include "math/vec3.hpp"
 #include "render/pane.hpp"
-#include "render/quantize.hpp"
+#include "image/quantize.hpp"
 
 using promyk::Vec3d;
 

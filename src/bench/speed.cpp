@@ -15,7 +15,7 @@
 #include "bench/bench_text.hpp"
 #include "bench/cpu_pinning.hpp"
 #include "bench/timing.hpp"
-#include "render/quantize.hpp"
+#include "image/quantize.hpp"
 #include "render/renderer.hpp"
 #include "trace/messages.hpp"
 #include "util/errors.hpp"

@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "image/canvas.hpp"
-#include "render/image_writer.hpp"
+#include "image/image_writer.hpp"
 
 namespace promyk {
 

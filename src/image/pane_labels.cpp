@@ -4,7 +4,7 @@
 #include <string>
 
 #include "image/bitmap_font.hpp"
-#include "render/image_writer.hpp"
+#include "image/image_writer.hpp"
 
 namespace promyk {
 namespace {

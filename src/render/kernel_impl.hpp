@@ -15,7 +15,7 @@
 #include "render/kernel.hpp"
 #include "render/notes.hpp"
 #include "render/pane.hpp"
-#include "render/quantize.hpp"
+#include "image/quantize.hpp"
 #include "render/renderer.hpp"
 #include "render/sampling.hpp"
 #include "render/trace_pixel.hpp"

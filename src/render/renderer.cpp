@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-#include "render/quantize.hpp"
+#include "image/quantize.hpp"
 #include "render/trace_pixel.hpp"
 #include "util/interrupt.hpp"
 

@@ -3,7 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "render/kernel.hpp"
-#include "render/quantize.hpp"
+#include "image/quantize.hpp"
 #include "render/stages.hpp"
 #include "scene/scene_json.hpp"
 

@@ -15,7 +15,7 @@
 
 #include <fmt/format.h>
 
-#include "render/image_writer.hpp"
+#include "image/image_writer.hpp"
 #include "util/errors.hpp"
 #include "util/output_file.hpp"
 

@@ -13,7 +13,7 @@
 
 #include "image/canvas.hpp"
 #include "image/grid_contrast.hpp"
-#include "render/image_writer.hpp"
+#include "image/image_writer.hpp"
 
 namespace promyk {
 namespace {

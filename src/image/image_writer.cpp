@@ -1,5 +1,5 @@
 // Choosing the image format and the row bookkeeping every format shares.
-#include "render/image_writer.hpp"
+#include "image/image_writer.hpp"
 
 #include <stdexcept>
 #include <utility>

@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "render/image_writer.hpp"
+#include "image/image_writer.hpp"
 #include "util/output_file.hpp"
 
 namespace promyk {
