@@ -191,6 +191,10 @@ async function assertImageFits(page, what) {
   assert.ok(box.frame.right <= box.panel.right + 0.5, `the frame is wider than its panel: ${at}`);
   assert.ok(box.frame.width - box.canvas.width <= 2.5, `a strip of frame beside the image: ${at}`);
   assert.ok(box.page[0] <= box.page[1], `the page scrolls sideways: ${at}`);
+  // and the zoom shown is the zoom drawn: whole screen pixels per pixel
+  const zoom = Number((await page.textContent('#zoom-label')).match(/(\d+)×/)[1]);
+  const w = await page.evaluate(() => JSON.parse(document.getElementById('promyk-data').textContent).w);
+  assert.equal(box.canvas.width, w * zoom, `the image is not drawn at its zoom ${zoom}: ${at}`);
 }
 
 // The atlas's patterns as drawn on the image canvas: per branch category,
@@ -522,19 +526,31 @@ try {
   await pickFile(page, other, 'status');
   assert.match(await page.textContent('#status'), /w = 8/);
 
-  // --- hostile strings are shown as text and run nothing ---
+  // --- hostile strings are shown as text and run nothing: the scene's name,
+  // the scene file's name (scene_file in the page's data and in every trace
+  // line), the trace file's name ---
   const hostileName = '<img src=x onerror="window.__pwned=1"><script>window.__pwned=2</script>&amp;';
   const sceneText = JSON.parse(readFileSync(join(lessons, 'scenes', 'article.json'), 'utf8'));
   sceneText.name = hostileName;
-  const hostileScene = join(work, 'hostile <b>scene&amp;.json');
+  const hostileFile = 'hostile <img src=x onerror=window.__pwned=3> {scene} &amp;.json';
+  const hostileScene = join(work, hostileFile);
   writeFileSync(hostileScene, JSON.stringify(sceneText));
-  const hostileTraces = join(work, 'hostile.jsonl');
+  const hostileTraces = join(work, 'hostile <svg onload=window.__pwned=4>.jsonl');
   run(['render', '--scene', hostileScene, '--w', '8', '--traces', hostileTraces, '--trace-pixel', '3,4', '-o', join(work, 'hostile.png')]);
+  assert.equal(JSON.parse(readFileSync(hostileTraces, 'utf8').split('\n')[0]).scene_file, hostileScene);
   page = await open(exportPage('hostile.html', ['--scene', hostileScene, '--w', '8', '--traces', hostileTraces]));
   await selectPixel(page, 3, 4);
-  assert.ok((await page.textContent('#scene-line')).includes(hostileName), 'the scene name is shown as text');
+  const sceneLine = await page.textContent('#scene-line');
+  assert.ok(sceneLine.includes(hostileName), `the scene name is shown as text: ${sceneLine}`);
+  assert.ok(sceneLine.includes(hostileScene), `the scene file is shown as text: ${sceneLine}`);
+  const tracesLine = await page.textContent('#traces-status');
+  assert.ok(tracesLine.includes(hostileName) && tracesLine.includes(hostileScene) && tracesLine.includes(hostileTraces),
+    `the trace file's scene, scene_file and name are shown as text: ${tracesLine}`);
+  const sourceNote = await page.textContent('#source-note');
+  assert.ok(sourceNote.includes(hostileScene) && /not recomputed/.test(sourceNote), `the traced pixel's scene_file: ${sourceNote}`);
   assert.equal(await page.evaluate(() => window.__pwned), undefined, 'a hostile string ran');
-  assert.equal(await page.$$eval('body img, main script, #steps script', (found) => found.length), 0);
+  assert.equal(await page.$$eval('body img, body svg:not(.katex *), main script, #steps script', (found) => found.length), 0,
+    'a hostile string made an element');
 
   const size = statSync(shot).size;
   console.log(`page (article, w = 64): ${size} bytes; first paint: ${firstPaint}; one pixel traced and shown: ${traceTime.toFixed(1)} ms`);
