@@ -100,6 +100,20 @@ TEST_CASE("formulas with numbers put in: each object's own values, then the hit 
     REQUIRE(found);
 }
 
+TEST_CASE("formulas with numbers put in: no pane numbers for a sample's moved ray", "[trace][formula_numbers]") {
+    const PixelTrace trace = trace_pixel(article_scene(), 8, 3, 4, RealType::double_, Formula::article, 4);
+    const std::vector<std::string> numbers = formulas_with_numbers(trace, builtin_vocabulary(), Language::en, 4);
+    int samples = 0;
+    for (std::size_t k = 0; k < trace.steps.size(); ++k)
+        if (trace.steps[k].key == Key::E) {
+            ++samples;
+            CHECK(numbers[k].empty());
+        }
+    CHECK(samples == 4);
+    // the rest of a sample's derivation still has its numbers
+    CHECK_FALSE(numbers_of(trace, numbers, "C").empty());
+}
+
 TEST_CASE("a shown number as TeX escapes TeX's specials", "[trace][formula_numbers]") {
     CHECK(tex_number("1.5") == "\\text{1.5}");
     CHECK(tex_number("(1, 2, 3)") == "\\text{(1, 2, 3)}");

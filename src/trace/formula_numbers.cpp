@@ -133,6 +133,12 @@ std::string with_numbers(const std::string& tex, const Scope& scope) {
     return replaced > 0 ? out : "";
 }
 
+bool in_kind(const PixelTrace& trace, int group, const std::string& kind) {
+    for (int g = group; g >= 0 && g < static_cast<int>(trace.groups.size()); g = trace.groups[static_cast<std::size_t>(g)].parent)
+        if (trace.groups[static_cast<std::size_t>(g)].kind == kind) return true;
+    return false;
+}
+
 bool in_object(const PixelTrace& trace, int group) {
     for (int g = group; g >= 0 && g < static_cast<int>(trace.groups.size()); g = trace.groups[static_cast<std::size_t>(g)].parent) {
         const std::string& kind = trace.groups[static_cast<std::size_t>(g)].kind;
@@ -206,7 +212,10 @@ std::vector<std::string> formulas_with_numbers(const PixelTrace& trace, const Vo
         open(step.group, open);
         const std::string key(key_name(step.key));
         const VocabularyEntry* entry = vocabulary.find(key);
-        out.push_back(entry && !entry->formula_latex.empty() ? with_numbers(entry->formula_latex, scope) : "");
+        // A sample's E is the pixel's centre moved by (u, v): the centre's
+        // formula with i, j, w put in would not give its value.
+        const bool jittered = step.key == Key::E && in_kind(trace, step.group, "sample");
+        out.push_back(entry && !entry->formula_latex.empty() && !jittered ? with_numbers(entry->formula_latex, scope) : "");
         if (!entry || entry->latex.empty()) continue;
         // What this step found is known from here on, under its symbol.
         const std::string text = trace_step_value_text(step, vocabulary, key, language, h.real, digits);
