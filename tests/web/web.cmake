@@ -7,7 +7,7 @@ if(NOT PROMYK_SANITIZE AND PROMYK_WEB_PAGE_BUILT)
   add_test(NAME web.page
            COMMAND "${PROMYK_NODE}" "${CMAKE_CURRENT_SOURCE_DIR}/web/page_test.mjs" $<TARGET_FILE:promyk>
                    "${PROMYK_NPM_MODULES}" "${PROJECT_SOURCE_DIR}/lessons" "${CMAKE_CURRENT_BINARY_DIR}/web/page")
-  set_tests_properties(web.page PROPERTIES TIMEOUT 300)
+  set_tests_properties(web.page PROPERTIES TIMEOUT 600)
 endif()
 
 # promyk export's command line (tests/cli/export_test.sh): with the page, its

@@ -18,85 +18,16 @@ function typeset(element, tex) {
   }
 }
 
-// A number as TeX text: the formatter's characters, TeX's specials escaped.
-function texNumber(text) {
-  const safe = text.replace(/[\\{}$%#&_^~]/g, (c) => `\\${c === '\\' ? 'backslash ' : c}`);
-  return /^[\d.,]+$/.test(text) || /^[([]/.test(text) ? `\\text{${safe}}` : `\\left(\\text{${safe}}\\right)`;
-}
-
-// The components of a shown vector "(a; b; c)" or "(a, b, c)".
-function componentsOf(text, lang) {
-  const inner = text.replace(/^[([]|[)\]]$/g, '');
-  const parts = inner.split(lang === 'pl' ? '; ' : ', ');
-  return parts.length === 3 ? parts : null;
-}
-
-// The right-hand side of `tex` (after its last '=' outside braces) with the
-// known quantities replaced by their numbers; null when nothing is known.
-// Other spellings of a symbol in the vocabulary's formulas.
-const aliases = { '\\tfrac{\\Delta}{4}': ['\\Delta/4'] };
-
-export function withNumbers(tex, known) {
-  for (const [symbol, others] of Object.entries(aliases))
-    if (known.has(symbol)) for (const other of others) known.set(other, known.get(symbol));
-  let depth = 0;
-  let last = -1;
-  for (let k = 0; k < tex.length; ++k) {
-    const c = tex[k];
-    if (c === '{') ++depth;
-    else if (c === '}') --depth;
-    else if (c === '=' && depth === 0) last = k;
-  }
-  if (last < 0) return null;
-  const rhs = tex.slice(last + 1);
-  // A minimum over a set or a sum over samples has no single number per symbol.
-  if (/\\min\\\{|\\sum/.test(rhs)) return null;
-  const literals = [...known.keys()].sort((a, b) => b.length - a.length);
-  let out = '';
-  let replaced = 0;
-  let previousWasNumber = false;
-  const isLetter = (c) => c !== undefined && /[A-Za-z]/.test(c);
-  for (let k = 0; k < rhs.length;) {
-    const component = /^([xyz])_(?:\{([A-Za-z])\}|([A-Za-z]))/.exec(rhs.slice(k));
-    let value = null;
-    let length = 0;
-    if (component && !isLetter(rhs[k - 1])) {
-      const name = component[2] || component[3];
-      const entry = known.get(name) || known.get(`\\vec{${name}}`);
-      if (entry && entry.components) {
-        value = entry.components['xyz'.indexOf(component[1])];
-        length = component[0].length;
-      }
-    }
-    if (value === null) {
-      for (const literal of literals) {
-        if (!rhs.startsWith(literal, k)) continue;
-        const before = rhs[k - 1];
-        const after = rhs[k + literal.length];
-        const wordLike = isLetter(literal[0]);
-        if (wordLike && (isLetter(before) || before === '\\')) continue;
-        if (isLetter(literal[literal.length - 1]) && (isLetter(after) || after === '_')) continue;
-        value = known.get(literal).text;
-        length = literal.length;
-        break;
-      }
-    }
-    if (value !== null) {
-      // a product written by juxtaposition (2j, 4|E|², C·C) keeps its dot
-      if (previousWasNumber || /[\d})]\s*$/.test(out)) out += '\\cdot ';
-      out += texNumber(value);
-      k += length;
-      ++replaced;
-      previousWasNumber = true;
-      continue;
-    }
-    const control = /^\\[A-Za-z]+/.exec(rhs.slice(k));
-    const piece = control ? control[0] : rhs[k];
-    out += piece;
-    k += piece.length;
-    if (!/^\s$/.test(piece)) previousWasNumber = false;
-  }
-  return replaced > 0 ? out : null;
+// A value as the page shows it: 4 digits, or every digit with "full digits"
+// (the full text is also the hover's title). Texts from the C++ formatter.
+function valueSpan(full, shown, showFull, word = (text) => `= ${text}`) {
+  const value = document.createElement('span');
+  value.className = 'v';
+  value.dataset.full = word(full);
+  value.dataset.shown = word(shown);
+  value.title = full;
+  value.textContent = showFull ? value.dataset.full : value.dataset.shown;
+  return value;
 }
 
 export class Derivation {
@@ -112,20 +43,7 @@ export class Derivation {
     this.container.replaceChildren();
     this.outcome.replaceChildren();
     this.rows = [];
-    const lang = view.lang;
     const header = view.header || {};
-    const known = new Map();
-    const learn = (tex, text, components) => {
-      if (tex) known.set(tex, { text, components });
-    };
-    learn('i', String(header.i));
-    learn('j', String(header.j));
-    learn('w', String(header.w));
-    const learnGiven = (given) => {
-      learn(given.symbol_tex, given.value_shown, componentsOf(given.value_shown, lang));
-      if (/^[A-Z]$/.test(given.symbol_tex)) learn(`\\vec{${given.symbol_tex}}`, given.value_shown, componentsOf(given.value_shown, lang));
-    };
-    for (const given of header.given || []) learnGiven(given);
     const givenGroups = header.given_groups || [];
 
     // The given values, as a first block.
@@ -161,29 +79,11 @@ export class Derivation {
       details.append(summary);
       blockOf(group.parent).append(details);
       blocks.set(index, details);
-      for (const g of givenGroups)
-        if (g.kind === group.kind && g.index === group.index)
-          for (const item of g.values || []) learnGiven(item);
       return details;
     };
 
-    // Inside an object's block, S, r, Q, n are that object's (learned as the
-    // block opens); after the objects, the hit object's again.
-    const hit = /^(sphere|plane) (\d+)$/.exec(view.hit_object || '');
-    const hitGiven = hit ? givenGroups.find((g) => g.kind === hit[1] && g.index === Number(hit[2])) : null;
-    const inObject = (group) => {
-      for (let g = group; g >= 0 && g < groups.length; g = groups[g].parent)
-        if (groups[g].kind === 'sphere' || groups[g].kind === 'plane') return true;
-      return false;
-    };
-    let objectsLearned = false;
     view.steps.forEach((step, index) => {
-      if (inObject(step.group)) objectsLearned = true;
-      else if (objectsLearned && hitGiven) {
-        for (const item of hitGiven.values || []) learnGiven(item);
-        objectsLearned = false;
-      }
-      const parent = blockOf(step.group); // opens the block, learning its givens
+      const parent = blockOf(step.group);
       const row = document.createElement('div');
       row.className = 'step';
       row.dataset.index = String(index);
@@ -204,11 +104,12 @@ export class Derivation {
         formula.className = 'formula';
         typeset(formula, step.formula_tex);
         body.append(formula);
-        const numbers = withNumbers(step.formula_tex, known);
-        if (numbers) {
+        // The same formula with the pixel's numbers put in, made by the C++
+        // view (trace/formula_numbers.hpp) from the formatter's texts.
+        if (step.numbers_tex) {
           const filled = document.createElement('div');
           filled.className = 'numbers';
-          typeset(filled, `{}= ${numbers}`);
+          typeset(filled, `{}= ${step.numbers_tex}`);
           body.append(filled);
         }
       } else if (step.formula_text) {
@@ -219,13 +120,7 @@ export class Derivation {
       }
       const result = document.createElement('div');
       result.className = 'value';
-      const value = document.createElement('span');
-      value.className = 'v';
-      value.dataset.full = `= ${step.value_full}`;
-      value.dataset.shown = `= ${step.value_shown}`;
-      value.title = step.value_full;
-      value.textContent = full ? value.dataset.full : value.dataset.shown;
-      result.append(value);
+      result.append(valueSpan(step.value_full, step.value_shown, full));
       if (step.digits_lost_text) {
         const lost = document.createElement('span');
         lost.className = step.alarm ? 'lost alarm' : 'lost';
@@ -242,14 +137,6 @@ export class Derivation {
       row.append(number, symbol, body);
       parent.append(row);
       this.rows.push(row);
-      if (step.symbol_tex) {
-        const components = step.components_shown || null;
-        learn(step.symbol_tex, step.value_shown, components);
-        // The program's name on the formula's left (C for E·S, D for N·K).
-        const name = step.formula_tex ? /^\s*([A-Za-z])\s*=/.exec(step.formula_tex) : null;
-        if (name && name[1] !== step.symbol_tex) learn(name[1], step.value_shown, components);
-        if (/^[A-Z](_P)?$/.test(step.symbol_tex)) learn(`\\vec{${step.symbol_tex}}`, step.value_shown, components);
-      }
     });
 
     // The branch taken and why, and the result.
@@ -261,13 +148,7 @@ export class Derivation {
     reason.textContent = t('page_reason', { reason: view.reason });
     const result = document.createElement('p');
     result.className = 'result';
-    const value = document.createElement('span');
-    value.className = 'v';
-    value.dataset.full = t('page_result', { value: view.I_P_full });
-    value.dataset.shown = t('page_result', { value: view.I_P_shown });
-    value.title = view.I_P_full;
-    value.textContent = full ? value.dataset.full : value.dataset.shown;
-    result.append(value);
+    result.append(valueSpan(view.I_P_full, view.I_P_shown, full, (value) => t('page_result', { value })));
     this.outcome.append(branch, reason, result);
     for (const note of view.notes || []) {
       const line = document.createElement('p');
@@ -282,13 +163,7 @@ export class Derivation {
     row.className = 'given-item';
     const symbol = document.createElement('span');
     typeset(symbol, item.symbol_tex || item.key);
-    const value = document.createElement('span');
-    value.className = 'v';
-    value.dataset.full = ` = ${item.value_full}`;
-    value.dataset.shown = ` = ${item.value_shown}`;
-    value.title = item.value_full;
-    value.textContent = full ? value.dataset.full : value.dataset.shown;
-    row.append(symbol, value);
+    row.append(symbol, valueSpan(item.value_full, item.value_shown, full, (text) => ` = ${text}`));
     return row;
   }
 

@@ -5,55 +5,70 @@
 // and the branch; a click or the arrow keys select.
 
 // One pattern per category (BranchCategory order: miss, dark, lit, shadowed,
-// non-finite, tangent, behind the eye), drawn in a pixel's square.
-export const patterns = ['none', 'dot', 'slash', 'cross', 'dash', 'bar', 'backslash'];
+// non-finite, tangent, behind the eye), so the atlas reads without colour.
+// A pattern is a tile of screen pixels repeated over the category's area
+// (drawn at screen resolution, anchored to the image's corner), so it reads
+// at every zoom, a pixel 1 screen pixel wide or 64; the legend shows the same
+// tiles. Ink is black on light colours, white on dark ones.
+export const patterns = ['none', 'dots', 'slash', 'cross', 'dash', 'bar', 'backslash'];
+export const tileSize = 8;
 
-export function drawPattern(ctx, pattern, x, y, size) {
-  const m = size * 0.2;
-  ctx.beginPath();
+function inked(pattern, x, y) {
+  const n = tileSize;
   switch (pattern) {
-    case 'dot':
-      ctx.arc(x + size / 2, y + size / 2, size * 0.15, 0, 2 * Math.PI);
-      ctx.fill();
-      return;
-    case 'slash':
-      ctx.moveTo(x + m, y + size - m);
-      ctx.lineTo(x + size - m, y + m);
-      break;
-    case 'backslash':
-      ctx.moveTo(x + m, y + m);
-      ctx.lineTo(x + size - m, y + size - m);
-      break;
-    case 'cross':
-      ctx.moveTo(x + m, y + m);
-      ctx.lineTo(x + size - m, y + size - m);
-      ctx.moveTo(x + m, y + size - m);
-      ctx.lineTo(x + size - m, y + m);
-      break;
-    case 'dash':
-      ctx.moveTo(x + m, y + size / 2);
-      ctx.lineTo(x + size - m, y + size / 2);
-      break;
-    case 'bar':
-      ctx.moveTo(x + size / 2, y + m);
-      ctx.lineTo(x + size / 2, y + size - m);
-      break;
-    default:
-      return;
+    case 'dots': return (x % n < 3 && y % n < 3) || ((x + 4) % n < 3 && (y + 4) % n < 3);
+    case 'slash': return (x + y) % n === n - 1;
+    case 'backslash': return (x - y + n) % n === 0;
+    case 'cross': return (x + y) % n === n - 1 || (x - y + n) % n === 0;
+    case 'dash': return y % n === 3;
+    case 'bar': return x % n === 3;
+    default: return false;
   }
-  ctx.stroke();
 }
 
+// The ink colour on a category colour "#RRGGBB": the one that contrasts.
+export function inkOn(hex) {
+  const v = parseInt(hex.slice(1), 16);
+  const luminance = 0.2126 * (v >> 16) + 0.7152 * ((v >> 8) & 255) + 0.0722 * (v & 255);
+  return luminance < 110 ? [255, 255, 255] : [0, 0, 0];
+}
+
+// A tile of the pattern, as a canvas (transparent where there is no ink).
+export function patternTile(pattern, ink) {
+  const tile = document.createElement('canvas');
+  tile.width = tile.height = tileSize;
+  const ctx = tile.getContext('2d');
+  const pixels = ctx.createImageData(tileSize, tileSize);
+  for (let y = 0; y < tileSize; ++y)
+    for (let x = 0; x < tileSize; ++x)
+      if (inked(pattern, x, y)) pixels.data.set([...ink, 255], 4 * (y * tileSize + x));
+  ctx.putImageData(pixels, 0, 0);
+  return tile;
+}
+
+// Fills a rectangle of `ctx` with a category's colour and its pattern.
+export function drawSwatch(ctx, category, size) {
+  ctx.fillStyle = category.hex;
+  ctx.fillRect(0, 0, size, size);
+  ctx.fillStyle = ctx.createPattern(patternTile(patterns[category.index], inkOn(category.hex)), 'repeat');
+  ctx.fillRect(0, 0, size, size);
+}
+
+// The zooms offered (whole screen pixels per pixel, so pixels stay crisp).
+const zoomSteps = [1, 2, 3, 4, 5, 6, 8, 10, 12, 16, 20, 24, 32, 48, 64];
+
 export class ImageView {
-  constructor(canvas, data, { onSelect, onHover }) {
+  constructor(canvas, frame, data, { onSelect, onHover }) {
     this.canvas = canvas;
+    this.frame = frame; // the box the image must fit in (its width is the panel's)
     this.w = data.w;
     this.channels = data.channels;
     this.image = data.image; // Uint8Array, w·w·channels
     this.map = data.branchMap; // Uint8Array, w·w
     this.onSelect = onSelect;
     this.onHover = onHover;
-    this.zoom = Math.max(1, Math.min(64, Math.floor(512 / this.w)));
+    this.zoom = 1;
+    this.zoomTo(Math.floor(512 / this.w));
     this.legend = [];
     this.traced = null; // Set of "i,j"
     this.atlas = false;
@@ -63,6 +78,8 @@ export class ImageView {
       return c === 1 ? [this.image[p], this.image[p], this.image[p]] : [this.image[3 * p], this.image[3 * p + 1], this.image[3 * p + 2]];
     });
     canvas.addEventListener('click', (event) => {
+      // A click gives the image the keys (also a click made by a script).
+      canvas.focus({ preventScroll: true });
       const pixel = this.pixelAt(event);
       if (pixel) this.onSelect(pixel);
     });
@@ -71,8 +88,9 @@ export class ImageView {
     canvas.addEventListener('keydown', (event) => {
       const moves = { ArrowUp: [-1, 0], ArrowDown: [1, 0], ArrowLeft: [0, -1], ArrowRight: [0, 1] };
       const move = moves[event.key];
-      if (!move) return;
+      if (!move || event.altKey || event.ctrlKey || event.metaKey) return;
       event.preventDefault();
+      event.stopPropagation(); // the arrows move the pixel here, not the step
       const [i, j] = this.selected || [0, 0];
       const next = [Math.min(this.w - 1, Math.max(0, i + move[0])), Math.min(this.w - 1, Math.max(0, j + move[1]))];
       this.onSelect(next);
@@ -86,8 +104,8 @@ export class ImageView {
     const ctx = bitmap.getContext('2d');
     const pixels = ctx.createImageData(this.w, this.w);
     for (let p = 0; p < this.w * this.w; ++p) {
-      const [r, g, b] = rgbOf(p);
-      pixels.data.set([r, g, b, 255], 4 * p);
+      const rgb = rgbOf(p); // null: transparent
+      if (rgb) pixels.data.set([rgb[0], rgb[1], rgb[2], 255], 4 * p);
     }
     ctx.putImageData(pixels, 0, 0);
     return bitmap;
@@ -97,6 +115,15 @@ export class ImageView {
     this.legend = categories;
     const byIndex = new Map(categories.map((c) => [c.index, c.rgb]));
     this.atlasBitmap = this.makeBitmap((p) => byIndex.get(this.map[p]) || [0, 0, 0]);
+    // Per category with a pattern: a mask of its pixels and its tile.
+    this.patternLayers = [];
+    for (const category of categories) {
+      const pattern = patterns[category.index];
+      if (!pattern || pattern === 'none' || !this.map.includes(category.index)) continue;
+      const mask = this.makeBitmap((p) => (this.map[p] === category.index ? [0, 0, 0] : null));
+      this.patternLayers.push({ mask, tile: patternTile(pattern, inkOn(category.hex)) });
+    }
+    this.atlasCache = null;
   }
 
   // The pixel under the mouse, or null.
@@ -128,28 +155,86 @@ export class ImageView {
     return { first, count };
   }
 
-  setZoom(zoom) {
-    this.zoom = Math.max(1, Math.min(64, zoom, Math.floor(8192 / this.w)));
+  // The widest image the box holds (its panel's width less the border).
+  room() {
+    const panel = this.frame.parentElement;
+    const style = getComputedStyle(this.frame);
+    const border = parseFloat(style.borderLeftWidth) + parseFloat(style.borderRightWidth);
+    return Math.max(1, Math.floor(panel.clientWidth - border));
+  }
+
+  // The zooms offered: those whose image fits the box (at least zoom 1,
+  // shown scaled down when even that is too wide), none under 96 screen
+  // pixels when a larger one fits.
+  zoomLevels() {
+    const fit = Math.max(1, Math.floor(this.room() / this.w));
+    const levels = zoomSteps.filter((z) => z <= fit && this.w * z <= 8192);
+    if (!levels.includes(fit) && fit <= 64) levels.push(fit);
+    const large = levels.filter((z) => this.w * z >= 96);
+    return large.length ? large : [levels[levels.length - 1]];
+  }
+
+  // The largest zoom offered not above `zoom` (else the smallest offered).
+  zoomTo(zoom) {
+    const levels = this.zoomLevels();
+    const below = levels.filter((z) => z <= zoom);
+    this.zoom = below.length ? below[below.length - 1] : levels[0];
+  }
+
+  zoomIn() {
+    const next = this.zoomLevels().find((z) => z > this.zoom);
+    if (next) this.zoom = next;
+  }
+
+  zoomOut() {
+    const levels = this.zoomLevels().filter((z) => z < this.zoom);
+    if (levels.length) this.zoom = levels[levels.length - 1];
+  }
+
+  canZoomIn() {
+    return this.zoomLevels().some((z) => z > this.zoom);
+  }
+
+  canZoomOut() {
+    return this.zoomLevels().some((z) => z < this.zoom);
+  }
+
+  // The atlas at this zoom: colours, then each category's pattern over its
+  // pixels at screen resolution (made once per zoom and legend).
+  atlasLayer(side) {
+    if (this.atlasCache && this.atlasCache.side === side) return this.atlasCache.canvas;
+    const layer = document.createElement('canvas');
+    layer.width = layer.height = side;
+    const ctx = layer.getContext('2d');
+    ctx.imageSmoothingEnabled = false;
+    ctx.drawImage(this.atlasBitmap, 0, 0, side, side);
+    const ink = document.createElement('canvas');
+    ink.width = ink.height = side;
+    const inkCtx = ink.getContext('2d');
+    inkCtx.imageSmoothingEnabled = false;
+    for (const { mask, tile } of this.patternLayers) {
+      inkCtx.globalCompositeOperation = 'copy';
+      inkCtx.drawImage(mask, 0, 0, side, side);
+      inkCtx.globalCompositeOperation = 'source-in';
+      inkCtx.fillStyle = inkCtx.createPattern(tile, 'repeat');
+      inkCtx.fillRect(0, 0, side, side);
+      ctx.drawImage(ink, 0, 0);
+    }
+    this.atlasCache = { side, canvas: layer };
+    return layer;
   }
 
   draw() {
+    this.zoomTo(this.zoom); // the box may have narrowed since
     const side = this.w * this.zoom;
     if (this.canvas.width !== side) this.canvas.width = this.canvas.height = side;
+    this.canvas.style.width = `${side}px`;
     const ctx = this.canvas.getContext('2d');
     ctx.imageSmoothingEnabled = false;
     ctx.drawImage(this.base, 0, 0, side, side);
     const z = this.zoom;
-    if (this.atlas && this.atlasBitmap) {
-      ctx.globalAlpha = 0.85;
-      ctx.drawImage(this.atlasBitmap, 0, 0, side, side);
-      ctx.globalAlpha = 1;
-      if (z >= 4) {
-        ctx.strokeStyle = ctx.fillStyle = 'rgba(0,0,0,0.75)';
-        ctx.lineWidth = Math.max(1, z / 8);
-        for (let i = 0; i < this.w; ++i)
-          for (let j = 0; j < this.w; ++j) drawPattern(ctx, patterns[this.map[i * this.w + j]], j * z, i * z, z);
-      }
-    }
+    // The atlas covers the image (the colours of render --map branch, exactly).
+    if (this.atlas && this.atlasBitmap) ctx.drawImage(this.atlasLayer(side), 0, 0);
     if (this.traced) {
       // A traced pixel of the trace file: a small magenta corner mark.
       ctx.fillStyle = '#CC79A7';

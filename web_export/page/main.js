@@ -4,7 +4,7 @@
 import { makeTracer } from './tracer.js';
 import { setMessages, t } from './words.js';
 import { defaultState, readFragment, writeFragment, rememberedLanguage, rememberLanguage, reals, formulas, spps } from './state.js';
-import { ImageView, patterns, drawPattern } from './image_view.js';
+import { ImageView, patterns, drawSwatch } from './image_view.js';
 import { Derivation } from './derivation.js';
 import { View3D } from './view3d.js';
 
@@ -49,7 +49,7 @@ async function start() {
   let current = null; // {text, view, geometry, fromFile}
   let comparison = null;
 
-  const image = new ImageView($('image'), data, {
+  const image = new ImageView($('image'), $('image-frame'), data, {
     onSelect: (pixel) => {
       state.pixel = pixel;
       state.step = 0;
@@ -67,7 +67,7 @@ async function start() {
     },
   });
   const derivation = new Derivation($('steps'), $('outcome'));
-  const view3d = new View3D($('view3d'), $('view-labels'));
+  const view3d = new View3D($('view3d'), $('view-labels'), $('view-list'));
   view3d.setScene(opened.scene_content);
 
   // The selected pixel's trace: the trace file's line when the file has the
@@ -121,10 +121,10 @@ async function start() {
     const h = view.header;
     $('derivation-heading').textContent = t('page_derivation', { i: h.i, j: h.j });
     $('source-note').textContent = current.fromFile
-      ? t('page_from_file', { real: h.real, formula: h.formula, spp: h.spp })
+      ? t('page_from_file', { real: h.real, formula: h.formula, spp: h.spp, scene_file: sceneFileText(h.scene_file) })
       : t('page_settings_live', { real: h.real, formula: h.formula, spp: h.spp });
     derivation.show(view, state.full);
-    view3d.setPixel(current.geometry, data.w);
+    view3d.setPixel(current.geometry, data.w, view);
     drawComparison();
     state.step = Math.min(state.step, view.steps.length - 1);
     redraw();
@@ -167,6 +167,8 @@ async function start() {
     image.atlas = state.atlas;
     image.draw();
     $('zoom-label').textContent = `${t('page_zoom')} ${image.zoom}×`;
+    $('zoom-in').disabled = !image.canZoomIn();
+    $('zoom-out').disabled = !image.canZoomOut();
     $('legend').hidden = !state.atlas;
     $('atlas-toggle').checked = state.atlas;
     $('full-digits').checked = state.full;
@@ -202,10 +204,10 @@ async function start() {
       'formula-label': 'page_formula', 'spp-label': 'page_spp', 'compare-label': 'page_compare',
       'full-digits-label': 'page_full_digits', 'step-first': 'page_first', 'step-prev': 'page_prev',
       'step-next': 'page_next', 'step-last': 'page_last', 'keys-hint': 'page_keys_hint', 'view-heading': 'page_view3d',
-      'view-hint': 'page_view3d_hint', notices: 'page_notices',
+      'view-hint': 'page_view3d_hint', 'view-list-title': 'page_view_list_title', notices: 'page_notices',
     };
     for (const [id, word] of Object.entries(words)) $(id).textContent = t(word, { i: '·', j: '·' });
-    $('scene-line').textContent = t('page_scene', { scene: opened.scene, w: data.w });
+    $('scene-line').textContent = t('page_scene', { scene: opened.scene, file: sceneFileText(data.scene_file), w: data.w });
     $('full-digits').parentElement.title = t('page_digits_hint');
     $('lang-switch').setAttribute('aria-label', t('page_language'));
     // Why the page has no long double, in the page's language when the
@@ -218,6 +220,12 @@ async function start() {
     drawLegend();
     if (traces) describeTraces();
     redrawTrace();
+  }
+
+  // A trace's or export's scene file (a string from a file: only ever set as
+  // text); the article's built-in scene in the page's words.
+  function sceneFileText(file) {
+    return !file || file === 'built-in' ? t('trace_builtin') : file;
   }
 
   function fillSelect(select, options) {
@@ -235,17 +243,17 @@ async function start() {
     list.replaceChildren();
     for (const category of legend.categories) {
       const item = document.createElement('li');
+      // The colour and the pattern the atlas draws, and the pattern in words.
       const swatch = document.createElement('canvas');
-      swatch.width = swatch.height = 18;
+      swatch.width = swatch.height = 24;
       swatch.className = 'swatch';
-      const ctx = swatch.getContext('2d');
-      ctx.fillStyle = category.hex;
-      ctx.fillRect(0, 0, 18, 18);
-      ctx.strokeStyle = ctx.fillStyle = 'rgba(0,0,0,0.75)';
-      ctx.lineWidth = 2;
-      drawPattern(ctx, patterns[category.index], 0, 0, 18);
+      drawSwatch(swatch.getContext('2d'), category, 24);
       const name = document.createElement('span');
       name.textContent = `${category.name} (${count.get(category.index) || 0})`;
+      const pattern = document.createElement('span');
+      pattern.className = 'pattern-name';
+      pattern.dataset.pattern = patterns[category.index];
+      pattern.textContent = t(`page_pattern_${patterns[category.index]}`);
       const go = document.createElement('button');
       go.type = 'button';
       go.dataset.category = category.id;
@@ -258,7 +266,9 @@ async function start() {
         state.step = 0;
         retrace();
       });
-      item.append(swatch, ' ', name, ' ', go);
+      item.dataset.index = String(category.index);
+      item.dataset.rgb = category.rgb.join(',');
+      item.append(swatch, ' ', name, ' ', pattern, ' ', go);
       list.append(item);
     }
   }
@@ -266,7 +276,7 @@ async function start() {
   function describeTraces() {
     const info = traces.info;
     $('traces-status').textContent = t('page_traces_loaded', {
-      file: traces.name, count: info.count, real: info.real, formula: info.formula, spp: info.spp,
+      file: traces.name, scene: info.scene, scene_file: sceneFileText(info.scene_file), count: info.count, real: info.real, formula: info.formula, spp: info.spp,
     });
     $('use-file-row').hidden = false;
   }
@@ -304,8 +314,10 @@ async function start() {
     redraw();
   });
   $('atlas-toggle').addEventListener('change', (e) => { state.atlas = e.target.checked; redraw(); });
-  $('zoom-in').addEventListener('click', () => { image.setZoom(image.zoom * 2); redraw(); });
-  $('zoom-out').addEventListener('click', () => { image.setZoom(Math.floor(image.zoom / 2)); redraw(); });
+  $('zoom-in').addEventListener('click', () => { image.zoomIn(); redraw(); });
+  $('zoom-out').addEventListener('click', () => { image.zoomOut(); redraw(); });
+  // A narrower window offers smaller zooms: the image always fits its box.
+  new ResizeObserver(() => redraw()).observe($('image-panel'));
   for (const button of document.querySelectorAll('#lang-switch button'))
     button.addEventListener('click', () => {
       state.lang = button.dataset.lang;
@@ -323,7 +335,9 @@ async function start() {
   $('step-last').addEventListener('click', () => step(Infinity));
   document.addEventListener('keydown', (event) => {
     const focus = document.activeElement;
-    if (focus && (/^(INPUT|SELECT|TEXTAREA)$/.test(focus.tagName) || focus === $('image') || focus === $('view3d'))) return;
+    // The focused image and 3D view take the arrows themselves (and stop
+    // them); Home and End still walk the steps there.
+    if (focus && /^(INPUT|SELECT|TEXTAREA)$/.test(focus.tagName)) return;
     if (event.altKey || event.ctrlKey || event.metaKey) return;
     const keys = { ArrowLeft: () => step(state.step - 1), ArrowRight: () => step(state.step + 1), Home: () => step(0), End: () => step(Infinity) };
     if (!keys[event.key]) return;
@@ -344,7 +358,9 @@ async function start() {
   window.addEventListener('hashchange', () => {
     const before = JSON.stringify(state);
     readFragment(state, location.hash, data.w);
-    if (JSON.stringify(state) !== before) applyLanguage();
+    if (JSON.stringify(state) === before) return;
+    applyLanguage();
+    retrace(); // a link to another pixel or other settings: its trace
   });
 
   $('status').textContent = '';

@@ -13,16 +13,20 @@ import {
   Scene, SphereGeometry, Vector3, WebGLRenderer, EdgesGeometry, LineSegments,
 } from 'three';
 import { quantityColour } from './colours.js';
+import { t } from './words.js';
 
 const toThree = (v) => new Vector3(v[0], v[1], -v[2]);
+// Back to the article's coordinates (what the list under the view reports).
+const fromThree = (v) => [v.x, v.y, -v.z];
 
 // Parses an English full-digit number text of the formatter ("−0.125", "1e-07").
 export const numberOf = (text) => Number(String(text).replace(/\u2212/g, '-'));
 
 export class View3D {
-  constructor(canvas, labels) {
+  constructor(canvas, labels, list) {
     this.canvas = canvas;
     this.labels = labels;
+    this.list = list; // what is drawn, in words (and for a reader without the canvas)
     this.renderer = new WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
     this.renderer.setClearColor(0xf4f4f0);
     this.scene = new Scene();
@@ -150,11 +154,29 @@ export class View3D {
     return group;
   }
 
+  // A dashed segment from a to b: a shadow ray, apart from K's solid arrow.
+  dashed(a, b, colour) {
+    const group = new Group();
+    const length = a.distanceTo(b);
+    const dash = 0.07;
+    const gap = 0.05;
+    for (let at = 0; at < length; at += dash + gap) {
+      const piece = this.segment(a.clone().lerp(b, at / length), a.clone().lerp(b, Math.min(length, at + dash) / length), colour, false);
+      piece.children.forEach((c) => {
+        c.geometry = new CylinderGeometry(0.02, 0.02, c.geometry.parameters.height, 6);
+      });
+      group.add(...piece.children);
+    }
+    return group;
+  }
+
   // The selected pixel's geometry, from its view with every digit in English
-  // (view.steps: key, group, components_full / value_full).
-  setPixel(view, w) {
+  // (view.steps: key, group, components_full / value_full); `shown` is the
+  // same trace's view in the page's language (for the words under the view).
+  setPixel(view, w, shown) {
     this.pixelGroup.clear();
     this.marks = [];
+    this.list.replaceChildren();
     if (!view) return this.render();
     const groups = view.groups || [];
     const ancestor = (step, kind) => {
@@ -165,9 +187,23 @@ export class View3D {
     const vec = (step) => (step && step.components_full ? step.components_full.map(numberOf) : null);
     const steps = view.steps;
     const first = (key) => steps.find((s) => s.key === key && ancestor(s, 'sample') <= 0);
-    const add = (object, keys, label, at, colour) => {
+    const shownOf = (step) => (shown && shown.steps[steps.indexOf(step)]) || step;
+    // Each thing drawn, with its line in the list under the view: what it
+    // is, and where it runs (article coordinates, every digit, in data-*).
+    const add = (object, keys, label, at, colour, item) => {
       this.pixelGroup.add(object);
       this.marks.push({ object, keys, label, at, colour });
+      if (!item) return;
+      const line = document.createElement('li');
+      line.dataset.kind = item.kind;
+      if (item.light !== undefined) line.dataset.light = String(item.light);
+      for (const [name, point] of Object.entries(item.points || {})) line.dataset[name] = fromThree(point).join(',');
+      for (const [name, value] of Object.entries(item.data || {})) line.dataset[name] = String(value);
+      const symbol = document.createElement('b');
+      symbol.textContent = label || item.symbol || '';
+      symbol.style.color = colour || '#000';
+      line.append(symbol, ` ${item.text}`);
+      this.list.append(line);
     };
     // The pixel on the pane.
     const { i, j } = view.header;
@@ -185,24 +221,29 @@ export class View3D {
     if (E) {
       const end = P ? toThree(P) : toThree(E).multiplyScalar(4);
       add(this.segment(origin, end, colourE, !P), ['E', 't', 't_hit', 'EE', 'C', 'delta', 'Delta', 'sqrt_Delta'], 'E',
-        toThree(E), colourE);
+        toThree(E), colourE, { kind: 'ray', text: t(P ? 'page_draw_ray_hit' : 'page_draw_ray_miss'), points: { from: origin, to: end } });
     }
     if (P) {
       const p = toThree(P);
       const dot = new Mesh(new SphereGeometry(0.05, 16, 12), new MeshBasicMaterial({ color: quantityColour('P'), transparent: true }));
       dot.position.copy(p);
-      add(dot, ['P'], 'P', p, quantityColour('P'));
+      add(dot, ['P'], 'P', p, quantityColour('P'), { kind: 'P', text: t('page_draw_P'), points: { at: p } });
       const N = vec(first('N_P')) || vec(first('n_hat'));
       if (N) {
         const tip = p.clone().add(toThree(N).normalize().multiplyScalar(0.7));
-        add(this.segment(p, tip, quantityColour('N'), true), ['N', 'N_P', 'n_hat'], 'N', tip, quantityColour('N'));
+        add(this.segment(p, tip, quantityColour('N'), true), ['N', 'N_P', 'n_hat'], 'N', tip, quantityColour('N'),
+          { kind: 'N', text: t('page_draw_N'), points: { from: p, to: tip } });
       }
       const V = vec(first('V_hat'));
       if (V) {
         const tip = p.clone().add(toThree(V).normalize().multiplyScalar(0.7));
-        add(this.segment(p, tip, quantityColour('V_hat'), true), ['V_hat'], 'V', tip, quantityColour('V_hat'));
+        add(this.segment(p, tip, quantityColour('V_hat'), true), ['V_hat'], 'V', tip, quantityColour('V_hat'),
+          { kind: 'V', text: t('page_draw_V'), points: { from: p, to: tip } });
       }
-      // Per light: K from P to the light; its shadow ray and blocker; R.
+      // Per light: K from P to the light; its shadow ray (P + sK, 0 < s < 1)
+      // with the test's result; R.
+      const lightName = (light) => (this.lights.length > 1 ? `L${light}` : 'L');
+      const shadowKeys = ['b_s', 'c_s', 'delta_s', 's_1', 's_2', 'NK', 's', 's_own', 'blocker'];
       steps.forEach((step) => {
         if (ancestor(step, 'sample') > 0) return;
         const light = ancestor(step, 'light');
@@ -210,26 +251,62 @@ export class View3D {
           const L = this.lights[light];
           const lightSteps = ['K', 'KK', 'K_len', 'K_P', 'D', 'cos_alpha', 'contribution'];
           add(this.segment(p, L, quantityColour('K'), true), lightSteps.map((k) => `${light}:${k}`), 'K',
-            p.clone().lerp(L, 0.5), quantityColour('K'));
+            p.clone().lerp(L, 0.5), quantityColour('K'),
+            { kind: 'K', light, text: t('page_draw_K', { light: lightName(light) }), points: { from: p, to: L } });
         }
         if (step.key === 'blocker' && light >= 0 && this.lights[light]) {
           const L = this.lights[light];
-          const shadow = new Line(new BufferGeometry().setFromPoints([p, L]), new LineBasicMaterial({ color: 0x000000, transparent: true }));
-          add(shadow, [`${light}:blocker`], null);
-          const match = /(sphere|plane) (\d+)/.exec(String(step.value_full));
-          const object = match && this.objects[match[1]][Number(match[2])];
-          if (object) {
-            const outline = new LineSegments(new EdgesGeometry(object.geometry), new LineBasicMaterial({ color: 0xd55e00, transparent: true }));
-            outline.position.copy(object.position);
-            outline.quaternion.copy(object.quaternion);
-            add(outline, [`${light}:blocker`], null);
+          const keys = shadowKeys.map((k) => `${light}:${k}`);
+          const colour = quantityColour('blocker');
+          const match = /^(sphere|plane) (\d+)$/.exec(String(step.value_full));
+          // The blocker's own test inside this light's block: where it meets the ray.
+          let s = null;
+          let sStep = null;
+          if (match)
+            for (const other of steps) {
+              if (ancestor(other, 'light') !== light || ancestor(other, match[1]) !== Number(match[2])) continue;
+              if (!['s_1', 's_2', 's'].includes(other.key)) continue;
+              const value = numberOf(other.value_full);
+              if (value > 0 && value < 1 && (s === null || value < s)) {
+                s = value;
+                sStep = other;
+              }
+            }
+          if (match && s !== null) {
+            const hit = p.clone().lerp(L, s); // P + sK
+            add(this.dashed(p, hit, colour), keys, null, null, colour);
+            add(this.dashed(hit, L, '#bbbbbb'), keys, null, null, '#bbbbbb');
+            const cross = new Mesh(new SphereGeometry(0.045, 12, 8), new MeshBasicMaterial({ color: 0xd55e00, transparent: true }));
+            cross.position.copy(hit);
+            const symbol = sStep.key === 's' ? 's' : sStep.key === 's_1' ? 's₁' : 's₂';
+            add(cross, keys, `P + ${symbol}K`, hit, '#D55E00', {
+              kind: 'shadow', light, symbol: t('page_draw_shadow_symbol'),
+              text: t('page_draw_shadow_blocked', {
+                light: lightName(light), blocker: shownOf(step).value_shown, s: `${symbol} = ${shownOf(sStep).value_shown}`,
+              }),
+              points: { from: p, to: L, hit }, data: { result: 'blocked', s: sStep.value_full, blocker: step.value_full },
+            });
+            const object = this.objects[match[1]][Number(match[2])];
+            if (object) {
+              const outline = new LineSegments(new EdgesGeometry(object.geometry), new LineBasicMaterial({ color: 0xd55e00, transparent: true }));
+              outline.position.copy(object.position);
+              outline.quaternion.copy(object.quaternion);
+              add(outline, keys, null, null, '#D55E00');
+            }
+          } else {
+            add(this.dashed(p, L, colour), keys, t('page_draw_shadow_free_label'), p.clone().lerp(L, 0.3), colour, {
+              kind: 'shadow', light, symbol: t('page_draw_shadow_symbol'),
+              text: t('page_draw_shadow_free', { light: lightName(light) }),
+              points: { from: p, to: L }, data: { result: 'free' },
+            });
           }
         }
         if ((step.key === 'R_hat' || step.key === 'R') && light >= 0) {
           const R = vec(step);
           if (R) {
             const tip = p.clone().add(toThree(R).normalize().multiplyScalar(0.7));
-            add(this.segment(p, tip, quantityColour('R_hat'), true), [`${light}:${step.key}`], 'R', tip, quantityColour('R_hat'));
+            add(this.segment(p, tip, quantityColour('R_hat'), true), [`${light}:${step.key}`], 'R', tip, quantityColour('R_hat'),
+              { kind: 'R', light, text: t('page_draw_R', { light: lightName(light) }), points: { from: p, to: tip } });
           }
         }
       });

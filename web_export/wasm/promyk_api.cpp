@@ -19,6 +19,7 @@
 #include "scene/scene_json.hpp"
 #include "trace/digits_alarm.hpp"
 #include "trace/digits_lost.hpp"
+#include "trace/formula_numbers.hpp"
 #include "trace/messages.hpp"
 #include "trace/number_text.hpp"
 #include "trace/trace_compare.hpp"
@@ -216,6 +217,8 @@ json make_view(PixelTrace trace, const View& view) {
                           {"title", group_text(language, t.kind, t.index)}, {"path", path_of(trace, static_cast<int>(g))}});
     }
 
+    // Each formula with the pixel's numbers put in (trace/formula_numbers.hpp).
+    const std::vector<std::string> numbers = formulas_with_numbers(trace, vocabulary, language, view.digits);
     json steps = json::array();
     for (std::size_t k = 0; k < trace.steps.size(); ++k) {
         const Step& step = trace.steps[k];
@@ -232,6 +235,7 @@ json make_view(PixelTrace trace, const View& view) {
                   {"symbol_tex", entry ? entry->latex : key},
                   {"formula_text", entry ? entry->formula : ""},
                   {"formula_tex", entry ? entry->formula_latex : ""},
+                  {"numbers_tex", numbers[k]},
                   {"description", entry ? (language == Language::pl ? entry->pl : entry->en) : ""},
                   {"value_full", trace_step_value_text(step, vocabulary, key, language, h.real, 0)},
                   {"value_shown", trace_step_value_text(step, vocabulary, key, language, h.real, view.digits)}};
@@ -477,7 +481,7 @@ PROMYK_EXPORT const char* promyk_open_traces(const char* bytes, int length) {
         json pixels = json::array();
         for (const PixelTrace& trace : file.traces) pixels.push_back({trace.header.i, trace.header.j});
         json out = {{"ok", true}, {"count", file.traces.size()}, {"w", h.w}, {"scene", h.scene_name},
-                    {"scene_hash", h.scene_hash}, {"real", h.real}, {"formula", h.formula}, {"spp", h.spp},
+                    {"scene_file", h.scene_file}, {"scene_hash", h.scene_hash}, {"real", h.real}, {"formula", h.formula}, {"spp", h.spp},
                     {"pixels", pixels}};
         state().traces = std::move(file);
         return out.dump();
