@@ -512,7 +512,7 @@ try {
     '--trace-region', '10,10,12,12', '-o', join(work, 'traces.png')]);
   const lines = readFileSync(traces, 'utf8').trim().split('\n');
   await pickFile(page, traces, 'traces-status');
-  assert.match(await page.textContent('#traces-status'), /9 traced pixels \(float, article, samples per pixel: 4\)/);
+  assert.match(await page.textContent('#traces-status'), /traced pixels: 9 \(float, article, samples per pixel: 4\)/);
   await selectPixel(page, 11, 12);
   assert.match(await page.textContent('#source-note'), /not recomputed/);
   assertSameValues(await shownSteps(page), cliSteps(lines[5]), 'trace file line (11, 12)');
