@@ -10,8 +10,8 @@
 #
 # PROMYK_FUZZ_SCALE multiplies every target's executions (default 1; 0 runs
 # the corpus alone). New inputs go to a scratch folder, never into the corpus.
-# Reproduce a finding: build/fuzz/tests/fuzz/fuzz_TARGET REPRODUCER
-# Explore longer: build/fuzz/tests/fuzz/fuzz_TARGET -dict=tests/fuzz/TARGET.dict \
+# Reproduce a finding: build/fuzz/fuzz_TARGET REPRODUCER
+# Explore longer: build/fuzz/fuzz_TARGET -dict=tests/fuzz/TARGET.dict \
 #   -max_total_time=900 NEW_DIR tests/fuzz/corpus/TARGET
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -41,7 +41,7 @@ if [ "$build" = 1 ]; then
   cmake --build --preset fuzz
 fi
 
-bin=build/fuzz/tests/fuzz
+bin=build/fuzz
 out=build/fuzz/fuzz-runs
 rm -rf "$out"
 mkdir -p "$out"
