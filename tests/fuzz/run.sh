@@ -25,12 +25,12 @@ fi
 # target  new executions  longest input (bytes)
 # (measured on a busy 2-core machine: about 3 minutes in all, corpus included)
 table=(
-  "scene       20000  16384"
-  "lesson       4000  20000"
-  "answers     20000   8192"
-  "diff        20000   8192"
-  "trace       20000  16384"
-  "cli_values 200000     64"
+  "scene       11000  16384"
+  "lesson       3000  20000"
+  "answers      6000   8192"
+  "diff         7500   8192"
+  "trace        5000  16384"
+  "cli_values  30000     64"
 )
 wanted=("$@")
 scale="${PROMYK_FUZZ_SCALE:-1}"
