@@ -384,7 +384,7 @@ private:
                 LessonPart part;
                 part.kind = PartKind::values;
                 part.line = number;
-                part.keys = words(trimmed.substr(2));
+                part.keys = words(std::string_view(line).substr(2));  // "= " with nothing after: trimmed is "="
                 step->parts.push_back(part);
                 continue;
             }

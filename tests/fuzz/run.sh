@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# The fuzz step of CI: builds the fuzz preset (clang, libFuzzer, AddressSanitizer,
+# UndefinedBehaviorSanitizer), then runs each target over its seed corpus
+# (tests/fuzz/corpus/TARGET/) and a fixed number of new executions from a
+# fixed seed (-runs=N -seed=1), so a run is repeatable and a chance finding
+# cannot block unrelated work. Fails on any crash, leak, undefined behaviour,
+# timeout or out-of-memory, and prints the reproducer's path.
+#
+#   tests/fuzz/run.sh [--no-build] [TARGET ...]     (TARGET: scene, lesson, ...)
+#
+# PROMYK_FUZZ_SCALE multiplies every target's executions (default 1; 0 runs
+# the corpus alone). New inputs go to a scratch folder, never into the corpus.
+# Reproduce a finding: build/fuzz/fuzz_TARGET REPRODUCER
+# Explore longer: build/fuzz/fuzz_TARGET -dict=tests/fuzz/TARGET.dict \
+#   -max_total_time=900 NEW_DIR tests/fuzz/corpus/TARGET
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+
+build=1
+if [ "${1:-}" = "--no-build" ]; then
+  build=0
+  shift
+fi
+
+# target  new executions  longest input (bytes)
+# (measured on a busy 2-core machine: about 3 minutes in all, corpus included)
+table=(
+  "scene       11000  16384"
+  "lesson       3000  20000"
+  "answers      6000   8192"
+  "diff         7500   8192"
+  "trace        5000  16384"
+  "cli_values  30000     64"
+)
+wanted=("$@")
+scale="${PROMYK_FUZZ_SCALE:-1}"
+
+if [ "$build" = 1 ]; then
+  echo "== fuzz build (preset fuzz)"
+  cmake --preset fuzz >/dev/null
+  cmake --build --preset fuzz
+fi
+
+bin=build/fuzz
+out=build/fuzz/fuzz-runs
+rm -rf "$out"
+mkdir -p "$out"
+failed=0
+for row in "${table[@]}"; do
+  read -r name runs max_len <<<"$row"
+  if [ ${#wanted[@]} -gt 0 ] && [[ ! " ${wanted[*]} " == *" $name "* ]]; then continue; fi
+  runs=$((runs * scale))
+  mkdir -p "$out/$name/new"
+  log="$out/$name/log.txt"
+  start=$SECONDS
+  status=0
+  # -runs counts the new executions after the corpus is read; the corpus is
+  # read from tests/fuzz/corpus/NAME and what is new goes to the scratch folder.
+  "$bin/fuzz_$name" -seed=1 -runs="$runs" -max_len="$max_len" -rss_limit_mb=2048 -timeout=20 \
+    -dict="tests/fuzz/$name.dict" -artifact_prefix="$out/$name/" -print_final_stats=1 \
+    "$out/$name/new" "tests/fuzz/corpus/$name" >"$log" 2>&1 || status=$?
+  last=$(grep -E '^#[0-9]+.*(cov|DONE)' "$log" | tail -1 || true)
+  if [ "$status" -ne 0 ]; then
+    failed=1
+    echo "fuzz_$name: FAILED (exit $status) after $((SECONDS - start)) s; the end of $log:"
+    tail -40 "$log" | sed 's/^/  /'
+    reproducer=$(sed -n 's/.*Test unit written to \(.*\)$/\1/p' "$log" | tail -1)
+    if [ -n "$reproducer" ]; then
+      echo "fuzz_$name: reproducer: $reproducer"
+      echo "fuzz_$name: rerun with: $bin/fuzz_$name $reproducer"
+    fi
+  else
+    echo "fuzz_$name: ok, $runs new executions in $((SECONDS - start)) s: $last"
+  fi
+done
+exit "$failed"
