@@ -366,6 +366,36 @@ TEST_CASE("boundary: a plane through the eye (t exactly 0) is behind the eye", "
     }
 }
 
+// A ray parallel to a plane (n.E = 0) misses it without a division, and a
+// shadow segment parallel to a plane (n.K = 0) is not blocked by it. The
+// floor y = -1 and the middle row of a 3 x 3 pane at z_E = 2, y_E = 0
+// exactly; then the floor scene's segment K = (0, 4, 0) beside the wall x = 5.
+TEST_CASE("boundary: a ray or a shadow segment exactly parallel to a plane neither hits nor crosses it",
+          "[boundary]") {
+    Scene floor = scene_at(2);
+    floor.planes = {Plane{{0, -1, 0}, {0, 1, 0}}};
+    floor.lights = {Light{{0, 5, 0}, 1}};
+    Scene wall = floor_scene();
+    wall.planes.push_back(Plane{{5, 0, 0}, {1, 0, 0}});
+    for_each_real([&](auto real) {
+        using Real = decltype(real);
+        INFO(real_name<Real>());
+        for (int j = 0; j < 3; ++j) {
+            const Outcome o = general<Plain, Article, Real>(floor, 3, 1, j);
+            CHECK(o.number(Key::NE, "plane 0") == 0);
+            CHECK(o.word(Key::found, "plane 0") == "parallel");
+            CHECK_FALSE(o.has(Key::t_plane, "plane 0"));
+            CHECK(o.all_finite());
+            CHECK(o.branch == Branch::miss);
+        }
+        const Outcome w = general<ShadowsMany, Article, Real>(wall, 2, 1, 0);
+        CHECK(w.number(Key::NK, "light 0/plane 1") == 0);
+        CHECK_FALSE(w.has(Key::s, "light 0/plane 1"));
+        CHECK(w.word(Key::blocker, "light 0") == "none");
+        CHECK(w.branch == Branch::lit);
+    });
+}
+
 // D = N.K = 0: the light in the tangent plane at P. E = (0, 0, 1),
 // S = (0, 0, 4), r = 1: t = 3, P = (0, 0, 3), N = (0, 0, -1); L = (5, 0, 3):
 // K = (5, 0, 0), D = 0: dark (D <= 0), in the article's kernel and in the
