@@ -739,3 +739,42 @@ TEST_CASE("boundary: two samples exactly as near the centre: the lower index is 
     REQUIRE(trace.samples);
     CHECK(trace.samples->centre == 27);
 }
+
+// Found by the random scenes scaled across the range (docs/boundaries.md):
+// a value beyond the type's range decided "behind the eye" where it decides
+// nothing. Each scene is in exact binary numbers.
+//
+// A root of -inf. E = (0, 0, 2^-80), S = (0, 0, -2^40), r = 1: in float
+// |E|^2 = 2^-160 underflows to 0, C = -2^-40, delta = C^2 = 2^-80, so the near
+// root (C - sqrt(delta)) / |E|^2 = -2^-39 / 0 = -inf (the sphere is behind the
+// eye, but no float can say where). In double every number is finite and the
+// sphere is behind the eye: a miss.
+//
+// q = -inf. E = (0, 0, 2), S = (0, 0, -2^62), r = 2^63 (the eye inside): in
+// float delta_g = 2^126 and |E|^2 delta_g = 2^128 overflows, q = C - inf, and
+// the stable and geometric roots are -inf and +0; the article's and fma's
+// delta = 2^128 overflows. In double the far root, 2^61, is seen from inside.
+TEST_CASE("boundary: a root of -inf is not behind the eye: it decides nothing (float)", "[boundary]") {
+    Scene behind = scene_at(0x1p-80);
+    behind.spheres = {Sphere{{0, 0, -0x1p40}, 1}};
+    behind.lights = {Light{{0, 5, 0}, 1}};
+    Scene inside = scene_at(2);
+    inside.spheres = {Sphere{{0, 0, -0x1p62}, 0x1p63}};
+    inside.lights = {Light{{0, 0, 0}, 1}};
+    for_each_formula([&](auto formula) {
+        using F = decltype(formula);
+        INFO("formula " << formula_name(F::id));
+        const Outcome a = article<F, float>(behind, axis_w, 0, 0);
+        CHECK(a.branch == Branch::non_finite);
+        CHECK(article<F, double>(behind, axis_w, 0, 0).branch == Branch::miss);
+        Scene with_shadows = behind;
+        with_shadows.shadows = true;
+        CHECK(general<Shadows, F, float>(with_shadows, axis_w, 0, 0).branch == Branch::non_finite);
+        CHECK(general<Shadows, F, double>(with_shadows, axis_w, 0, 0).branch == Branch::miss);
+        const Outcome i = general<Plain, F, float>(inside, axis_w, 0, 0);
+        CHECK(i.branch == Branch::non_finite);
+        const Outcome d = general<Plain, F, double>(inside, axis_w, 0, 0);
+        CHECK(d.word(Key::found, "sphere 0") == "far");
+        CHECK(d.number(Key::t_hit) == 0x1p61);
+    });
+}
