@@ -778,3 +778,26 @@ TEST_CASE("boundary: a root of -inf is not behind the eye: it decides nothing (f
         CHECK(d.number(Key::t_hit) == 0x1p61);
     });
 }
+
+// A plane beyond the type's range: Q = (0, 0, 2^130) is +inf in float, so
+// n_hat.Q is -inf and t = -inf / -1 = +inf would be "the horizon"; with
+// Q = (1.5 2^127, 0, 1.5 2^127) (finite floats) and n = (1, 0, 1),
+// n_hat.Q = 1.5 sqrt(2) 2^127 overflows float: t = inf / 0.7 decides nothing
+// either. In double both are far planes, hit at t = 2^130 and about 3 2^127:
+// decided, every number finite.
+TEST_CASE("boundary: a plane beyond the type's range decides nothing (float)", "[boundary]") {
+    Scene far_wall = scene_at(1);
+    far_wall.planes = {Plane{{0, 0, 0x1p130}, {0, 0, -1}}};
+    far_wall.lights = {Light{{0, 0, 0}, 1}};
+    Scene tilted = scene_at(1);
+    tilted.planes = {Plane{{0x1.8p127, 0, 0x1.8p127}, {1, 0, 1}}};
+    tilted.lights = {Light{{0, 0, 0}, 1}};
+    for (const Scene* scene : {&far_wall, &tilted}) {
+        const Outcome f = general<Plain, Article, float>(*scene, axis_w, 0, 0);
+        CHECK(f.branch == Branch::non_finite);
+        CHECK_FALSE(f.has(Key::found, "plane 0"));
+        const Outcome d = general<Plain, Article, double>(*scene, axis_w, 0, 0);
+        CHECK(d.branch != Branch::non_finite);
+        CHECK(d.all_finite());
+    }
+}
