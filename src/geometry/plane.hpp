@@ -16,7 +16,7 @@ namespace promyk {
 
 template <class Real>
 struct PlaneRoot {
-    Real t;   // > 0 and finite
+    Real t;   // > 0 and finite; NaN when n_hat.Q or n_hat.E is not (nothing decided)
     Real NE;  // n_hat.E: > 0 when the eye sees the plane's back
 };
 
@@ -36,6 +36,10 @@ std::optional<PlaneRoot<Real>> intersect_plane(const Vec3<Real>& E, const Vec3<R
         return std::nullopt;
     }
     const Real t = NQ / NE;
+    // n_hat.Q or n_hat.E beyond the type's range decides nothing (a float
+    // plane 1e39 away is not behind the eye): a NaN t, which the caller
+    // reports as non-finite, as it does a sphere's.
+    if (!(NQ * Real(0) + NE * Real(0) == Real(0))) return PlaneRoot<Real>{RealTraits<Real>::quiet_nan(), NE};
     // t may overflow for a ray all but parallel: the hit is beyond every
     // double, at the horizon, and is not drawn; no infinity reaches the trace.
     const bool finite = t * Real(0) == Real(0);

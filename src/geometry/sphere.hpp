@@ -68,7 +68,8 @@ std::optional<SphereRoot<Real>> nearest_root_ahead(Real t_a, Real t_b, Recorder&
     const bool finite = t_a * Real(0) == Real(0) && t_b * Real(0) == Real(0);
     const Real near = !finite ? (t_a * Real(0) == Real(0) ? t_b : t_a) : t_a < t_b ? t_a : t_b;
     const Real far = t_a < t_b ? t_b : t_a;
-    if (!(near <= 0)) {
+    // (A root of -inf, too, decides nothing: it is not "behind the eye".)
+    if (!finite || !(near <= 0)) {
         if constexpr (Recorder::records) record(Key::found, "near");
         return SphereRoot<Real>{near, false};
     }
@@ -89,8 +90,9 @@ std::optional<SphereRoot<Real>> intersect_sphere(const Vec3<Real>& E, const Vec3
         if constexpr (Recorder::records) record(Key::found, "miss");
         return std::nullopt;
     }
-    // A NaN t (delta not finite) passes on, to be reported as non-finite.
-    if (!(*t <= 0)) {
+    // A NaN or infinite t (delta, or the division by |E|^2, not finite) passes
+    // on, to be reported as non-finite.
+    if (!(*t <= 0) || !finite_value(*t)) {
         if constexpr (Recorder::records) record(Key::found, "near");
         return SphereRoot<Real>{*t, false};
     }

@@ -111,7 +111,10 @@ GeneralResult<typename World<Real, Rgb>::Intensity> trace_general(const World<Re
         record.begin_group("plane", static_cast<int>(k));
         ++work.plane_tests;
         if (const auto root = intersect_plane(E, plane.n_hat, plane.NQ, record)) {
-            if (root->t < best_t) best_t = root->t, kind = 2, index = static_cast<int>(k), best_NE = root->NE;
+            if (!finite_value(root->t))
+                undecided = true;
+            else if (root->t < best_t)
+                best_t = root->t, kind = 2, index = static_cast<int>(k), best_NE = root->NE;
         }
         record.end_group();
     };

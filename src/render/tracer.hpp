@@ -49,7 +49,7 @@ PixelResult<Real> trace_ray(const ArticleWorld<Real>& world, const Vec3<Real>& E
         if (!near) return {world.background, Branch::miss};
         // The engine's convention: only a hit in front of the eye is drawn. The
         // eye is outside the sphere here, so both roots are behind it too.
-        if (*near <= 0) {
+        if (*near <= 0 && *near >= RealTraits<Real>::lowest()) {  // -inf decides nothing
             if constexpr (Recorder::records) record(Key::found, "behind");
             return {world.background, Branch::miss};
         }
