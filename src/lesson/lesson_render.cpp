@@ -363,7 +363,8 @@ std::string text_values(const LessonView& view, const LessonPart& part) {
         const VocabularyEntry* entry = view.vocabulary.find(path_key(key));
         const std::string symbol = (entry ? lesson_symbol(language, *entry) : key) + group_suffix(view, key);
         const std::string formula = entry ? row_formula(view, key, *entry, false) : "";
-        out += "  " + symbol + (formula.empty() ? "" : " = " + formula) + "\n";
+        // A long formula (everything.json's I_P) wraps under its symbol.
+        out += wrap_text("  " + symbol + (formula.empty() ? "" : " = " + formula), 6) + "\n";
         std::vector<std::string> cells;
         for (const PixelTrace& trace : view.traces) {
             const std::optional<LessonNumber> number = lesson_number(view, trace, key);
