@@ -3,7 +3,8 @@
 // its own scene and on article.json and everything.json. No "—" inside a
 // sentence or an arithmetic line, no pixel named that was not chosen (but
 // the one a step's needs name), every group path shown exists in the scene,
-// and no fault --check would report (the runner's exit 3). Hidden from the
+// no fault --check would report (the runner's exit 3), no line wider than 80
+// columns nor ending early before a bracketed group. Hidden from the
 // default run ([.]): CTest runs it in the release pass only.
 #include <catch2/catch.hpp>
 
@@ -18,6 +19,7 @@
 #include "lesson/lesson_render.hpp"
 #include "render/kernel.hpp"
 #include "render/trace_pixel.hpp"
+#include "util/wrap.hpp"
 
 using namespace promyk;
 
@@ -73,6 +75,53 @@ bool names_pixel_in(const std::string& text) {
     return false;
 }
 
+// Every line fits 80 columns, and none ends right before a bracketed group
+// that would have fitted on it: the whole group when it is one the wrapper
+// keeps whole (util/wrap.hpp's group_columns), else its first word.
+void check_lines(const std::string& text) {
+    std::vector<std::string> lines;
+    for (std::size_t start = 0; start <= text.size();) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        lines.push_back(text.substr(start, end - start));
+        start = end + 1;
+    }
+    const auto depth = [](const std::string& piece) {
+        long open = 0;
+        for (const char c : piece) open += c == '(' || c == '[' ? 1 : c == ')' || c == ']' ? -1 : 0;
+        return open;
+    };
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+        if (display_width(lines[k]) > text_columns) FAIL_CHECK("wider than 80 columns: " << lines[k]);
+        if (k + 1 == lines.size() || lines[k].find_first_not_of(' ') == std::string::npos) continue;
+        const std::string& next = lines[k + 1];
+        const std::size_t first = next.find_first_not_of(' ');
+        if (first == std::string::npos || (next[first] != '(' && next[first] != '[')) continue;
+        // A deeper indent under a line that opens no list item or block is a
+        // table's cell ("  t = …" over "    (2, 5): 1.675"), not a wrapped line.
+        static const std::regex opens_item(R"(^ *([-*] |\d+\. |▸ ))");
+        if (first > lines[k].find_first_not_of(' ') && !std::regex_search(lines[k], opens_item)) continue;
+        // A table's next cell ("    (5, 1): [2.354, …]" under "    (0, 0): …").
+        static const std::regex cell(R"(^ {4,}\(\d+, \d+\): )");
+        if (std::regex_search(next, cell) && lines[k].find_first_not_of(' ') >= 2) continue;
+        // Code kept as written: lines of one indent of 4 or more; and a
+        // shallower line is a new row, never a wrapped line's continuation.
+        if (first >= 4 && first == lines[k].find_first_not_of(' ')) continue;
+        if (first < lines[k].find_first_not_of(' ')) continue;
+        std::size_t end = next.find(' ', first);
+        if (end == std::string::npos) end = next.size();
+        std::string unit = next.substr(first, end - first);
+        for (std::size_t group_end = end; depth(next.substr(first, group_end - first)) > 0 && group_end < next.size();) {
+            const std::size_t more = next.find(' ', group_end + 1);
+            group_end = more == std::string::npos ? next.size() : more;
+            const std::string group = next.substr(first, group_end - first);
+            if (depth(group) <= 0 && display_width(group) <= group_columns) unit = group;
+        }
+        if (display_width(lines[k]) + 1 + display_width(unit) <= text_columns)
+            FAIL_CHECK("a line ends before a group that fits on it:\n" << lines[k] << "\n" << next);
+    }
+}
+
 struct Case {
     const Lesson* lesson;
     std::string scene_file;  // as --scene names it (the lesson's own when it is)
@@ -103,6 +152,7 @@ void sweep_one(const Case& c, const Scene& scene, Traces& traces, int w) {
     for (const auto& [i, j] : c.pixels) where += " " + std::to_string(i) + "," + std::to_string(j);
     INFO(where);
     for (const Placeholder& p : find_placeholders(text)) FAIL_CHECK("left in the output: " << p.name);
+    check_lines(text);
     // A value in a sentence (prose, a block, an answer) that the pixel did not
     // reach, or the scene does not have, would print "—": none may be shown.
     // And every group path a shown part names exists in the scene.

@@ -69,6 +69,10 @@ TEST_CASE("the tracer emits only vocabulary keys, with values of the vocabulary'
     back.planes = {Plane{{0, 0, 3}, {0, 0, 1}}};
     back.lights = {Light{{0, 0, 1}, 1}};
     scenes.emplace_back(back, 4);
+    // Phong's squarings up to RV^8192 need n >= 8192.
+    Scene shiny = load_scene_file(PROMYK_SOURCE_DIR "/lessons/scenes/phong.json");
+    shiny.materials[0].exponent = 10000;
+    scenes.emplace_back(shiny, 8);
     Scene behind = article_scene();
     behind.spheres[0].S.z = -3.2;
     scenes.emplace_back(behind, 8);

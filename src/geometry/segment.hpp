@@ -36,6 +36,12 @@ Blocks sphere_blocks(const Vec3<Real>& P, const Vec3<Real>& K, Real KK, const Ve
     const Real s_1 = (b_s - q) / KK;
     record(Key::s_1, s_1);
     if constexpr (Recorder::estimates) record.lost(Key::s_1, b_s, q, b_s - q);
+    if constexpr (Recorder::records) {
+        // Where the line enters the sphere, for a lesson to check by hand.
+        const Vec3<Real> P_s1 = P + s_1 * K;
+        record(Key::P_s1, P_s1);
+        record(Key::d_s1, square_root(length_squared(P_s1 - S)));
+    }
     const Real s_2 = (b_s + q) / KK;
     record(Key::s_2, s_2);
     if constexpr (Recorder::estimates) record.lost(Key::s_2, b_s, q, b_s + q);

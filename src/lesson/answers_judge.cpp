@@ -12,6 +12,7 @@
 
 #include "lesson/lesson_check.hpp"
 #include "lesson/lesson_render.hpp"
+#include "trace/intensity_formula.hpp"
 #include "trace/messages.hpp"
 #include "util/errors.hpp"
 #include "util/printable.hpp"
@@ -320,7 +321,8 @@ std::string answers_report(const std::vector<AnswerCheck>& checks, const std::ve
             out += (out.empty() ? "" : "\n") +
                    message(language, "answers_pixel",
                            {{"pixel", pixel},
-                            {"branch", branch ? (language == Language::pl ? branch->pl : branch->en) : std::string(branch_name(trace->branch))}}) +
+                            {"branch", branch ? branch_about(vocabulary, trace->branch, effect_set(*trace), language)
+                                              : std::string(branch_name(trace->branch))}}) +
                    "\n";
         }
         if (check.verdict == Verdict::unreadable) {

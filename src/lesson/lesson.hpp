@@ -59,10 +59,11 @@ enum class PartKind {
 // "has:t" (the computation reached t), "no:t", "D>0", "light[0].D<=0", "t<1.5";
 // and "on:own" (the lesson runs on its own scene) or "on:FILE" (on that scene).
 struct Condition {
-    enum class Op { exists, missing, less, less_equal, greater, greater_equal, on_scene };
+    enum class Op { exists, missing, less, less_equal, greater, greater_equal, on_scene, is_word };
     std::string path;  // a path, with a settings qualifier if written; on_scene: the file, empty for the own
     Op op = Op::exists;
     double bound = 0;
+    std::string word;  // is_word: the step's word as the trace writes it ("plane 0" for plane[0])
     std::string text;  // as written, for messages
 };
 

@@ -31,10 +31,11 @@ const std::vector<GroupShape>& group_shapes() {
     static const std::vector<GroupShape> shapes = {
         {"sphere", {"EE", "SS", "C", "delta", "Delta", "sqrt_Delta", "t", "t_far", "found", "S", "r"}},
         {"plane", {"n_hat", "NQ", "NE", "t_plane", "found", "Q", "n"}},
-        {"light", {"K", "KK", "K_len", "K_P", "D", "cos_alpha", "blocker", "diffuse", "R_hat", "RV", "RV_n", "specular",
-                   "contribution", "L", "I", "c"}},
+        {"light", {"K", "KK", "K_len", "K_P", "D", "cos_alpha", "blocker", "diffuse", "R_hat", "RV", "RV_2", "RV_4",
+                   "RV_8", "RV_16", "RV_32", "RV_64", "RV_128", "RV_256", "RV_512", "RV_1024", "RV_2048", "RV_4096",
+                   "RV_8192", "RV_n", "specular", "contribution", "L", "I", "c"}},
         {"material", {"k_a", "k_d", "k_s", "exponent", "m"}},  // the scene's only: no trace group
-        {"light.sphere", {"b_s", "c_s", "delta_s", "s_1", "s_2", "found", "s_own"}},
+        {"light.sphere", {"b_s", "c_s", "delta_s", "s_1", "P_s1", "d_s1", "s_2", "found", "s_own"}},
         {"light.plane", {"NK", "s", "found"}},
     };
     return shapes;

@@ -446,6 +446,19 @@ std::optional<Condition> parse_condition(const std::string& token) {
         if (used != number.size()) return std::nullopt;
         return condition;
     }
+    // PATH=WORD: a word step ("nearest=plane[0]": the nearest hit is plane 0).
+    if (const std::size_t at = token.find('='); at != std::string::npos && at > 0 && at + 1 < token.size()) {
+        condition.path = token.substr(0, at);
+        condition.op = Condition::Op::is_word;
+        condition.word = token.substr(at + 1);
+        if (!path_ok(condition.path)) return std::nullopt;
+        // An object as a path names it ("plane[0]"), the trace as a word ("plane 0").
+        const std::size_t open = condition.word.find('[');
+        if (open != std::string::npos && condition.word.back() == ']')
+            condition.word = condition.word.substr(0, open) + " " +
+                             condition.word.substr(open + 1, condition.word.size() - open - 2);
+        return condition;
+    }
     return std::nullopt;
 }
 

@@ -1,6 +1,7 @@
 #include "lesson/lesson_render.hpp"
 
 #include "util/text.hpp"
+#include "util/wrap.hpp"
 
 #include <algorithm>
 
@@ -19,7 +20,7 @@ namespace promyk {
 
 namespace {
 
-constexpr std::size_t columns = 80;
+constexpr std::size_t columns = text_columns;
 
 std::string kind_of(const Vocabulary& vocabulary, const std::string& path) {
     const VocabularyEntry* entry = vocabulary.find(path_key(path));
@@ -42,10 +43,10 @@ std::string not_reached_cell(const PixelTrace& trace, Language language) {
                    {{"branch", message(language, "branch_name_" + std::string(branch_name(trace.branch)))}});
 }
 
-std::string branch_text(const Vocabulary& vocabulary, Branch branch, Language language) {
-    const BranchEntry* entry = vocabulary.find_branch(branch_name(branch));
-    if (entry == nullptr) return std::string(branch_name(branch));
-    return language == Language::pl ? entry->pl : entry->en;
+// The branch in words, its formula the one of the trace's scene's effects.
+std::string branch_text(const Vocabulary& vocabulary, const PixelTrace& trace, Language language) {
+    if (vocabulary.find_branch(branch_name(trace.branch)) == nullptr) return std::string(branch_name(trace.branch));
+    return branch_about(vocabulary, trace.branch, effect_set(trace), language);
 }
 
 // A key's symbol in the lesson's language: the vocabulary's, unless
@@ -98,7 +99,7 @@ std::string fill(const LessonView& view, const std::string& text, const PixelTra
         } else if (p.name == "i" || p.name == "j") {
             out += std::to_string(p.name == "i" ? trace->header.i : trace->header.j);
         } else if (p.name == "branch") {
-            out += branch_text(view.vocabulary, trace->branch, language);
+            out += branch_text(view.vocabulary, *trace, language);
         } else {
             // Prose may name only the scene's values, the same in every trace.
             const PixelTrace& source = trace != nullptr ? *trace : view.traces.front();
@@ -165,19 +166,13 @@ bool scene_shown(const LessonView& view, const LessonPart& part) {
     return part.scene.empty() ? view.own_scene : part.scene == view.scene_file;
 }
 
-// A table row's formula of I_P: the one of the scene's effects.
+// A table row's formula: I_P's and a light's contribution's are the ones of
+// the scene's effects; the others the vocabulary's (or the lesson's own).
 std::string row_formula(const LessonView& view, const std::string& key, const VocabularyEntry& entry, bool latex) {
-    // A light's contribution: without Phong and colour, the part of it the scene uses.
-    if (path_key(key) == "contribution" && !view.traces.empty()) {
-        const IntensityFormula& formula = intensity_formula(effect_set(view.traces.front()));
-        if (!formula.contribution.empty()) return latex ? formula.contribution_latex : formula.contribution;
-    }
-    if (key == "I_P" && !view.traces.empty()) {
+    const std::string bare = path_key(key);
+    if ((bare == "contribution" || key == "I_P") && !view.traces.empty()) {
         const std::string effects = effect_set(view.traces.front());
-        if (effects != "lambert") {
-            const IntensityFormula& formula = intensity_formula(effects);
-            return latex ? formula.formula_latex : formula.formula;
-        }
+        if (bare == "contribution" || effects != "lambert") return step_formula(&entry, bare, effects, latex);
     }
     return lesson_formula(view.lesson.language, key, entry, latex);
 }
@@ -197,6 +192,8 @@ std::string needs_text(const LessonView& view, const LessonStep& step) {
         std::string text = message(view.lesson.language, "lesson_needs_has", {{"value", named}});
         if (condition.op == Condition::Op::missing)
             text = message(view.lesson.language, "lesson_needs_missing", {{"value", named}});
+        else if (condition.op == Condition::Op::is_word)
+            text = named + " = " + word_text(view.lesson.language, condition.word);
         else if (condition.op != Condition::Op::exists)
             text = named + ops[static_cast<int>(condition.op)] +
                    shown_number(condition.bound, view.lesson.language, 0);
@@ -293,46 +290,9 @@ std::string plain(std::string text) {
     return out;
 }
 
+// The lesson's prose wrapped by the one wrapper every text output uses.
 std::string wrap(const std::string& text, std::size_t indent, std::size_t first_used = 0) {
-    std::string out;
-    std::size_t used = first_used;
-    std::size_t k = 0;
-    bool first_word = true;
-    const auto next_word = [&] {
-        const std::size_t space = text.find(' ', k);
-        std::string word = text.substr(k, space == std::string::npos ? std::string::npos : space - k);
-        k = space == std::string::npos ? text.size() : space + 1;
-        return word;
-    };
-    while (k < text.size()) {
-        std::string word = next_word();
-        if (word.empty()) continue;
-        // A short parenthesised group, a pixel "(0, 0)" or a point
-        // "(0,25; −0,75; 2)", is never broken across lines.
-        const auto open = [](const std::string& w) {
-            return std::count(w.begin(), w.end(), '(') + std::count(w.begin(), w.end(), '[') -
-                   std::count(w.begin(), w.end(), ')') - std::count(w.begin(), w.end(), ']');
-        };
-        for (std::size_t saved = k; open(word) > 0 && k < text.size(); saved = k) {
-            const std::string more = next_word();
-            if (display_width(word) + 1 + display_width(more) > 40) {
-                k = saved;
-                break;
-            }
-            word += " " + more;
-        }
-        if (!first_word && used + 1 + display_width(word) > columns) {
-            out += '\n' + std::string(indent, ' ');
-            used = indent;
-        } else if (!first_word) {
-            out += ' ';
-            ++used;
-        }
-        out += word;
-        used += display_width(word);
-        first_word = false;
-    }
-    return out;
+    return wrap_text(text, indent, columns, first_used);
 }
 
 // The width of a list item's marker ("- ", "* ", "12. "), or 0.
@@ -403,7 +363,8 @@ std::string text_values(const LessonView& view, const LessonPart& part) {
         const VocabularyEntry* entry = view.vocabulary.find(path_key(key));
         const std::string symbol = (entry ? lesson_symbol(language, *entry) : key) + group_suffix(view, key);
         const std::string formula = entry ? row_formula(view, key, *entry, false) : "";
-        out += "  " + symbol + (formula.empty() ? "" : " = " + formula) + "\n";
+        // A long formula (everything.json's I_P) wraps under its symbol.
+        out += wrap_text("  " + symbol + (formula.empty() ? "" : " = " + formula), 6) + "\n";
         std::vector<std::string> cells;
         for (const PixelTrace& trace : view.traces) {
             const std::optional<LessonNumber> number = lesson_number(view, trace, key);
@@ -772,6 +733,10 @@ bool condition_holds(const LessonView& view, const PixelTrace& trace, const Cond
     const std::optional<LessonNumber> number = lesson_number(view, trace, condition.path);
     if (condition.op == Condition::Op::exists) return number.has_value();
     if (condition.op == Condition::Op::missing) return !number.has_value();
+    if (condition.op == Condition::Op::is_word) {
+        const std::string* word = number ? std::get_if<std::string>(&number->value) : nullptr;
+        return word != nullptr && *word == condition.word;
+    }
     const double* value = number ? std::get_if<double>(&number->value) : nullptr;
     if (value == nullptr) return false;
     switch (condition.op) {

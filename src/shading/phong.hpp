@@ -28,6 +28,15 @@ Real phong_specular(const Vec3<Real>& N, Real r, const Vec3<Real>& K, Real KK, c
     record(Key::RV, RV);
     record.lost_in_dot(Key::RV, R_hat, V_hat, RV);
     if (!(RV > 0)) return Real(0);
+    if constexpr (Recorder::records) {
+        // The squarings power() makes, RV^2, RV^4, ... while 2^k <= n: the
+        // same products, so the same bits, for a lesson to show.
+        Real square = RV;
+        for (int k = 1; k <= squaring_count && (1 << k) <= n; ++k) {
+            square = square * square;
+            record(squaring_key(k), square);
+        }
+    }
     const Real RV_n = power(RV, n);
     record(Key::RV_n, RV_n);
     const Real specular = I * (k_s * RV_n);

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <variant>
 
+#include "trace/intensity_formula.hpp"
 #include "trace/number_text.hpp"
 #include "trace/trace_text.hpp"
 
@@ -201,6 +202,8 @@ std::vector<std::string> formulas_with_numbers(const PixelTrace& trace, const Vo
     }
     bool objects_learned = false;
 
+    // I_P's and a light's contribution's formulas are the scene's effect set's.
+    const std::string effects = effect_set(trace);
     std::vector<std::string> out;
     out.reserve(trace.steps.size());
     for (const Step& step : trace.steps) {
@@ -215,7 +218,8 @@ std::vector<std::string> formulas_with_numbers(const PixelTrace& trace, const Vo
         // A sample's E is the pixel's centre moved by (u, v): the centre's
         // formula with i, j, w put in would not give its value.
         const bool jittered = step.key == Key::E && in_kind(trace, step.group, "sample");
-        out.push_back(entry && !entry->formula_latex.empty() && !jittered ? with_numbers(entry->formula_latex, scope) : "");
+        const std::string formula_latex = entry ? step_formula(entry, key, effects, true) : std::string();
+        out.push_back(!formula_latex.empty() && !jittered ? with_numbers(formula_latex, scope) : "");
         if (!entry || entry->latex.empty()) continue;
         // What this step found is known from here on, under its symbol.
         const std::string text = trace_step_value_text(step, vocabulary, key, language, h.real, digits);
@@ -230,7 +234,7 @@ std::vector<std::string> formulas_with_numbers(const PixelTrace& trace, const Vo
         }
         scope.learn(entry->latex, text, components);
         // The program's name on the formula's left (C for E·S, D for N·K).
-        const std::string& formula = entry->formula_latex;
+        const std::string& formula = formula_latex;
         const std::size_t name = formula.find_first_not_of(' ');
         if (name != std::string::npos && is_letter(formula[name])) {
             const std::size_t equals = formula.find_first_not_of(' ', name + 1);

@@ -32,12 +32,24 @@ const std::vector<IntensityFormula>& formulas() {
 }  // namespace
 
 std::string effect_set(const Scene& scene) {
-    if (is_coloured(scene)) return "colour";
-    for (const Material& material : scene.materials)
-        if (material.specular > 0 || material.ambient > 0) return "phong";
-    if (scene.shadows) return "shadows";
-    if (scene.lights.size() > 1) return "lights";
-    return "lambert";
+    bool phong = false, weights = false;
+    const auto takes = [&](int index) {
+        const Material& m = material_of(scene, index);
+        phong = phong || m.specular > 0;
+        weights = weights || m.ambient > 0 || m.diffuse != 1;
+    };
+    for (const Sphere& sphere : scene.spheres) takes(sphere.material);
+    for (const Plane& plane : scene.planes) takes(plane.material);
+    std::string out;
+    const auto add = [&out](bool on, const char* flag) {
+        if (on) out += (out.empty() ? "" : "+") + std::string(flag);
+    };
+    add(scene.lights.size() > 1, "lights");
+    add(scene.shadows, "shadows");
+    add(phong, "phong");
+    add(weights && !phong, "weights");
+    add(is_coloured(scene), "colour");
+    return out.empty() ? "lambert" : out;
 }
 
 std::string effect_set(const PixelTrace& trace) {
@@ -65,6 +77,26 @@ std::string intensity_formula_text(std::string_view effects, Language language) 
     const IntensityFormula& formula = intensity_formula(effects);
     const std::string& note = language == Language::pl ? formula.pl : formula.en;
     return formula.formula + (note.empty() ? "" : (language == Language::pl ? "; " : "; ") + note);
+}
+
+std::string step_formula(const VocabularyEntry* entry, std::string_view key, std::string_view effects, bool latex) {
+    if (key == "I_P" || key == "contribution") {
+        const IntensityFormula& formula = intensity_formula(effects);
+        if (key == "contribution") return latex ? formula.contribution_latex : formula.contribution;
+        return latex ? formula.formula_latex : formula.formula;
+    }
+    if (entry == nullptr) return "";
+    return latex ? entry->formula_latex : entry->formula;
+}
+
+std::string branch_about(const Vocabulary& vocabulary, Branch branch, std::string_view effects, Language language) {
+    const BranchEntry* entry = vocabulary.find_branch(branch_name(branch));
+    if (entry == nullptr) return "";
+    std::string text = language == Language::pl ? entry->pl : entry->en;
+    const std::string_view mark = "{formula}";
+    if (const std::size_t at = text.find(mark); at != std::string::npos)
+        text.replace(at, mark.size(), intensity_formula(effects).formula);
+    return text;
 }
 
 }  // namespace promyk

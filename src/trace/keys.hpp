@@ -74,9 +74,15 @@ enum class Key {
     sample_v,  // the same along i (down)
     I_s,       // the sample's intensity (its r, g, b in a coloured scene)
     I_mean,    // the pixel's intensity: the mean of its samples'
+    // Lesson-only steps (recorded only by a recording recorder). Phong's
+    // repeated squaring: RV^2, RV^4, ... up to the largest power of two <= n
+    // (n <= 10000, so at most RV^8192); the shadow ray's entry point.
+    RV_2, RV_4, RV_8, RV_16, RV_32, RV_64, RV_128, RV_256, RV_512, RV_1024, RV_2048, RV_4096, RV_8192,
+    P_s1,  // P + s_1 K: where the shadow ray's line enters a sphere
+    d_s1,  // |P + s_1 K - S|: its distance from the sphere's centre (r, up to rounding)
 };
 
-inline constexpr std::array<std::string_view, 58> key_names = {
+inline constexpr std::array<std::string_view, 73> key_names = {
     "E",       "EE",     "SS",    "C",     "delta",   "t",     "P",       "N",        "K",
     "KK",      "D",      "Delta", "sqrt_Delta", "N_P", "K_len", "K_P",   "cos_alpha", "t_far",
     "found",   "nearest", "flipped", "n_hat", "NQ",   "NE",    "b_s",     "c_s",      "delta_s",
@@ -84,7 +90,13 @@ inline constexpr std::array<std::string_view, 58> key_names = {
     "RV",      "RV_n",   "specular", "contribution", "t_plane", "t_hit", "N_plane",
     "c_0",     "q",      "t_q",   "t_c",   "w_fma",   "e_fma", "delta_fma", "t_mid", "l",
     "ll",      "delta_g", "sample_u", "sample_v", "I_s", "I_mean",
+    "RV_2",    "RV_4",   "RV_8",  "RV_16", "RV_32", "RV_64", "RV_128", "RV_256", "RV_512",
+    "RV_1024", "RV_2048", "RV_4096", "RV_8192", "P_s1", "d_s1",
 };
+
+// The key of RV^(2^k), 1 <= k <= 13 (Phong's repeated squaring).
+inline constexpr int squaring_count = 13;
+constexpr Key squaring_key(int k) { return static_cast<Key>(static_cast<int>(Key::RV_2) + k - 1); }
 
 // The article's program's own steps, as opposed to the lessons' extra ones.
 constexpr bool is_program_key(Key key) { return key <= Key::D; }
@@ -95,7 +107,7 @@ constexpr std::string_view key_name(Key key) { return key_names[static_cast<std:
 enum class Branch {
     miss,  // delta <= 0: the ray misses (a tangent ray misses too, as in the article)
     dark,  // D <= 0: the hit point is on the sphere's dark side
-    lit,   // D > 0: lit, I_P = I D / (r sqrt(K)) (some light reaches the lit side)
+    lit,   // D > 0 and some light reaches the point (I_P by the scene's effects)
     // A value that decides the branch (delta, |K|^2, D) or the result is NaN
     // or infinite: no comparison with it may pass for a miss, dark or lit.
     non_finite,

@@ -198,7 +198,8 @@ std::string narrow_steps(const PixelTrace& trace, const Vocabulary& vocabulary, 
         const VocabularyEntry* entry = vocabulary.find(key);
         const std::string symbol = trace_symbol(vocabulary, key, options.language);
         const std::string lead = fmt::format("{}{:>{}}  {}", margin, k + 1, number_width, pad(key, key_width + 2));
-        out += wrap(lead, entry && !entry->formula.empty() ? symbol + " = " + entry->formula : symbol, indent);
+        const std::string formula = step_formula(entry, key, effect_set(trace));
+        out += wrap(lead, !formula.empty() ? symbol + " = " + formula : symbol, indent);
         if (options.explain && entry)
             out += wrap(std::string(indent, ' '), options.language == Language::pl ? entry->pl : entry->en, indent);
         out += wrap(std::string(indent, ' ') + "= ",
@@ -231,7 +232,8 @@ std::string wide_steps(const PixelTrace& trace, const Vocabulary& vocabulary, co
         }
         const VocabularyEntry* entry = vocabulary.find(bare);
         const std::string mark = trace_digits_lost_mark(step, trace, language);
-        rows.push_back({std::to_string(k + 1), key, trace_symbol(vocabulary, bare, language), entry ? entry->formula : "",
+        rows.push_back({std::to_string(k + 1), key, trace_symbol(vocabulary, bare, language),
+                        step_formula(entry, bare, effect_set(trace)),
                         trace_step_value_text(step, vocabulary, bare, language, trace.header.real, options.digits) +
                             (mark.empty() ? "" : "  " + mark)});
     }
@@ -313,7 +315,7 @@ std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, c
     const Language language = options.language;
     const std::string branch(branch_name(trace.branch));
     const BranchEntry* about = vocabulary.find_branch(branch);
-    const std::string about_text = about ? (language == Language::pl ? about->pl : about->en) : "";
+    const std::string about_text = branch_about(vocabulary, trace.branch, effect_set(trace), language);
     const std::string branch_lead = message(language, "trace_branch");
     std::string out = "\n" + wrap(branch_lead, message(language, "branch_name_" + branch) + (about ? " — " + about_text : ""),
                                   display_width(branch_lead));

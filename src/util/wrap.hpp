@@ -12,32 +12,47 @@ namespace promyk {
 
 inline constexpr std::size_t text_columns = 80;
 
+// The widest bracketed group that is kept on one line: a pixel "(3, 4)", a
+// point "(0,1323; 0,1323; 2,116)". A longer group breaks like prose.
+inline constexpr std::size_t group_columns = 40;
+
 // `text` with each of its lines broken at spaces so that none is wider than
-// `columns` (display width); continuation lines start with `indent` spaces.
-// A word longer than a line stays whole. No trailing newline is added.
-inline std::string wrap_text(std::string_view text, std::size_t indent = 0, std::size_t columns = text_columns) {
+// `columns` (display width); continuation lines start with `indent` spaces;
+// `first_used` columns of the first line are taken already (a lead printed
+// before it). A word longer than a line stays whole; so does a bracketed
+// group of at most group_columns, moved whole to the next line when it does
+// not fit (a longer one is not: a line never ends early before it). A line's
+// own leading spaces are kept (an indented example). No trailing newline.
+inline std::string wrap_text(std::string_view text, std::size_t indent = 0, std::size_t columns = text_columns,
+                             std::size_t first_used = 0) {
+    // How many brackets a piece leaves open.
+    const auto open = [](std::string_view piece) {
+        long depth = 0;
+        for (const char c : piece) depth += c == '(' || c == '[' ? 1 : c == ')' || c == ']' ? -1 : 0;
+        return depth;
+    };
     std::string out;
     std::size_t line_start = 0;
+    std::size_t width = first_used;
     while (line_start <= text.size()) {
         const std::size_t line_end = std::min(text.find('\n', line_start), text.size());
         const std::string_view line = text.substr(line_start, line_end - line_start);
-        std::size_t width = 0, k = 0;
+        std::size_t k = 0;
         bool first_word = true;
         while (k < line.size()) {
-            // keep the line's own leading spaces (an indented example)
             std::size_t word_end = line.find(' ', first_word ? line.find_first_not_of(' ', k) : k);
             if (word_end == std::string_view::npos) word_end = line.size();
-            // A short group in brackets, a pixel "(3, 4)", is never broken.
-            const auto open = [](std::string_view w) {
-                long depth = 0;
-                for (const char c : w) depth += c == '(' || c == '[' ? 1 : c == ')' || c == ']' ? -1 : 0;
-                return depth;
-            };
-            while (word_end < line.size() && open(line.substr(k, word_end - k)) > 0) {
-                std::size_t next = line.find(' ', word_end + 1);
-                if (next == std::string_view::npos) next = line.size();
-                if (display_width(line.substr(k, next - k)) > 24) break;
-                word_end = next;
+            // A word that opens a group: the group is one unit when it is
+            // short; else the word stands alone.
+            if (open(line.substr(k, word_end - k)) > 0) {
+                std::size_t group_end = word_end;
+                while (group_end < line.size() && open(line.substr(k, group_end - k)) > 0) {
+                    const std::size_t next = line.find(' ', group_end + 1);
+                    group_end = next == std::string_view::npos ? line.size() : next;
+                }
+                if (open(line.substr(k, group_end - k)) <= 0 &&
+                    display_width(line.substr(k, group_end - k)) <= group_columns)
+                    word_end = group_end;
             }
             const std::string_view word = line.substr(k, word_end - k);
             if (!first_word && width + 1 + display_width(word) > columns) {
@@ -54,6 +69,7 @@ inline std::string wrap_text(std::string_view text, std::size_t indent = 0, std:
         }
         if (line_end >= text.size()) break;
         out += '\n';
+        width = 0;
         line_start = line_end + 1;
     }
     return out;

@@ -17,6 +17,7 @@
 #include "render/maps.hpp"
 #include "render/trace_pixel.hpp"
 #include "scene/scene_json.hpp"
+#include "trace/intensity_formula.hpp"
 #include "trace/digits_alarm.hpp"
 #include "trace/digits_lost.hpp"
 #include "trace/formula_numbers.hpp"
@@ -233,8 +234,8 @@ json make_view(PixelTrace trace, const View& view) {
                   {"kind", word ? std::string("word") : trace_kind(vocabulary, key)},
                   {"symbol", trace_symbol(vocabulary, key, language)},
                   {"symbol_tex", entry ? entry->latex : key},
-                  {"formula_text", entry ? entry->formula : ""},
-                  {"formula_tex", entry ? entry->formula_latex : ""},
+                  {"formula_text", step_formula(entry, key, effect_set(trace))},
+                  {"formula_tex", step_formula(entry, key, effect_set(trace), true)},
                   {"numbers_tex", numbers[k]},
                   {"description", entry ? (language == Language::pl ? entry->pl : entry->en) : ""},
                   {"value_full", trace_step_value_text(step, vocabulary, key, language, h.real, 0)},
@@ -286,7 +287,7 @@ json make_view(PixelTrace trace, const View& view) {
     json out = {{"lang", std::string(language_code(language))}, {"digits", view.digits}, {"header", header},
                 {"groups", groups}, {"steps", steps}, {"branch", branch},
                 {"branch_name", message(language, "branch_name_" + branch)},
-                {"reason", about ? (language == Language::pl ? about->pl : about->en) : ""},
+                {"reason", about ? branch_about(vocabulary, trace.branch, effect_set(trace), language) : ""},
                 {"hit_object", trace.hit_object},
                 {"hit_object_text", trace.hit_object.empty() ? "" : word_text(language, trace.hit_object)},
                 {"I_P_full", result_text(0)}, {"I_P_shown", result_text(view.digits)}, {"I_P_formula", formula},
