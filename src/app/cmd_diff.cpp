@@ -94,7 +94,7 @@ std::function<int()> setup_diff(CLI::App& app) {
     add_format_option(*cmd, options->format, {"text", "json"},
                       "text: a table of the digits that agree; json: the result as one JSON object");
     add_max_trace_size_option(*cmd, options->max_trace_size)
-        ->description("Read each side up to SIZE bytes (default 1GB, at least 128MiB): the limit\n"
+        ->description("Read each side up to SIZE bytes (default 250MB, at least 128MiB): the limit\n"
                       "promyk trace keeps to, so that its traces can be compared");
     cmd->footer(
         "Examples: promyk trace --real float --format json > a.json\n"

@@ -534,7 +534,7 @@ std::function<int()> setup_render(CLI::App& app) {
         ->type_name("I0,J0,I1,J1")
         ->allow_extra_args(false);
     cmd->add_flag("--force", options->force,
-                  "Write a trace file even if it would be larger than the trace limit (1 GB)");
+                  "Write a trace file even if it would be larger than the trace limit (250 MB)");
     add_max_trace_size_option(*cmd, options->max_trace_size);
     cmd->add_option("--map", options->map,
                     "Draw a per-pixel quantity instead of the shading, in colour (.png or .ppm; docs/maps.md):\n"

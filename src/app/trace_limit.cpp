@@ -49,7 +49,7 @@ std::optional<double> parse_size(const std::string& text) {
 CLI::Option* add_max_trace_size_option(CLI::App& cmd, std::string& size) {
     return cmd
         .add_option("--max-trace-size", size,
-                    "The largest trace to build, estimated from the scene before tracing (default 1GB):\n"
+                    "The largest trace to build, estimated from the scene before tracing (default 250MB):\n"
                     "bytes, or with a unit (500MB, 2GB, 3GiB)")
         ->type_name("SIZE")
         ->check(CLI::Validator(

@@ -1,6 +1,6 @@
 // The bound on a trace's size (issue 19): a pixel's trace is estimated from
 // the scene's counts (render/trace_size.hpp) before anything is traced, and
-// refused (exit 2) above the limit, 10^9 bytes unless --max-trace-size. The
+// refused (exit 2) above the limit, 250 MB unless --max-trace-size. The
 // same limit bounds render's --traces file and what diff reads, so that
 // promyk's own traces stay diffable.
 #pragma once

@@ -38,8 +38,11 @@ struct TraceSizeEstimate {
 
 // The limit on one pixel's trace (trace, lesson, export, the traces diff
 // reads) and on a render's --traces file, unless --max-trace-size: a trace
-// of 10^9 bytes takes about as much memory again to hold.
-inline constexpr double default_max_trace_size = 1e9;
+// is held whole in memory (about 1.5 times its JSON) and written out once
+// more, so one of 1,000 spheres x 1,000 lights with shadows (about 0.35 GB
+// of JSON, 0.6 GB of text) is refused; a whole w = 512 render's traces
+// (about 150 MB) is not.
+inline constexpr double default_max_trace_size = 250e6;
 
 // Bounds of the model below against a pixel's real trace (tested in
 // [trace-size]): at most this many times the real JSON trace of a pixel that

@@ -9,6 +9,7 @@
 # a name lists as its file's name; a failed lesson --dump leaves no folder.
 # usage: trace_limits_test.sh PROMYK WORKDIR
 promyk=$1 dir=$2
+scenes=$(cd "$(dirname "$0")/scenes" && pwd)
 . "$(dirname "$0")/lib.sh"
 
 # Sphere 0 fills the pane's middle, the other spheres are small and behind
@@ -98,8 +99,8 @@ head -c 160000000 /dev/zero | "$promyk" diff - a.json >out.txt 2>err.txt
 [ $? = 3 ] && ! joined | grep -q "larger than" && ok || bad "diff under the default limit: $(joined)"
 
 # 4. diff: a group index from 2^31 on, or not a number, is refused, not skipped.
-"$promyk" trace --scene "$(dirname "$0")/scenes/everything_canonical.json" --pixel 3,4 --format json >e.json 2>/dev/null
-"$promyk" trace --scene "$(dirname "$0")/scenes/everything_canonical.json" --pixel 3,4 --format json --real float >f.json 2>/dev/null
+"$promyk" trace --scene "$scenes/everything_canonical.json" --pixel 3,4 --format json >e.json 2>/dev/null
+"$promyk" trace --scene "$scenes/everything_canonical.json" --pixel 3,4 --format json --real float >f.json 2>/dev/null
 grep -q '"index":1,' e.json || bad "everything's trace has no group index 1"
 for index in 2147483648 9999999999 -1 1.5 '"1"'; do
     sed "s/\"index\":1,/\"index\":$index,/" e.json >g.json
