@@ -62,7 +62,9 @@ refused "render --traces -" render --scene big.json --w 8 -o x.png --traces - --
 [ $? = 2 ] && joined | grep -q "ślad zająłby około [0-9,]* MB" && joined | grep -q -- "--max-trace-size" && ok ||
     bad "Polish refusal: $(joined)"
 # Within 80 columns.
-awk '{ if (length($0) > 80) exit 1 }' err.txt && ok || bad "Polish refusal wider than 80 columns"
+wide=0
+while IFS= read -r line; do [ ${#line} -le 80 ] || wide=1; done <err.txt  # characters, in C.UTF-8
+[ $wide = 0 ] && ok || bad "Polish refusal wider than 80 columns"
 
 # 2. A smaller scene (150 x 150) under a small limit: refused; the size the
 # message suggests lets it run, and the trace is then below the estimate.
@@ -102,14 +104,15 @@ head -c 160000000 /dev/zero | "$promyk" diff - a.json >out.txt 2>err.txt
 "$promyk" trace --scene "$scenes/everything_canonical.json" --pixel 3,4 --format json >e.json 2>/dev/null
 "$promyk" trace --scene "$scenes/everything_canonical.json" --pixel 3,4 --format json --real float >f.json 2>/dev/null
 grep -q '"index":1,' e.json || bad "everything's trace has no group index 1"
-for index in 2147483648 9999999999 -1 1.5 '"1"'; do
+for index in 2147483648 9999999999 -1 1.5; do
     sed "s/\"index\":1,/\"index\":$index,/" e.json >g.json
     "$promyk" diff g.json f.json >out.txt 2>err.txt
     [ $? = 3 ] && joined | grep -q "group index" && ok || bad "group index $index: $(joined)"
 done
+# 2^31 - 1 is read as an index (then refused as a key the scene does not have).
 sed 's/"index":1,/"index":2147483647,/' e.json >g.json
 "$promyk" diff g.json f.json >out.txt 2>err.txt
-[ $? != 3 ] && ok || bad "group index 2147483647 refused: $(joined)"
+joined | grep -q 'sphere\[2147483647\]' && ok || bad "group index 2147483647: $(joined)"
 # A real type promyk does not have.
 sed 's/"real":"double"/"real":"octuple"/' e.json >g.json
 grep -q octuple g.json || bad "no numeric.real in the trace"
