@@ -1,6 +1,7 @@
 // promyk diff A B: two traces of a pixel (two real types, two formulas), or a
 // trace and a student's numbers, compared step by step; exit 1 when they
 // diverge beyond the tolerance.
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <cstdlib>
@@ -12,6 +13,7 @@
 #include "app/commands.hpp"
 #include "util/wrap.hpp"
 #include "app/common_options.hpp"
+#include "app/trace_limit.hpp"
 #include "lesson/trace_diff.hpp"
 #include "trace/messages.hpp"
 #include "trace/vocabulary.hpp"
@@ -26,11 +28,16 @@ struct DiffCommandOptions {
     std::string a, b;
     std::optional<double> tol;
     std::string format = "text";
+    std::string max_trace_size;  // --max-trace-size; empty: the default limit
 };
 
-DiffInput read_input(const std::string& path, Language language) {
+// Each side is read up to the trace limit (at least 128 MiB), so that any
+// trace promyk builds within the limit can be compared.
+DiffInput read_input(const std::string& path, Language language, const std::string& max_trace_size) {
     const std::string shown = path == "-" ? "(stdin)" : path;
-    return {shown, read_answers(cli::read_input_file(path, "diff reads", cli::max_diff_input_bytes, "diff"), shown, builtin_vocabulary(), language,
+    const double limit = std::max(static_cast<double>(cli::max_diff_input_bytes), trace_size_limit(max_trace_size));
+    const std::size_t max_bytes = limit >= 1.8e19 ? static_cast<std::size_t>(-1) - 1 : static_cast<std::size_t>(limit);
+    return {shown, read_answers(cli::read_input_file(path, "diff reads", max_bytes, "diff"), shown, builtin_vocabulary(), language,
                                 diff_first_pixel, AnswerLimits{})};
 }
 
@@ -38,8 +45,8 @@ int run_diff(const DiffCommandOptions& options) {
     if (options.a == "-" && options.b == "-")
         throw UsageError("only one of A and B can be - (standard input)");
     const Language language = ui_language();
-    const DiffInput a = read_input(options.a, language);
-    const DiffInput b = read_input(options.b, language);
+    const DiffInput a = read_input(options.a, language, options.max_trace_size);
+    const DiffInput b = read_input(options.b, language, options.max_trace_size);
     DiffOptions diff_options;
     diff_options.relative_tolerance = options.tol;
     const DiffResult result = diff_inputs(a, b, builtin_vocabulary(), diff_options, language);
@@ -86,6 +93,9 @@ std::function<int()> setup_diff(CLI::App& app) {
         ->check(relative_tolerance());
     add_format_option(*cmd, options->format, {"text", "json"},
                       "text: a table of the digits that agree; json: the result as one JSON object");
+    add_max_trace_size_option(*cmd, options->max_trace_size)
+        ->description("Read each side up to SIZE bytes (default 250MB, at least 128MiB): the limit\n"
+                      "promyk trace keeps to, so that its traces can be compared");
     cmd->footer(
         "Examples: promyk trace --real float --format json > a.json\n"
         "          promyk trace --real quad --format json > b.json\n"

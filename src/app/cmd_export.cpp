@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli_values.hpp"
+#include "app/trace_limit.hpp"
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
 #include "app/web_page.hpp"
@@ -50,6 +51,7 @@ struct ExportOptions {
     int w = 128;
     std::string traces_file;
     std::string output = "promyk.html";
+    std::string max_trace_size;  // --max-trace-size; empty: the default limit
 };
 
 // 1.2 MB, 350 kB: SI units, as disk sizes are sold.
@@ -179,6 +181,11 @@ int run_export(const ExportOptions& options) {
                             : load_scene_text(scene_text = cli::read_input_file(options.scene_file, "--scene reads",
                                                                                 max_scene_file_bytes, "--scene"),
                                               options.scene_file);
+    // The page traces any pixel on a click: a scene whose pixel's trace is
+    // above the limit is refused here, not left to the browser.
+    TraceCost cost;
+    cost.scene = &scene;
+    require_trace_size(cost, options.max_trace_size);
     std::string traces;
     if (!options.traces_file.empty()) {
         traces = read_traces(options.traces_file);
@@ -240,6 +247,7 @@ std::function<int()> setup_export(CLI::App& app) {
         ->type_name("FILE")
         ->check(non_empty())
         ->capture_default_str();
+    add_max_trace_size_option(*cmd, options->max_trace_size);
     cmd->footer(
         "The page opens from disk with no server and no network: it runs promyk's own tracer compiled to\n"
         "WebAssembly, so any pixel is traced in the browser, value for value as promyk trace. It needs\n"

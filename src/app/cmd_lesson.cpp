@@ -22,6 +22,7 @@
 #include "app/cli_values.hpp"
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
+#include "app/trace_limit.hpp"
 #include "lesson/answers.hpp"
 #include "lesson/lesson_check.hpp"
 #include "lesson/lesson_library.hpp"
@@ -35,6 +36,7 @@
 #include "render/trace_pixel.hpp"
 #include "scene/scene_json.hpp"
 #include "util/errors.hpp"
+#include "util/interrupt.hpp"
 #include "util/output_file.hpp"
 #include "util/printable.hpp"
 #include "util/standard_output.hpp"
@@ -62,6 +64,7 @@ struct LessonOptions {
     Formula formula = Formula::article;
     int spp = 1;
     bool real_given = false, formula_given = false, spp_given = false;
+    std::string max_trace_size;  // --max-trace-size; empty: the default limit
 };
 
 std::optional<RealType> real_type_named(const std::string& name) {
@@ -104,6 +107,14 @@ void print(const std::string& text) {
     flush_standard_output();
 }
 
+// A lesson's name as a list shows it: a file with no name (an empty file)
+// shows as its file's name, not as a blank.
+std::string shown_name(const Lesson& lesson) {
+    if (!lesson.header.name.empty()) return lesson.header.name;
+    const std::size_t slash = lesson.file.find_last_of("/\\");
+    return printable(slash == std::string::npos ? lesson.file : lesson.file.substr(slash + 1));
+}
+
 int run_check(const LessonLibrary& library, Language language) {
     std::vector<LessonProblem> problems;
     const std::vector<Lesson> lessons = library.lessons(problems);
@@ -140,7 +151,10 @@ int run_list(const LessonLibrary& library, Language language) {
     std::size_t width = 0;
     std::vector<Lesson> lessons;
     for (Lesson& lesson : library.lessons(problems))
-        if (lesson.language == language) lessons.push_back(std::move(lesson));
+        if (lesson.language == language) {
+            lesson.header.name = shown_name(lesson);
+            lessons.push_back(std::move(lesson));
+        }
     for (const Lesson& lesson : lessons) width = std::max(width, lesson.header.name.size());
     // Each summary wrapped under itself, so the list fits 80 columns.
     // A name too long for a column of its own (a teacher's own lesson) puts
@@ -180,7 +194,7 @@ std::vector<std::string> lesson_names(const LessonLibrary& library, Language lan
     std::vector<LessonProblem> problems;
     std::vector<std::string> names;
     for (const Lesson& lesson : library.lessons(problems))
-        if (lesson.language == language) names.push_back(lesson.header.name);
+        if (lesson.language == language) names.push_back(shown_name(lesson));
     return names;
 }
 
@@ -301,6 +315,13 @@ int run_lesson(const LessonOptions& options) {
         qualifiers.push_back(use.settings);
     }
     const int spp = options.spp_given ? options.spp : lesson.header.spp;
+    // Each pixel's trace, estimated from the scene before anything is traced
+    // (quad for the other settings a lesson may name).
+    TraceCost cost;
+    cost.scene = &scene;
+    cost.real = qualifiers.empty() && options.answers.empty() ? real : RealType::quad_;
+    cost.spp = spp;
+    require_trace_size(cost, options.max_trace_size);
     const std::unique_ptr<Kernel> kernel = make_kernel(scene, real, formula, spp);
     const TraceHeader header = trace_header(scene, w);
     view.scene = &scene;
@@ -316,6 +337,8 @@ int run_lesson(const LessonOptions& options) {
     auto pane = std::make_shared<std::map<std::pair<int, int>, PixelTrace>>();
     const Kernel* pane_kernel = kernel.get();
     view.pane_pixel = [pane, pane_kernel, header](int i, int j) -> const PixelTrace& {
+        // A step's needs may search a large pane, pixel by pixel: a signal stops it.
+        throw_if_interrupted();
         auto at = pane->find({i, j});
         if (at == pane->end()) at = pane->emplace(std::make_pair(i, j), pane_kernel->trace(header, i, j)).first;
         return at->second;
@@ -388,6 +411,7 @@ std::function<int()> setup_lesson(CLI::App& app) {
     cmd->add_flag("--check", options->check,
                   "Check every lesson against the vocabulary and its translation; exit 1 on a fault");
     cmd->add_flag("--step", options->step, "Wait for Enter between steps and before each answer (for class)");
+    add_max_trace_size_option(*cmd, options->max_trace_size);
     cmd->add_option("--dump", options->dump, "Write the built-in lessons into DIR, for a teacher to edit")
         ->type_name("DIR")
         ->check(non_empty());

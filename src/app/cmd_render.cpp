@@ -24,6 +24,7 @@
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
 #include "app/progress.hpp"
+#include "app/trace_limit.hpp"
 #include "image/framed_writer.hpp"
 #include "image/legend.hpp"
 #include "image/pane_labels.hpp"
@@ -45,9 +46,6 @@ namespace promyk::app {
 
 namespace {
 
-// Above this a trace file needs --force: a full trace at w = 512 is already
-// ~150 MB, at w = 2048 ~2.5 GB.
-constexpr double trace_file_limit = 1e9;
 
 struct RenderOptions {
     std::string scene_file;
@@ -65,6 +63,7 @@ struct RenderOptions {
     std::vector<std::string> trace_pixels;
     std::vector<std::string> trace_regions;
     bool force = false;
+    std::string max_trace_size;  // --max-trace-size; empty: the default limit
     std::string map;  // empty: the shading; else a map_name (render/maps.hpp)
     bool labels = false;  // row and column numbers on the margins
     bool legend = false;  // a map's legend below it
@@ -359,15 +358,32 @@ int run_render(const RenderOptions& options) {
     // The size guard protects disks: it applies where the traces land in a
     // regular file (a path, or standard output redirected to one), not to a
     // pipe, a terminal or /dev/null.
-    if (traces_target && traces_target->lands_in_regular_file && !options.force) {
-        const TraceSizeEstimate estimate = estimate_trace_size(scene, options.w, traced.pixels, 256, options.real,
-                                                                     options.formula, options.spp);
-        if (estimate.bytes() > trace_file_limit) {
-            throw UsageError(fmt::format(
-                "--traces {} would be about {} ({} traces of about {} each); add --force to write it anyway, "
-                "or choose fewer pixels with --trace-pixel or --trace-region",
-                traces_target->display_name(), byte_size(estimate.bytes()), estimate.pixels,
-                byte_size(estimate.bytes_per_trace)));
+    if (traces_target) {
+        // Each pixel's trace is built whole before it is written: bounded
+        // like trace's (a full trace at w = 512 is already ~150 MB, at
+        // w = 2048 ~2.5 GB).
+        TraceCost cost;
+        cost.scene = &scene;
+        cost.real = options.real;
+        cost.spp = options.spp;
+        require_trace_size(cost, options.max_trace_size);
+        const double limit = trace_size_limit(options.max_trace_size);
+        const std::int64_t pixels = count_traced_pixels(traced.pixels, options.w);
+        if (traces_target->lands_in_regular_file && !options.force &&
+            static_cast<double>(pixels) * trace_cost_bytes(cost) > limit) {
+            const TraceSizeEstimate estimate = estimate_trace_size(scene, options.w, traced.pixels, 256, options.real,
+                                                                   options.formula, options.spp);
+            if (estimate.bytes() > limit) {
+                const double magnitude = std::pow(10.0, std::floor(std::log10(estimate.bytes())));
+                throw UsageError(ui_message(
+                    "limit_traces_file_too_large",
+                    {{"file", traces_target->display_name()},
+                     {"estimate", byte_size_text(estimate.bytes())},
+                     {"pixels", std::to_string(estimate.pixels)},
+                     {"each", byte_size_text(estimate.bytes_per_trace)},
+                     {"limit", byte_size_text(limit)},
+                     {"enough", fmt::format("{:.0f}", std::ceil(estimate.bytes() / magnitude) * magnitude)}}));
+            }
         }
     }
 
@@ -517,7 +533,9 @@ std::function<int()> setup_render(CLI::App& app) {
                     "Trace the pixels of rectangle I0,J0,I1,J1, corners included (repeatable)")
         ->type_name("I0,J0,I1,J1")
         ->allow_extra_args(false);
-    cmd->add_flag("--force", options->force, "Write a trace file even if it would be larger than about 1 GB");
+    cmd->add_flag("--force", options->force,
+                  "Write a trace file even if it would be larger than the trace limit (250 MB)");
+    add_max_trace_size_option(*cmd, options->max_trace_size);
     cmd->add_option("--map", options->map,
                     "Draw a per-pixel quantity instead of the shading, in colour (.png or .ppm; docs/maps.md):\n"
                     "branch: the branch taken (miss, dark, lit, shadowed, non-finite) and the notes tangent\n"

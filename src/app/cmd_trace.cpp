@@ -13,6 +13,7 @@
 #include "app/cli_values.hpp"
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
+#include "app/trace_limit.hpp"
 #include "render/trace_pixel.hpp"
 #include "trace/messages.hpp"
 #include "trace/trace_compare.hpp"
@@ -37,6 +38,7 @@ struct TraceOptions {
     std::string compare;  // "float,double,quad": trace in each, side by side
     Formula formula = Formula::article;
     int spp = 1;
+    std::string max_trace_size;  // --max-trace-size; empty: the default limit
 };
 
 // The types of --compare, least precise first (the last is the reference).
@@ -67,9 +69,19 @@ int run_trace(const TraceOptions& options) {
     const cli::Pixel pixel = cli::parse_pixel(options.pixel, "--pixel", options.w);
     const Scene scene = cli::load_scene_option(options.scene_file);
     const Language language = ui_language();
+    // The trace's size, estimated from the scene before anything is traced.
+    TraceCost cost;
+    cost.scene = &scene;
+    cost.real = options.real;
+    cost.spp = options.spp;
+    cost.text = options.format != "json";
     if (!options.compare.empty()) {
+        const std::vector<RealType> types = compared_types(options.compare);
+        cost.real = RealType::quad_;  // the larger size of a type other than double, for each
+        cost.traces = static_cast<int>(types.size());
+        require_trace_size(cost, options.max_trace_size);
         std::vector<PixelTrace> traces;
-        for (const RealType type : compared_types(options.compare))
+        for (const RealType type : types)
             traces.push_back(trace_pixel(scene, options.w, pixel.i, pixel.j, type, options.formula, options.spp));
         std::string out;
         if (options.format == "json") {
@@ -83,6 +95,7 @@ int run_trace(const TraceOptions& options) {
         write_standard_output(out);
         return 0;
     }
+    require_trace_size(cost, options.max_trace_size);
     const PixelTrace trace = trace_pixel(scene, options.w, pixel.i, pixel.j, options.real, options.formula, options.spp);
     std::string out;
     if (options.format == "json") {
@@ -119,6 +132,7 @@ std::function<int()> setup_trace(CLI::App& app) {
         ->excludes("--real");
     add_formula_option(*cmd, options->formula);
     add_spp_option(*cmd, options->spp);
+    add_max_trace_size_option(*cmd, options->max_trace_size);
     add_scene_option(*cmd, options->scene_file);
     add_format_option(*cmd, options->format, {"text", "json"}, "text: an aligned table; json: the trace as one JSON line");
     cmd->add_flag("--wide", options->wide,

@@ -93,6 +93,7 @@ struct TraceSummary {
     std::string real = "double";  // numeric.real: float, double, long-double, quad
     std::string formula;
     std::string scene;
+    std::string scene_hash;  // empty when the trace has none
     int w = 0;
     std::string branch;  // miss, dark, lit, ... (empty when the trace has none)
     std::string hit;     // the object hit ("sphere 0"), when the trace says

@@ -304,8 +304,9 @@ std::vector<PixelAnswers> parse_lines(std::string_view text, const std::string& 
         if (!limits.forgiving)
             for (const Answer& earlier : mine.answers)
                 if (earlier.key == answer.key && earlier.component == answer.component)
+                    // diff's numbers stand under no pixel (-1, -1) until a heading names one.
                     fail(file, language, line_number,
-                         message(language, "answers_error_twice",
+                         message(language, pixel.i < 0 ? "answers_error_twice_no_pixel" : "answers_error_twice",
                                  {{"key", key_text}, {"line", std::to_string(earlier.line)},
                                   {"i", std::to_string(pixel.i)}, {"j", std::to_string(pixel.j)}}));
         mine.answers.push_back(std::move(answer));
@@ -485,8 +486,10 @@ AnswerFile parse_json(std::string_view text, const std::string& file, const Voca
         const auto whole = [](const json& value) -> std::optional<int> {
             if (!value.is_string()) return std::nullopt;
             const std::string& digits = value.get_ref<const std::string&>();
-            if (digits.empty() || digits.size() > 6 || digits.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
-            return std::stoi(digits);
+            if (digits.empty() || digits.size() > 10 || digits.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
+            const long long number = std::stoll(digits);
+            if (number > 2147483647) return std::nullopt;
+            return static_cast<int>(number);
         };
         const json pixel = root.value("pixel", json::object());
         if (!pixel.is_object()) fail_at(file, "/pixel", message(language, "answers_error_trace"));
@@ -511,8 +514,16 @@ AnswerFile parse_json(std::string_view text, const std::string& file, const Voca
         };
         const json numeric = root.value("numeric", json::object());
         if (!text_of(numeric, "real").empty()) summary->real = text_of(numeric, "real");
+        // Each step's tolerance follows the type: a type promyk has no precision for is refused.
+        if (numeric.is_object() && numeric.contains("real")) {
+            const std::string real = text_of(numeric, "real");
+            if (real != "float" && real != "double" && real != "long-double" && real != "quad")
+                fail_at(file, "/numeric/real",
+                        message(language, "diff_real_unknown", {{"real", printable(json_text_of(numeric.at("real")))}}));
+        }
         summary->formula = text_of(numeric, "formula");
         summary->scene = text_of(root, "scene");
+        summary->scene_hash = text_of(root, "scene_hash");
         summary->w = trace_w.value_or(0);
         summary->branch = text_of(root, "branch");
         summary->hit = text_of(root, "hit");
@@ -526,6 +537,12 @@ AnswerFile parse_json(std::string_view text, const std::string& file, const Voca
                     if (step.contains("group")) {
                         const json& kind = step.at("group");
                         const std::optional<int> index = whole(step.value("index", json()));
+                        // An index promyk never writes (2^31, -1, 1.5) would drop the group and
+                        // every difference in it: refused, not skipped.
+                        if (!index)
+                            fail_at(file, fmt::format("{}/{}/index", pointer, k),
+                                    message(language, "diff_group_index",
+                                            {{"index", printable(json_text_of(step.value("index", json())))}}));
                         if (kind.is_string() && index && step.contains("steps") && step.at("steps").is_array())
                             read_steps(step.at("steps"), prefix + kind.get<std::string>() + "[" + std::to_string(*index) + "].",
                                        fmt::format("{}/{}/steps", pointer, k));

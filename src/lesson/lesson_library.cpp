@@ -136,12 +136,20 @@ void LessonLibrary::dump_builtin(const std::string& folder) {
             throw UsageError(ui_message("dump_folder_exists", {{"folder", path.string()}}));
     }
     // All or nothing: a failure (a full disk) removes the files written so
-    // far, so that no half-filled folder is left for the next --dump to refuse.
+    // far and the folders made for them (DIR/, DIR/en/), so that no
+    // half-filled or empty folder is left for the next --dump to refuse.
     std::vector<fs::path> written;
+    std::vector<fs::path> created;  // each folder before the folders inside it
     try {
         for (const embedded::EmbeddedFile& file : embedded::lesson_files()) {
             const fs::path path = fs::path(folder) / std::string(file.path);
             std::error_code error;
+            std::vector<fs::path> missing;
+            for (fs::path up = path.parent_path(); !up.empty() && !fs::exists(up, error); up = up.parent_path()) {
+                missing.push_back(up);
+                if (up == up.parent_path()) break;
+            }
+            created.insert(created.end(), missing.rbegin(), missing.rend());
             fs::create_directories(path.parent_path(), error);
             if (error)
                 throw OutputError(ui_message("cannot_create", {{"path", path.parent_path().string()},
@@ -155,6 +163,10 @@ void LessonLibrary::dump_builtin(const std::string& folder) {
         for (const fs::path& path : written) {
             std::error_code ignored;
             fs::remove(path, ignored);
+        }
+        for (auto folder_made = created.rbegin(); folder_made != created.rend(); ++folder_made) {
+            std::error_code ignored;
+            fs::remove(*folder_made, ignored);  // only when empty: never a file the teacher put there since
         }
         throw;
     }

@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <unordered_set>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "trace/messages.hpp"
 #include "util/errors.hpp"
+#include "util/interrupt.hpp"
 #include "util/text.hpp"
 
 namespace promyk {
@@ -111,9 +113,21 @@ Side side_of(const DiffInput& input, LessonPixel pixel) {
 std::vector<std::string> merged_order(const Side& primary, const Side& other) {
     std::vector<std::string> order;
     for (const SideStep& step : primary.steps) order.push_back(step.path);
+    // Paths are unique on each side. A path of both is looked for after the
+    // last match first: two traces of one scene match step after step, and a
+    // search from the start each time was quadratic (hours for a trace of
+    // thousands of objects and lights).
+    const std::unordered_set<std::string> in_primary(order.begin(), order.end());
     std::size_t at = 0;
+    std::size_t visited = 0;
     for (const SideStep& step : other.steps) {
-        const auto found = std::find(order.begin(), order.end(), step.path);
+        if ((visited++ & 4095) == 0) throw_if_interrupted();
+        auto found = order.end();
+        if (in_primary.count(step.path) > 0) {
+            const auto from = order.begin() + static_cast<std::ptrdiff_t>(at);
+            found = std::find(from, order.end(), step.path);
+            if (found == order.end()) found = std::find(order.begin(), from, step.path);
+        }
         if (found != order.end()) {
             at = static_cast<std::size_t>(found - order.begin()) + 1;
         } else {
@@ -327,6 +341,16 @@ std::string diff_report(const DiffResult& result, const DiffInput& a, const Diff
     if (ta && tb) {
         const LessonPixel pa = a.answers.pixels.front().pixel, pb = b.answers.pixels.front().pixel;
         if (!same_pixel(pa, pb)) out += message(language, "diff_other_pixels") + "\n";
+        // Said before the branches: two scenes' (or panes') steps need not agree at all.
+        if (!ta->scene_hash.empty() && !tb->scene_hash.empty() && ta->scene_hash != tb->scene_hash) {
+            const bool same_name = ta->scene == tb->scene;
+            const auto named = [same_name](const TraceSummary& t) {
+                return "\"" + t.scene + "\"" + (same_name ? " (" + t.scene_hash.substr(0, 12) + ")" : "");
+            };
+            out += message(language, "diff_other_scene", {{"a", named(*ta)}, {"b", named(*tb)}}) + "\n";
+        }
+        if (ta->w > 0 && tb->w > 0 && ta->w != tb->w)
+            out += message(language, "diff_other_w", {{"a", std::to_string(ta->w)}, {"b", std::to_string(tb->w)}}) + "\n";
         if (ta->branch != tb->branch || ta->hit != tb->hit)
             out += message(language, "diff_branches",
                            {{"a", ta->branch + (ta->hit.empty() ? "" : " (" + ta->hit + ")")},

@@ -1,12 +1,14 @@
 #include "render/trace_size.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "render/kernel.hpp"
 #include "render/trace_pixel.hpp"
 #include "render/tracer.hpp"
 #include "trace/trace.hpp"
+#include "util/interrupt.hpp"
 
 namespace promyk {
 namespace {
@@ -49,7 +51,49 @@ void for_each_run(const TracedPixels& traced, int w, Visit&& visit) {
     }
 }
 
+// The model's parts, in bytes of JSON in double: measured on traces of
+// scenes of 1 to 41 spheres, planes and lights whose every test takes its
+// longest path (every root computed), with numbers of 16 or 17 digits, and
+// raised so that the estimate stays above every one of them (1.2 to 2.2
+// times the real size; tests/trace_bound_test.cpp).
+struct PartBytes {
+    double header;         // the header without the scene's objects
+    double per_given;      // each object and light in the header (scene text and given values)
+    double sample;         // a sample's own steps: E, the hit, P, N, I_s
+    double eye_sphere;     // a sphere tested from the eye
+    double eye_plane;      // a plane tested from the eye
+    double light;          // a light's own steps: K, |K|², D, cos α, contribution, Phong
+    double shadow_sphere;  // a sphere tested on the way to a light
+    double shadow_plane;   // a plane tested on the way to a light
+};
+constexpr PartBytes double_bytes{1000, 200, 700, 520, 400, 800, 380, 200};
+
+// The most bytes of traces estimate_trace_size builds to measure them.
+constexpr double sampling_budget = 64e6;
+
+// A type other than double writes each number again as its own text
+// (measured: float 1.3, long double 1.6, quad 1.75 times double's steps).
+double real_factor(RealType real) {
+    switch (real) {
+        case RealType::float_: return 1.45;
+        case RealType::long_double: return 1.8;
+        case RealType::quad_: return 1.85;
+        default: return 1.0;
+    }
+}
+
 }  // namespace
+
+double pixel_trace_bytes(const Scene& scene, RealType real, int spp) {
+    const PartBytes& b = double_bytes;
+    const double spheres = static_cast<double>(scene.spheres.size());
+    const double planes = static_cast<double>(scene.planes.size());
+    const double lights = static_cast<double>(scene.lights.size());
+    const double shadow_tests = scene.shadows ? spheres * b.shadow_sphere + planes * b.shadow_plane : 0.0;
+    const double sample = b.sample + spheres * b.eye_sphere + planes * b.eye_plane + lights * (b.light + shadow_tests);
+    const double header = b.header + (spheres + planes + lights) * b.per_given;
+    return header + real_factor(real) * static_cast<double>(std::max(spp, 1)) * sample;
+}
 
 std::int64_t count_traced_pixels(const TracedPixels& traced, int w) {
     if (traced.all) return static_cast<std::int64_t>(w) * w;
@@ -99,6 +143,12 @@ TraceSizeEstimate estimate_trace_size(const Scene& scene, int w, const TracedPix
                                       RealType real, Formula formula, int spp) {
     TraceSizeEstimate estimate;
     estimate.pixels = count_traced_pixels(traced, w);
+    // Sampling builds whole traces: at most sampling_budget bytes of them,
+    // and none when a single pixel's would be larger; then the model's
+    // estimate stands for every pixel (an upper bound: misses are smaller).
+    const double bound = pixel_trace_bytes(scene, real, spp);
+    estimate.bytes_per_trace = bound;
+    samples = static_cast<int>(std::min<double>(samples, std::floor(sampling_budget / bound)));
     const auto sample = sample_traced_pixels(traced, w, samples);
     if (sample.empty()) return estimate;
     const std::unique_ptr<Kernel> kernel = make_kernel(scene, real, formula, spp);
@@ -106,6 +156,7 @@ TraceSizeEstimate estimate_trace_size(const Scene& scene, int w, const TracedPix
     std::string line;
     std::size_t total = 0;
     for (const auto& [i, j] : sample) {
+        throw_if_interrupted();
         line.clear();
         append_trace_json(line, kernel->trace(header, i, j));
         total += line.size() + 1;  // the newline

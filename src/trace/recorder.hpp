@@ -16,6 +16,7 @@
 #include "math/vec3.hpp"
 #include "trace/digits_lost.hpp"
 #include "trace/keys.hpp"
+#include "util/interrupt.hpp"
 
 namespace promyk {
 
@@ -160,6 +161,9 @@ private:
     // of an uninitialised string when a Step holding a number is moved into
     // the vector from a temporary.
     Step& add(Key key) {
+        // A pixel of thousands of objects and lights takes seconds to trace:
+        // a signal stops it here (Interrupted), as it stops the renderer's rows.
+        if ((steps_.size() & 4095) == 0) throw_if_interrupted();
         Step& step = steps_.emplace_back();
         step.key = key;
         step.group = current_;

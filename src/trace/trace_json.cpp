@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "util/interrupt.hpp"
 #include "trace/json_text.hpp"
 #include "trace/messages.hpp"
 #include "trace/trace.hpp"
@@ -130,7 +131,9 @@ void append_steps(std::string& out, const PixelTrace& trace) {
     out += ",\"steps\":[";
     std::vector<int> open;   // the groups open now, outermost first
     bool first = true;       // no element yet in the innermost open array
+    std::size_t written = 0;
     for (const Step& step : trace.steps) {
+        if ((written++ & 4095) == 0) throw_if_interrupted();  // a trace of millions of steps takes seconds
         const std::vector<int> chain = group_chain(trace.groups, step.group);
         std::size_t common = 0;
         while (common < open.size() && common < chain.size() && open[common] == chain[common]) ++common;

@@ -13,6 +13,7 @@
 #include "trace/digits_alarm.hpp"
 #include "trace/digits_lost.hpp"
 #include "trace/messages.hpp"
+#include "util/interrupt.hpp"
 #include "util/text.hpp"
 #include "util/wrap.hpp"
 
@@ -190,6 +191,7 @@ std::string narrow_steps(const PixelTrace& trace, const Vocabulary& vocabulary, 
     std::string out;
     std::vector<int> open;
     for (std::size_t k = 0; k < trace.steps.size(); ++k) {
+        if ((k & 4095) == 0) throw_if_interrupted();  // a trace of millions of steps takes seconds
         const Step& step = trace.steps[k];
         out += group_titles(trace, step, open, options.language);
         const std::string margin(2 * open.size(), ' ');
@@ -222,6 +224,7 @@ std::string wide_steps(const PixelTrace& trace, const Vocabulary& vocabulary, co
                               message(language, "trace_column_symbol"), message(language, "trace_column_formula"),
                               message(language, "trace_column_value")}};
     for (std::size_t k = 0; k < trace.steps.size(); ++k) {
+        if ((k & 4095) == 0) throw_if_interrupted();
         const Step& step = trace.steps[k];
         // A step in a group is named by its path: "sphere 1 / t".
         std::string key(key_name(step.key));

@@ -5,7 +5,11 @@
 #   - SIGPIPE: traces piped into a reader that quits (`| head -c 100`) give
 #     exit 141, quietly, with the image not committed;
 #   - SIGINT and SIGTERM while blocked reading a scene from a FIFO with no
-#     writer: "interrupted", not an input error ("Interrupted system call").
+#     writer: "interrupted", not an input error ("Interrupted system call");
+#   - SIGINT, SIGTERM, SIGHUP during one pixel's trace of 1,500 spheres and
+#     1,500 lights with shadows (2.25 million shadow tests): trace (text and
+#     JSON), lesson shadows, render --traces; within a second (3 s under the
+#     sanitizers, PROMYK_SIGNAL_DELAY >= 1), with nothing on standard output.
 # usage: interrupt_test.sh PROMYK WORKDIR
 set -u
 promyk=$1 dir=$2
@@ -24,6 +28,8 @@ interrupt() {
     local pid=$!
     sleep "$delay"
     kill -s "$signal" "$pid"
+    local sent
+    sent=$(date +%s%N)
     # A signal that came too early is lost (a background job of a script
     # starts with SIGINT ignored, until promyk installs its handlers): fail
     # after a minute rather than hang the suite.
@@ -31,6 +37,7 @@ interrupt() {
     local watchdog=$!
     wait "$pid"
     code=$?
+    took_ms=$((($(date +%s%N) - sent) / 1000000))
     kill "$watchdog" 2>/dev/null
     wait "$watchdog" 2>/dev/null
 }
@@ -91,6 +98,48 @@ before=$failed
 [ "$code" = 130 ] || fail "render scene FIFO SIGINT: exit $code, expected 130"
 [ -z "$(left)" ] || fail "render scene FIFO SIGINT: files left behind: $(left)"
 [ $failed = $before ] && passed=$((passed + 1))
+
+# A scene of 1,500 spheres and 1,500 lights with shadows: sphere 0 fills the
+# pane's middle, the others are small and behind the eye, every light is
+# between the eye and sphere 0; so pixel (4, 4) of an 8 x 8 pane hits sphere
+# 0, faces every light and tests every sphere on the way to each (a trace of
+# about 1 GB, past the default limit: --max-trace-size lets it run).
+many_scene() {
+    awk -v n="$1" -v m="$2" 'BEGIN {
+        printf "{\"name\": \"many\", \"shadows\": true, \"spheres\": [{\"S\": [0, 0, 6], \"r\": 3}"
+        for (k = 1; k < n; k++) printf ", {\"S\": [%d, %d, -20], \"r\": 0.01}", k % 40, int(k / 40)
+        printf "], \"lights\": ["
+        for (k = 0; k < m; k++)
+            printf "%s{\"L\": [%.3f, %.3f, 1], \"I\": 0.0001}", (k ? ", " : ""), (k % 40) / 40 - 0.5, int(k / 40) / 40 - 0.5
+        printf "]}\n"
+    }'
+}
+# Within a second of the signal; the sanitizers' build is slower to unwind.
+limit_ms=1000
+[ "${PROMYK_SIGNAL_DELAY:-0}" != 0 ] && [ "${PROMYK_SIGNAL_DELAY%%.*}" -ge 1 ] 2>/dev/null && limit_ms=3000
+for case in "trace text" "trace json" "lesson" "render traces"; do
+    for signal in INT TERM HUP; do
+        fresh
+        many_scene 1500 1500 >scene.json
+        big="--scene scene.json --max-trace-size 1TB"
+        case $case in
+            "trace text") interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" trace $big --pixel 4,4 ;;
+            "trace json") interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" trace $big --pixel 4,4 --format json ;;
+            "lesson") interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" lesson shadows $big --pixel 4,4 ;;
+            "render traces")
+                interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" render $big --w 8 -o x.png --traces t.jsonl \
+                    --trace-pixel 4,4 ;;
+        esac
+        expected=$((128 + $(kill -l "$signal")))
+        before=$failed
+        [ "$code" = "$expected" ] || fail "$case SIG$signal: exit $code, expected $expected"
+        [ "$took_ms" -le "$limit_ms" ] || fail "$case SIG$signal: ended ${took_ms} ms after the signal (at most $limit_ms)"
+        [ ! -s out.txt ] || fail "$case SIG$signal: $(wc -c <out.txt) bytes on standard output"
+        [ -z "$(left)" ] || fail "$case SIG$signal: files left behind: $(left)"
+        grep -q "interrupted by SIG$signal" err.txt || fail "$case SIG$signal: no message on stderr"
+        [ $failed = $before ] && passed=$((passed + 1))
+    done
+done
 
 echo "interrupt test: $passed passed, $failed failed"
 [ $failed = 0 ]

@@ -37,9 +37,9 @@ promyk_cli_test(render_grid_too_wide ARGS render --w 20000 --grid EXIT 2 STDERR 
 promyk_cli_test(render_scale ARGS render --w 8 --scale 16 --grid -o s.png EXIT 0 FILES s.png
                 STDERR "wrote s.png \\(135 × 135 pixels: the 8 × 8 pane at scale 16 with a grid, scene \"article\"\\)")
 
-# A trace file above ~1 GB needs --force; the estimate is in the message.
+# A trace file above the trace limit (250 MB) needs --force or --max-trace-size; the estimate is in the message.
 promyk_cli_test(render_traces_too_big ARGS render --w 2048 --traces t.jsonl
-                EXIT 2 STDERR "--traces t.jsonl would be about [0-9.]+ GB \\(4194304 traces of about [0-9.]+ (bytes|kB) each\\); add --force" EMPTY)
+                EXIT 2 STDERR "--traces t.jsonl would take about [0-9.]+ GB \\(4194304 traces of about [0-9.]+ (B|kB) each\\), and the limit is 250 MB. add --max-trace-size [0-9]+ or --force" EMPTY)
 
 # Everything that needs set-up: links, devices, FIFOs, /dev/full. No test here
 # writes to a real device: as root, a promyk with the bugs these tests catch
