@@ -263,7 +263,7 @@ TEST_CASE("boundary: a delta of exactly -max (the lowest finite) is a miss, not 
 // in front of it (t > 0 is a hit): the far root 2 is, seen from inside.
 // The light at the centre: P = (0, 0, 2), N = -(P - S) = (0, 0, -1),
 // K = (0, 0, -1), D = 1, I_P = 1. (Taking t = 0 would give P = O, D = -1: dark.)
-TEST_CASE("boundary: a root exactly at the eye (t = 0) is not a hit; the far root is", "[boundary]") {
+TEST_CASE("boundary: a root exactly at the eye (t = 0) is not a hit, the far root is", "[boundary]") {
     Scene scene = scene_at(1);
     scene.spheres = {Sphere{{0, 0, 1}, 1}};
     scene.lights = {Light{{0, 0, 1}, 1}};

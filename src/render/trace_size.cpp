@@ -54,7 +54,7 @@ void for_each_run(const TracedPixels& traced, int w, Visit&& visit) {
 // The model's parts, in bytes of JSON in double: measured on traces of
 // scenes of 1 to 41 spheres, planes and lights whose every test takes its
 // longest path (every root computed), with numbers of 16 or 17 digits, and
-// raised so that the estimate stays above every one of them (1.2 to 2.2
+// raised so that the estimate stays above every one of them (1.15 to 2.4
 // times the real size; tests/trace_bound_test.cpp).
 struct PartBytes {
     double header;         // the header without the scene's objects
@@ -62,11 +62,12 @@ struct PartBytes {
     double sample;         // a sample's own steps: E, the hit, P, N, I_s
     double eye_sphere;     // a sphere tested from the eye
     double eye_plane;      // a plane tested from the eye
-    double light;          // a light's own steps: K, |K|², D, cos α, contribution, Phong
-    double shadow_sphere;  // a sphere tested on the way to a light
+    double light;          // a light's own steps: K, |K|², D, cos α, contribution
+    double phong;          // a light's Phong steps (R, V, R·V and its squarings up to n), when a material has them
+    double shadow_sphere;  // a sphere tested on the way to a light (with P + s₁K and its distance when it blocks)
     double shadow_plane;   // a plane tested on the way to a light
 };
-constexpr PartBytes double_bytes{1000, 200, 700, 520, 400, 800, 380, 200};
+constexpr PartBytes double_bytes{1000, 200, 700, 520, 400, 800, 700, 520, 200};
 
 // The most bytes of traces estimate_trace_size builds to measure them.
 constexpr double sampling_budget = 64e6;
@@ -90,7 +91,10 @@ double pixel_trace_bytes(const Scene& scene, RealType real, int spp) {
     const double planes = static_cast<double>(scene.planes.size());
     const double lights = static_cast<double>(scene.lights.size());
     const double shadow_tests = scene.shadows ? spheres * b.shadow_sphere + planes * b.shadow_plane : 0.0;
-    const double sample = b.sample + spheres * b.eye_sphere + planes * b.eye_plane + lights * (b.light + shadow_tests);
+    const bool phong = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                   [](const Material& m) { return m.specular > 0; });
+    const double light = b.light + (phong ? b.phong : 0.0);
+    const double sample = b.sample + spheres * b.eye_sphere + planes * b.eye_plane + lights * (light + shadow_tests);
     const double header = b.header + (spheres + planes + lights) * b.per_given;
     return header + real_factor(real) * static_cast<double>(std::max(spp, 1)) * sample;
 }

@@ -59,7 +59,7 @@ refused "render --traces -" render --scene big.json --w 8 -o x.png --traces - --
 
 # The Polish message: the same numbers, a decimal comma, the option.
 "$promyk" --lang pl trace --scene big.json --pixel 4,4 >out.txt 2>err.txt
-[ $? = 2 ] && joined | grep -q "ślad zająłby około [0-9,]* MB" && joined | grep -q -- "--max-trace-size" && ok ||
+[ $? = 2 ] && joined | grep -q "ślad zająłby około [0-9,]* [MG]B" && joined | grep -q -- "--max-trace-size" && ok ||
     bad "Polish refusal: $(joined)"
 # Within 80 columns.
 wide=0
