@@ -22,3 +22,13 @@ else()
                    -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/cli/export_without_web
                    -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect.cmake)
 endif()
+
+# The scene panel (tests/web/edit_test.mjs, issue 17): edits re-render the
+# page's image as `promyk render` of the copied scene, bit for bit; the
+# loader's messages by their fields; the URL reopens an edited scene.
+if(NOT PROMYK_SANITIZE AND PROMYK_WEB_PAGE_BUILT)
+  add_test(NAME web.edit
+           COMMAND "${PROMYK_NODE}" "${CMAKE_CURRENT_SOURCE_DIR}/web/edit_test.mjs" $<TARGET_FILE:promyk>
+                   "${PROMYK_NPM_MODULES}" "${PROJECT_SOURCE_DIR}/lessons" "${CMAKE_CURRENT_BINARY_DIR}/web/edit")
+  set_tests_properties(web.edit PROPERTIES TIMEOUT 600)
+endif()

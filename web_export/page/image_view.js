@@ -73,10 +73,7 @@ export class ImageView {
     this.traced = null; // Set of "i,j"
     this.atlas = false;
     this.selected = null;
-    this.base = this.makeBitmap((p) => {
-      const c = this.channels;
-      return c === 1 ? [this.image[p], this.image[p], this.image[p]] : [this.image[3 * p], this.image[3 * p + 1], this.image[3 * p + 2]];
-    });
+    this.base = this.imageBitmap();
     canvas.addEventListener('click', (event) => {
       // A click gives the image the keys (also a click made by a script).
       canvas.focus({ preventScroll: true });
@@ -98,6 +95,37 @@ export class ImageView {
     });
   }
 
+  // A new image (the scene panel's render): {w, channels, image, map}.
+  setImage({ w, channels, image, map }) {
+    const sameSize = w === this.w;
+    this.w = w;
+    this.channels = channels;
+    this.image = image;
+    this.map = map;
+    if (!sameSize) this.zoomTo(Math.floor(512 / w));
+    this.base = this.imageBitmap();
+    this.setLegend(this.legend);
+  }
+
+  // The image's pixels as a bitmap (one 32-bit RGBA word a pixel: fast
+  // enough to redo on every edit of the scene).
+  imageBitmap() {
+    const bitmap = document.createElement('canvas');
+    bitmap.width = bitmap.height = this.w;
+    const ctx = bitmap.getContext('2d');
+    const pixels = ctx.createImageData(this.w, this.w);
+    const words = new Uint32Array(pixels.data.buffer);
+    const image = this.image;
+    const little = new Uint8Array(new Uint16Array([1]).buffer)[0] === 1;
+    for (let p = 0; p < words.length; ++p) {
+      const c = this.channels === 1 ? p : 3 * p;
+      const r = image[c], g = image[this.channels === 1 ? c : c + 1], b = image[this.channels === 1 ? c : c + 2];
+      words[p] = little ? (0xff000000 | (b << 16) | (g << 8) | r) >>> 0 : ((r << 24) | (g << 16) | (b << 8) | 0xff) >>> 0;
+    }
+    ctx.putImageData(pixels, 0, 0);
+    return bitmap;
+  }
+
   makeBitmap(rgbOf) {
     const bitmap = document.createElement('canvas');
     bitmap.width = bitmap.height = this.w;
@@ -111,8 +139,17 @@ export class ImageView {
     return bitmap;
   }
 
+  // The atlas's layers are made when the atlas is first shown (atlasParts).
   setLegend(categories) {
     this.legend = categories;
+    this.atlasBitmap = null;
+    this.patternLayers = null;
+    this.atlasCache = null;
+  }
+
+  atlasParts() {
+    if (this.atlasBitmap) return;
+    const categories = this.legend;
     const byIndex = new Map(categories.map((c) => [c.index, c.rgb]));
     this.atlasBitmap = this.makeBitmap((p) => byIndex.get(this.map[p]) || [0, 0, 0]);
     // Per category with a pattern: a mask of its pixels and its tile.
@@ -123,7 +160,6 @@ export class ImageView {
       const mask = this.makeBitmap((p) => (this.map[p] === category.index ? [0, 0, 0] : null));
       this.patternLayers.push({ mask, tile: patternTile(pattern, inkOn(category.hex)) });
     }
-    this.atlasCache = null;
   }
 
   // The pixel under the mouse, or null.
@@ -203,6 +239,7 @@ export class ImageView {
   // pixels at screen resolution (made once per zoom and legend).
   atlasLayer(side) {
     if (this.atlasCache && this.atlasCache.side === side) return this.atlasCache.canvas;
+    this.atlasParts();
     const layer = document.createElement('canvas');
     layer.width = layer.height = side;
     const ctx = layer.getContext('2d');
@@ -234,7 +271,7 @@ export class ImageView {
     ctx.drawImage(this.base, 0, 0, side, side);
     const z = this.zoom;
     // The atlas covers the image (the colours of render --map branch, exactly).
-    if (this.atlas && this.atlasBitmap) ctx.drawImage(this.atlasLayer(side), 0, 0);
+    if (this.atlas && this.legend.length) ctx.drawImage(this.atlasLayer(side), 0, 0);
     if (this.traced) {
       // A traced pixel of the trace file: a small magenta corner mark.
       ctx.fillStyle = '#CC79A7';

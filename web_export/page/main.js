@@ -1,12 +1,14 @@
 // The page: reads the data `promyk export` embedded, starts the tracer
 // (promyk's C++ in WebAssembly), and redraws every view from one state on
 // any change: the image, the derivation, the 3D view, the URL fragment.
-import { makeTracer } from './tracer.js';
+import { makeTracer, TracerError } from './tracer.js';
 import { setMessages, t } from './words.js';
 import { defaultState, readFragment, writeFragment, rememberedLanguage, rememberLanguage, reals, formulas, spps } from './state.js';
 import { ImageView, patterns, drawSwatch } from './image_view.js';
 import { Derivation } from './derivation.js';
 import { View3D } from './view3d.js';
+import { RenderPool } from './render_pool.js';
+import { SceneEditor, modelOf, sceneText, maxW } from './scene_editor.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -36,11 +38,23 @@ async function start() {
   const data = JSON.parse($('promyk-data').textContent);
   data.image = bytesOf(data.image);
   data.branchMap = bytesOf(data.branch_map);
-  // The wasm's bytes from their data block (gzip, build_page.mjs): nothing fetched.
-  const M = await createPromyk({ wasmBinary: await gunzip(bytesOf($('promyk-wasm').textContent)) }); // eslint-disable-line no-undef
+  // The wasm's bytes from their data block (gzip, build_page.mjs): nothing
+  // fetched. Compiled once: the page's instance and the render workers' share it.
+  const wasmModule = await WebAssembly.compile(await gunzip(bytesOf($('promyk-wasm').textContent)));
+  const instantiateWasm = (imports, done) => {
+    WebAssembly.instantiate(wasmModule, imports).then((instance) => done(instance, wasmModule));
+    return {};
+  };
+  const M = await createPromyk({ instantiateWasm }); // eslint-disable-line no-undef
   const tracer = makeTracer(M);
   const version = tracer.version();
-  const opened = tracer.openScene(utf8(bytesOf(data.scene_text)), data.scene_file || '', data.w);
+  // The exported scene: its text, the file name its traces carry, its w.
+  const exported = { text: utf8(bytesOf(data.scene_text)), file: data.scene_file || '', w: data.w };
+  let opened = tracer.openScene(exported.text, exported.file, exported.w);
+  const exportedContent = opened.scene_content;
+  // The scene the page shows (the exported one, or as edited) and its w.
+  let scene = { ...exported, edited: false };
+  const editedFile = 'scene.json'; // what Download names it, and the command line reads
 
   const state = readFragment(defaultState(rememberedLanguage() || data.lang || 'en'), location.hash, data.w);
   let messages = null;
@@ -51,6 +65,8 @@ async function start() {
 
   const image = new ImageView($('image'), $('image-frame'), data, {
     onSelect: (pixel) => {
+      // (an image of another w may still show while the new one renders)
+      if (pixel[0] >= scene.w || pixel[1] >= scene.w) return;
       state.pixel = pixel;
       state.step = 0;
       retrace();
@@ -69,6 +85,201 @@ async function start() {
   const derivation = new Derivation($('steps'), $('outcome'));
   const view3d = new View3D($('view3d'), $('view-labels'), $('view-list'));
   view3d.setScene(opened.scene_content);
+  const editor = new SceneEditor($('scene-fields'), { onChange: () => sceneEdited() });
+  // The image shown: which scene, w and settings it was rendered with.
+  const imageKey = (text, w, real, formula, spp) => JSON.stringify([text, w, real, formula, spp]);
+  let shownImage = imageKey(exported.text, exported.w, 'double', 'article', 1);
+  let wantedImage = shownImage;
+  let pool = null;
+  let renders = 0;
+
+  // --- the scene panel ---
+
+  // The trace file's pixels show the file's values only while the page
+  // shows the file's scene at its w.
+  function tracesMatch() {
+    return traces && traces.info.w === scene.w && traces.info.scene_hash === opened.scene_hash;
+  }
+
+  let sceneFaults = [];
+  function showSceneErrors() {
+    const left = editor.showErrors(sceneFaults);
+    const box = $('scene-errors');
+    box.replaceChildren(...left.map((fault) => {
+      const item = document.createElement('li');
+      item.textContent = fault.where ? `${fault.where}: ${fault.what}` : fault.what;
+      return item;
+    }));
+    $('scene-invalid').hidden = sceneFaults.length === 0;
+  }
+
+  // An edit in the panel: the loader reads the scene's text; a valid scene
+  // is opened (traces follow it) and rendered, an invalid one leaves the
+  // last valid image and shows the loader's messages by their fields.
+  function sceneEdited() {
+    const text = sceneText(editor.model);
+    const wText = editor.w.trim();
+    const w = /^\d+$/.test(wText) ? Number(wText) : NaN;
+    if (!(w >= 1 && w <= maxW)) {
+      sceneFaults = [{ where: '/w', what: t('edit_w_range', { max: maxW, value: wText }) }];
+      showSceneErrors();
+      return;
+    }
+    openScene({ text, file: editedFile, w, edited: true });
+  }
+
+  // Opens a scene in the page's tracer; false (and its faults shown) when the loader refuses it.
+  function openScene(next) {
+    tracer.useLanguage(state.lang);
+    try {
+      opened = tracer.openScene(next.text, next.file, next.w);
+    } catch (error) {
+      if (!(error instanceof TracerError) || error.code !== 3) throw error;
+      sceneFaults = error.faults();
+      showSceneErrors();
+      return false;
+    }
+    sceneFaults = [];
+    showSceneErrors();
+    scene = next;
+    state.scene = scene.edited ? scene.text : null;
+    state.w = scene.w !== exported.w ? scene.w : null;
+    if (state.pixel && (state.pixel[0] >= scene.w || state.pixel[1] >= scene.w)) state.pixel = null;
+    view3d.setScene(opened.scene_content);
+    image.traced = tracesMatch() ? traces.pixels : null;
+    describeScene();
+    drawCommand();
+    renderImage();
+    retrace();
+    return true;
+  }
+
+  // The image in the scene, w and settings shown, rendered by the workers.
+  async function renderImage() {
+    const settings = { real: state.real, formula: state.formula, spp: state.spp };
+    const key = imageKey(scene.text, scene.w, settings.real, settings.formula, settings.spp);
+    if (key === wantedImage) return;
+    wantedImage = key;
+    if (key === shownImage) {
+      if (pool) pool.cancel(); // the image shown is wanted again: the render under way is not
+      $('render-status').textContent = '';
+      return;
+    }
+    const started = performance.now();
+    try {
+      if (!pool) {
+        const count = Math.max(2, Math.min(4, navigator.hardwareConcurrency || 2));
+        pool = new RenderPool($('promyk-glue').textContent, wasmModule, count);
+      }
+      const w = scene.w;
+      const result = await pool.render({ scene: scene.text, file: scene.file, w, settings }, (done) => {
+        if (wantedImage === key) $('render-status').textContent = t('edit_rendering', { percent: Math.floor((100 * done) / w) });
+      });
+      if (!result || wantedImage !== key) return; // a later edit took over
+      const workMs = Math.round(performance.now() - started);
+      shownImage = key;
+      image.setImage(result);
+      drawLegend();
+      redraw();
+      const ms = Math.round(performance.now() - started);
+      $('render-status').textContent = t('edit_rendered', { w, ms, workers: pool.count });
+      document.body.dataset.renderMs = String(ms);
+      document.body.dataset.renderWorkMs = String(workMs); // the workers' part of it
+      document.body.dataset.renders = String(++renders);
+    } catch (error) {
+      if (wantedImage === key) showError(error);
+    }
+  }
+
+  // The command line that renders the image shown, bit for bit.
+  function commandLine() {
+    return `promyk render --scene ${editedFile} --w ${scene.w} --real ${state.real} --formula ${state.formula} --spp ${state.spp} -o image.png`;
+  }
+
+  function drawCommand() {
+    $('scene-command-intro').textContent = t('edit_command', { file: editedFile });
+    $('scene-command').textContent = commandLine();
+  }
+
+  // What Copy and Download give: the panel's scene as the loader read it.
+  const sceneForFile = () => sceneText(editor.model);
+
+  // A trace's or export's scene file (a string from a file: only ever set as
+  // text); the article's built-in scene in the page's words.
+  function sceneFileText(file) {
+    return !file || file === 'built-in' ? t('trace_builtin') : file;
+  }
+
+  function fillSelect(select, options) {
+    select.replaceChildren(...options.map(([value, label]) => {
+      const option = document.createElement('option');
+      option.value = value;
+      option.textContent = label;
+      return option;
+    }));
+  }
+
+  function drawLegend() {
+    const { first, count } = image.tally();
+    const list = $('legend-list');
+    list.replaceChildren();
+    for (const category of legend.categories) {
+      const item = document.createElement('li');
+      // The colour and the pattern the atlas draws, and the pattern in words.
+      const swatch = document.createElement('canvas');
+      swatch.width = swatch.height = 24;
+      swatch.className = 'swatch';
+      drawSwatch(swatch.getContext('2d'), category, 24);
+      const name = document.createElement('span');
+      name.textContent = `${category.name} (${count.get(category.index) || 0})`;
+      const pattern = document.createElement('span');
+      pattern.className = 'pattern-name';
+      pattern.dataset.pattern = patterns[category.index];
+      pattern.textContent = t(`page_pattern_${patterns[category.index]}`);
+      const go = document.createElement('button');
+      go.type = 'button';
+      go.dataset.category = category.id;
+      go.title = t('page_goto_first_title');
+      const at = first.get(category.index);
+      go.textContent = at ? `${t('page_goto_first')} (${at[0]}, ${at[1]})` : t('page_none_of_kind');
+      go.disabled = !at;
+      go.addEventListener('click', () => {
+        state.pixel = at;
+        state.step = 0;
+        retrace();
+      });
+      item.dataset.index = String(category.index);
+      item.dataset.rgb = category.rgb.join(',');
+      item.append(swatch, ' ', name, ' ', pattern, ' ', go);
+      list.append(item);
+    }
+  }
+
+  function describeTraces() {
+    const info = traces.info;
+    $('traces-status').textContent = t('page_traces_loaded', {
+      file: traces.name, scene: info.scene, scene_file: sceneFileText(info.scene_file), count: info.count, real: info.real, formula: info.formula, spp: info.spp,
+    });
+    $('use-file-row').hidden = false;
+  }
+
+  // A trace file (embedded by export, picked or dropped): read by the C++
+  // trace reader in the wasm; refused when of another scene or w.
+  function openTraces(bytes, name) {
+    try {
+      const info = tracer.openTraces(bytes);
+      if (info.w !== scene.w) throw new Error(t('page_traces_other_w', { file_w: info.w, w: scene.w }));
+      if (info.scene_hash !== opened.scene_hash)
+        throw new Error(t('page_traces_other_scene', { file_scene: info.scene, scene: opened.scene }));
+      traces = { info, name, pixels: new Set(info.pixels.map(([i, j]) => `${i},${j}`)) };
+      image.traced = tracesMatch() ? traces.pixels : null;
+      describeTraces();
+      $('status').textContent = '';
+      retrace();
+    } catch (error) {
+      showError(error);
+    }
+  }
 
   // The selected pixel's trace: the trace file's line when the file has the
   // pixel (and its values are wanted), else computed live.
@@ -78,7 +289,7 @@ async function start() {
     if (state.pixel) {
       const [i, j] = state.pixel;
       try {
-        const fromFile = traces && state.useFile && traces.pixels.has(`${i},${j}`);
+        const fromFile = traces && state.useFile && traces.pixels.has(`${i},${j}`) && tracesMatch();
         const text = fromFile ? tracer.traceFromFile(i, j) : tracer.trace(i, j, { real: state.real, formula: state.formula, spp: state.spp });
         current = { text, fromFile };
         if (state.compare && !fromFile) {
@@ -124,7 +335,7 @@ async function start() {
       ? t('page_from_file', { real: h.real, formula: h.formula, spp: h.spp, scene_file: sceneFileText(h.scene_file) })
       : t('page_settings_live', { real: h.real, formula: h.formula, spp: h.spp });
     derivation.show(view, state.full);
-    view3d.setPixel(current.geometry, data.w, view);
+    view3d.setPixel(current.geometry, scene.w, view);
     drawComparison();
     state.step = Math.min(state.step, view.steps.length - 1);
     redraw();
@@ -205,9 +416,11 @@ async function start() {
       'full-digits-label': 'page_full_digits', 'step-first': 'page_first', 'step-prev': 'page_prev',
       'step-next': 'page_next', 'step-last': 'page_last', 'keys-hint': 'page_keys_hint', 'view-heading': 'page_view3d',
       'view-hint': 'page_view3d_hint', 'view-list-title': 'page_view_list_title', notices: 'page_notices',
+      'scene-heading': 'edit_heading', 'scene-intro': 'edit_intro', 'scene-copy': 'edit_copy',
+      'scene-download': 'edit_download', 'scene-reset': 'edit_reset', 'scene-invalid': 'edit_invalid',
     };
     for (const [id, word] of Object.entries(words)) $(id).textContent = t(word, { i: '·', j: '·' });
-    $('scene-line').textContent = t('page_scene', { scene: opened.scene, file: sceneFileText(data.scene_file), w: data.w });
+    describeScene();
     $('full-digits').parentElement.title = t('page_digits_hint');
     $('lang-switch').setAttribute('aria-label', t('page_language'));
     // Why the page has no long double, in the page's language when the
@@ -219,93 +432,54 @@ async function start() {
     fillSelect($('compare'), [['', t('page_compare_none')], ...reals.flatMap((r) => formulas.map((f) => [`${r},${f}`, `${r}, ${f}`]))]);
     drawLegend();
     if (traces) describeTraces();
+    editor.build();
+    showSceneErrors();
+    drawCommand();
     redrawTrace();
   }
 
-  // A trace's or export's scene file (a string from a file: only ever set as
-  // text); the article's built-in scene in the page's words.
-  function sceneFileText(file) {
-    return !file || file === 'built-in' ? t('trace_builtin') : file;
-  }
-
-  function fillSelect(select, options) {
-    select.replaceChildren(...options.map(([value, label]) => {
-      const option = document.createElement('option');
-      option.value = value;
-      option.textContent = label;
-      return option;
-    }));
-  }
-
-  function drawLegend() {
-    const { first, count } = image.tally();
-    const list = $('legend-list');
-    list.replaceChildren();
-    for (const category of legend.categories) {
-      const item = document.createElement('li');
-      // The colour and the pattern the atlas draws, and the pattern in words.
-      const swatch = document.createElement('canvas');
-      swatch.width = swatch.height = 24;
-      swatch.className = 'swatch';
-      drawSwatch(swatch.getContext('2d'), category, 24);
-      const name = document.createElement('span');
-      name.textContent = `${category.name} (${count.get(category.index) || 0})`;
-      const pattern = document.createElement('span');
-      pattern.className = 'pattern-name';
-      pattern.dataset.pattern = patterns[category.index];
-      pattern.textContent = t(`page_pattern_${patterns[category.index]}`);
-      const go = document.createElement('button');
-      go.type = 'button';
-      go.dataset.category = category.id;
-      go.title = t('page_goto_first_title');
-      const at = first.get(category.index);
-      go.textContent = at ? `${t('page_goto_first')} (${at[0]}, ${at[1]})` : t('page_none_of_kind');
-      go.disabled = !at;
-      go.addEventListener('click', () => {
-        state.pixel = at;
-        state.step = 0;
-        retrace();
-      });
-      item.dataset.index = String(category.index);
-      item.dataset.rgb = category.rgb.join(',');
-      item.append(swatch, ' ', name, ' ', pattern, ' ', go);
-      list.append(item);
-    }
-  }
-
-  function describeTraces() {
-    const info = traces.info;
-    $('traces-status').textContent = t('page_traces_loaded', {
-      file: traces.name, scene: info.scene, scene_file: sceneFileText(info.scene_file), count: info.count, real: info.real, formula: info.formula, spp: info.spp,
-    });
-    $('use-file-row').hidden = false;
-  }
-
-  // A trace file (embedded by export, picked or dropped): read by the C++
-  // trace reader in the wasm; refused when of another scene or w.
-  function openTraces(bytes, name) {
-    try {
-      const info = tracer.openTraces(bytes);
-      if (info.w !== data.w) throw new Error(t('page_traces_other_w', { file_w: info.w, w: data.w }));
-      if (info.scene_hash !== opened.scene_hash)
-        throw new Error(t('page_traces_other_scene', { file_scene: info.scene, scene: opened.scene }));
-      traces = { info, name, pixels: new Set(info.pixels.map(([i, j]) => `${i},${j}`)) };
-      image.traced = traces.pixels;
-      describeTraces();
-      $('status').textContent = '';
-      retrace();
-    } catch (error) {
-      showError(error);
-    }
+  function describeScene() {
+    $('scene-line').textContent = t('page_scene', { scene: opened.scene, file: sceneFileText(scene.edited ? editedFile : exported.file), w: scene.w });
   }
 
   // --- controls ---
   fillSelect($('real'), reals.map((r) => [r, r]));
   fillSelect($('formula'), formulas.map((f) => [f, f]));
   fillSelect($('spp'), spps.map((s) => [String(s), String(s)]));
-  $('real').addEventListener('change', (e) => { state.real = e.target.value; retrace(); });
-  $('formula').addEventListener('change', (e) => { state.formula = e.target.value; retrace(); });
-  $('spp').addEventListener('change', (e) => { state.spp = Number(e.target.value); retrace(); });
+  $('real').addEventListener('change', (e) => { state.real = e.target.value; settingsChanged(); });
+  $('formula').addEventListener('change', (e) => { state.formula = e.target.value; settingsChanged(); });
+  $('spp').addEventListener('change', (e) => { state.spp = Number(e.target.value); settingsChanged(); });
+  // The image is rendered in the settings shown, as the command line says.
+  function settingsChanged() {
+    drawCommand();
+    renderImage();
+    retrace();
+  }
+  $('scene-copy').addEventListener('click', async () => {
+    const text = `${sceneForFile()}\n${commandLine()}\n`;
+    try {
+      await navigator.clipboard.writeText(text);
+      $('scene-copy-status').textContent = t('edit_copied');
+    } catch {
+      $('scene-copy-status').textContent = t('edit_copy_failed');
+    }
+    $('scene-copied').value = text;
+    $('scene-copied').hidden = false;
+  });
+  $('scene-download').addEventListener('click', () => {
+    const url = URL.createObjectURL(new Blob([sceneForFile()], { type: 'application/json' }));
+    const link = document.createElement('a');
+    link.href = url;
+    link.download = editedFile;
+    document.body.append(link);
+    link.click();
+    link.remove();
+    setTimeout(() => URL.revokeObjectURL(url), 1000);
+  });
+  $('scene-reset').addEventListener('click', () => {
+    editor.set(modelOf(exportedContent), exported.w);
+    openScene({ ...exported, edited: false });
+  });
   $('compare').addEventListener('change', (e) => { state.compare = e.target.value; retrace(); });
   $('use-file').addEventListener('change', (e) => { state.useFile = e.target.checked; retrace(); });
   $('full-digits').addEventListener('change', (e) => {
@@ -359,14 +533,52 @@ async function start() {
     const before = JSON.stringify(state);
     readFragment(state, location.hash, data.w);
     if (JSON.stringify(state) === before) return;
+    openFragmentScene();
     applyLanguage();
+    renderImage();
     retrace(); // a link to another pixel or other settings: its trace
   });
 
+  // A link's edited scene (or w): opened by the same loader; refused, the exported one.
+  function openFragmentScene() {
+    const next = { text: state.scene ?? exported.text, file: state.scene !== null ? editedFile : exported.file, w: state.w || exported.w, edited: state.scene !== null };
+    if (next.text === scene.text && next.w === scene.w && next.edited === scene.edited) return;
+    let refused = null;
+    tracer.useLanguage(state.lang);
+    try {
+      opened = tracer.openScene(next.text, next.file, next.w);
+    } catch (error) {
+      refused = error;
+    }
+    if (refused) {
+      // (a failed open leaves the page's scene open)
+      state.scene = scene.edited ? scene.text : null;
+      state.w = scene.w !== exported.w ? scene.w : null;
+      $('scene-link-status').textContent = t('edit_link_invalid', { text: refused.message });
+      return;
+    }
+    $('scene-link-status').textContent = '';
+    editor.set(modelOf(opened.scene_content), next.w);
+    openScene(next);
+  }
+
   $('status').textContent = '';
+  editor.set(modelOf(exportedContent), exported.w);
   applyLanguage();
+  openFragmentScene();
+  renderImage();
   if (data.traces) openTraces(bytesOf(data.traces), data.traces_file);
   else retrace();
+  // For the browser tests (tests/web/edit_test.mjs): the image's bytes and
+  // the selected pixel's trace, as the page holds them.
+  window.promykPage = {
+    image() {
+      let binary = '';
+      for (let k = 0; k < image.image.length; k += 0x8000) binary += String.fromCharCode(...image.image.subarray(k, k + 0x8000));
+      return { w: image.w, channels: image.channels, base64: btoa(binary) };
+    },
+    trace: () => (current ? current.text : null),
+  };
   document.body.dataset.readyMs = String(performance.now());
   document.body.dataset.ready = 'true';
 }

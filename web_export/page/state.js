@@ -17,12 +17,28 @@ export function defaultState(lang) {
     compare: '', // "quad,geometric" or ""
     full: false,
     useFile: true,
+    scene: null, // an edited scene's text (the scene panel), null: the exported one
+    w: null, // the pane's size when not the exported one
   };
 }
 
 // Reads the fragment over `state`; values that make no sense are ignored.
-export function readFragment(state, hash, w) {
+export function readFragment(state, hash, exportedW) {
   const params = new URLSearchParams(hash.replace(/^#/, ''));
+  const fragmentW = params.get('w');
+  state.w = fragmentW && /^\d+$/.test(fragmentW) && Number(fragmentW) >= 1 ? Number(fragmentW) : null;
+  const w = state.w || exportedW;
+  // An edited scene: its text as base64url of its UTF-8 bytes (the loader
+  // checks it when the page opens it).
+  const scene = params.get('scene');
+  state.scene = null;
+  if (scene) {
+    try {
+      state.scene = fromBase64Url(scene);
+    } catch {
+      state.scene = null;
+    }
+  }
   const p = params.get('p');
   if (p && /^\d+,\d+$/.test(p)) {
     const [i, j] = p.split(',').map(Number);
@@ -63,6 +79,8 @@ export function writeFragment(state) {
   if (state.compare) params.set('cmp', state.compare);
   if (state.full) params.set('full', '1');
   if (!state.useFile) params.set('file', '0');
+  if (state.w) params.set('w', String(state.w));
+  if (state.scene !== null) params.set('scene', toBase64Url(state.scene));
   const hash = '#' + params.toString().replace(/%2C/g, ',');
   if (location.hash !== hash) history.replaceState(null, '', hash);
 }
@@ -82,4 +100,19 @@ export function rememberLanguage(lang) {
   } catch {
     // not remembered: the fragment still carries it
   }
+}
+
+// base64url (RFC 4648 §5, no padding) of a text's UTF-8 bytes, and back.
+export function toBase64Url(text) {
+  const bytes = new TextEncoder().encode(text);
+  let binary = '';
+  for (let k = 0; k < bytes.length; k += 0x8000) binary += String.fromCharCode(...bytes.subarray(k, k + 0x8000));
+  return btoa(binary).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+}
+
+export function fromBase64Url(text) {
+  const binary = atob(text.replace(/-/g, '+').replace(/_/g, '/'));
+  const bytes = new Uint8Array(binary.length);
+  for (let k = 0; k < binary.length; ++k) bytes[k] = binary.charCodeAt(k);
+  return new TextDecoder('utf-8', { fatal: true }).decode(bytes);
 }

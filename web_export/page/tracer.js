@@ -4,9 +4,21 @@
 // scene may be 1 MiB, more than ccall's stack copy should carry).
 
 export class TracerError extends Error {
-  constructor(message, code) {
+  // details: the whole error object (a scene's "faults", "where", "file").
+  constructor(message, code, details = {}) {
     super(message);
     this.code = code;
+    this.details = details;
+  }
+
+  // The loader's faults as [{where, what}]: a scene's list, or the one
+  // fault of an input error ("file: where: what" without the prefix).
+  faults() {
+    const d = this.details;
+    if (Array.isArray(d.faults) && d.faults.length) return d.faults.map((f) => ({ where: String(f.where), what: String(f.what) }));
+    const prefix = `${d.file ? `${d.file}: ` : ''}${d.where ? `${d.where}: ` : ''}`;
+    const what = prefix && this.message.startsWith(prefix) ? this.message.slice(prefix.length) : this.message;
+    return [{ where: typeof d.where === 'string' ? d.where : '', what }];
   }
 }
 
@@ -23,7 +35,7 @@ export function makeTracer(M) {
   };
   const checked = (text) => {
     const value = JSON.parse(text);
-    if (value && typeof value === 'object' && 'error' in value) throw new TracerError(String(value.error), value.code);
+    if (value && typeof value === 'object' && 'error' in value) throw new TracerError(String(value.error), value.code, value);
     return value;
   };
   const callText = (name, texts, numbers = []) => {
@@ -62,6 +74,11 @@ export function makeTracer(M) {
       return text;
     },
     legend: (lang) => checked(callText('promyk_legend', [lang])),
+    // The loader's messages are worded in the language of the last call
+    // that named one (API.md); the legend is the cheapest such call.
+    useLanguage(lang) {
+      checked(callText('promyk_legend', [lang]));
+    },
     messages: (lang) => checked(callText('promyk_messages', [lang])),
   };
 }

@@ -3,6 +3,8 @@
 // returning a JSON text that the module owns until the next call. No
 // exception leaves them: a failure is {"error": ..., "code": N}.
 #include <cmath>
+#include <cstdint>
+#include <memory>
 #include <exception>
 #include <map>
 #include <optional>
@@ -14,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "render/branch_names.hpp"
+#include "render/kernel.hpp"
 #include "render/maps.hpp"
 #include "render/trace_pixel.hpp"
 #include "scene/scene_json.hpp"
@@ -44,11 +47,23 @@ namespace {
 
 constexpr int max_w = 32768;  // as the CLI's --w (app/cli_values.hpp)
 
+// The kernel promyk_render_rows made last, kept while the scene and the
+// settings stay (a worker renders its rows in several calls).
+struct RowKernel {
+    RealType real = RealType::double_;
+    Formula formula = Formula::article;
+    int spp = 1;
+    std::unique_ptr<Kernel> kernel;
+};
+
 struct State {
     std::string answer;  // the last result, owned here
     std::optional<Scene> scene;
     int w = 0;
     std::optional<TraceFile> traces;
+    RowKernel rows;                    // made for `scene`; reset when another opens
+    std::vector<std::uint8_t> pixels;  // promyk_render_rows' image rows
+    std::vector<std::uint8_t> branch;  // and their branch categories
 };
 
 State& state() {
@@ -149,6 +164,26 @@ Formula formula_of(const std::string& name) {
     throw UsageError(ui_message("wasm_bad_argument", {{"name", "formula"}, {"problem", name}}));
 }
 
+// The numeric settings of a trace or a render: {"real", "formula", "spp"}.
+struct Settings {
+    RealType real = RealType::double_;
+    Formula formula = Formula::article;
+    int spp = 1;
+};
+
+Settings settings_of(const char* settings_json) {
+    const nlohmann::json j = object_argument(settings_json, "settings");
+    Settings settings;
+    settings.real = real_of(string_field(j, "real", "double", "settings"));
+    settings.formula = formula_of(string_field(j, "formula", "article", "settings"));
+    if (j.contains("spp")) {
+        if (!j.at("spp").is_number_integer())
+            throw UsageError(ui_message("wasm_bad_argument", {{"name", "settings.spp"}, {"problem", "not a whole number"}}));
+        settings.spp = j.at("spp").get<int>();
+    }
+    return settings;
+}
+
 const Scene& open_scene() {
     if (!state().scene) throw UsageError(ui_message("wasm_no_scene"));
     return *state().scene;
@@ -220,6 +255,8 @@ json make_view(PixelTrace trace, const View& view) {
 
     // Each formula with the pixel's numbers put in (trace/formula_numbers.hpp).
     const std::vector<std::string> numbers = formulas_with_numbers(trace, vocabulary, language, view.digits);
+    // The trace's effect set picks each step's formula: computed once per trace.
+    const std::string effects = effect_set(trace);
     json steps = json::array();
     for (std::size_t k = 0; k < trace.steps.size(); ++k) {
         const Step& step = trace.steps[k];
@@ -234,8 +271,8 @@ json make_view(PixelTrace trace, const View& view) {
                   {"kind", word ? std::string("word") : trace_kind(vocabulary, key)},
                   {"symbol", trace_symbol(vocabulary, key, language)},
                   {"symbol_tex", entry ? entry->latex : key},
-                  {"formula_text", step_formula(entry, key, effect_set(trace))},
-                  {"formula_tex", step_formula(entry, key, effect_set(trace), true)},
+                  {"formula_text", step_formula(entry, key, effects)},
+                  {"formula_tex", step_formula(entry, key, effects, true)},
                   {"numbers_tex", numbers[k]},
                   {"description", entry ? (language == Language::pl ? entry->pl : entry->en) : ""},
                   {"value_full", trace_step_value_text(step, vocabulary, key, language, h.real, 0)},
@@ -287,7 +324,7 @@ json make_view(PixelTrace trace, const View& view) {
     json out = {{"lang", std::string(language_code(language))}, {"digits", view.digits}, {"header", header},
                 {"groups", groups}, {"steps", steps}, {"branch", branch},
                 {"branch_name", message(language, "branch_name_" + branch)},
-                {"reason", about ? branch_about(vocabulary, trace.branch, effect_set(trace), language) : ""},
+                {"reason", about ? branch_about(vocabulary, trace.branch, effects, language) : ""},
                 {"hit_object", trace.hit_object},
                 {"hit_object_text", trace.hit_object.empty() ? "" : word_text(language, trace.hit_object)},
                 {"I_P_full", result_text(0)}, {"I_P_shown", result_text(view.digits)}, {"I_P_formula", formula},
@@ -361,6 +398,7 @@ PROMYK_EXPORT const char* promyk_open_scene(const char* scene_json, const char* 
         json out = {{"ok", true}, {"scene", scene.name}, {"scene_hash", scene_hash(scene)}, {"w", w}};
         out["effects"] = trace_header(scene, w).effects;
         out["scene_content"] = json::parse(scene_to_json(scene, SceneDefaults::written));
+        state().rows = RowKernel{};  // made for the scene it replaces
         state().scene = std::move(scene);
         state().w = w;
         return out.dump();
@@ -374,18 +412,47 @@ PROMYK_EXPORT const char* promyk_trace(int i, int j, const char* settings_json) 
         if (i < 0 || j < 0 || i >= w || j >= w)
             throw UsageError(ui_message(
                 "wasm_bad_pixel", {{"i", std::to_string(i)}, {"j", std::to_string(j)}, {"w", std::to_string(w)}}));
-        const nlohmann::json settings = object_argument(settings_json, "settings");
-        const RealType real = real_of(string_field(settings, "real", "double", "settings"));
-        const Formula formula = formula_of(string_field(settings, "formula", "article", "settings"));
-        int spp = 1;
-        if (settings.contains("spp")) {
-            if (!settings.at("spp").is_number_integer())
-                throw UsageError(ui_message("wasm_bad_argument", {{"name", "settings.spp"}, {"problem", "not a whole number"}}));
-            spp = settings.at("spp").get<int>();
-        }
+        const Settings settings = settings_of(settings_json);
         std::string out;
-        append_trace_json(out, trace_pixel(scene, w, i, j, real, formula, spp));
+        append_trace_json(out, trace_pixel(scene, w, i, j, settings.real, settings.formula, settings.spp));
         return out;
+    });
+}
+
+PROMYK_EXPORT const char* promyk_render_rows(int first_row, int row_count, const char* settings_json) {
+    return answer([&] {
+        const Scene& scene = open_scene();
+        const int w = state().w;
+        if (first_row < 0 || row_count < 1 || first_row >= w || row_count > w - first_row)
+            throw UsageError(ui_message("wasm_bad_argument", {{"name", "rows"},
+                                                             {"problem", std::to_string(first_row) + " + " +
+                                                                             std::to_string(row_count)}}));
+        const Settings settings = settings_of(settings_json);
+        RowKernel& made = state().rows;
+        if (!made.kernel || made.real != settings.real || made.formula != settings.formula || made.spp != settings.spp)
+            made = RowKernel{settings.real, settings.formula, settings.spp,
+                             make_kernel(scene, settings.real, settings.formula, settings.spp)};
+        const Kernel& kernel = *made.kernel;
+        const std::size_t width = static_cast<std::size_t>(w);
+        const std::size_t row_bytes = width * static_cast<std::size_t>(kernel.channels());
+        std::vector<std::uint8_t>& pixels = state().pixels;
+        std::vector<std::uint8_t>& branch = state().branch;
+        pixels.assign(row_bytes * static_cast<std::size_t>(row_count), 0);
+        branch.assign(width * static_cast<std::size_t>(row_count), 0);
+        for (int k = 0; k < row_count; ++k) {
+            const int i = first_row + k;
+            // The row as `promyk render` computes it (the same kernel), and
+            // each pixel's category as `render --map branch` draws it.
+            kernel.row(w, i, pixels.data() + row_bytes * static_cast<std::size_t>(k));
+            for (int j = 0; j < w; ++j)
+                branch[width * static_cast<std::size_t>(k) + static_cast<std::size_t>(j)] =
+                    static_cast<std::uint8_t>(branch_category(kernel.notes(w, i, j)));
+        }
+        json out = {{"ok", true}, {"first_row", first_row}, {"rows", row_count}, {"w", w},
+                    {"channels", kernel.channels()},
+                    {"image", reinterpret_cast<std::uintptr_t>(pixels.data())}, {"image_bytes", pixels.size()},
+                    {"branch", reinterpret_cast<std::uintptr_t>(branch.data())}, {"branch_bytes", branch.size()}};
+        return out.dump();
     });
 }
 

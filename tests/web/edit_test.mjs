@@ -1,0 +1,295 @@
+// The scene panel in a real browser (issue 17, "edit the scene live"):
+// Debian's chromium, headless, driven by playwright-core.
+//   node edit_test.mjs PROMYK NODE_MODULES LESSONS_DIR WORKDIR
+// Edits fields of exported pages and checks the page's image, byte for byte,
+// against `promyk render` of the scene and command line the page copies;
+// adds and removes objects; an invalid value shows the loader's own message
+// (the CLI's `scene check` words, both languages) by its field and keeps the
+// last image; the URL reopens the edited scene; the selected pixel's trace
+// follows the edit; the sliders work from the keyboard. Prints the re-render
+// time at w = 256 and 512 and the page's size (figures, not checked), and
+// leaves WORKDIR/edit.png (the panel) to look at.
+import { execFileSync, spawnSync } from 'node:child_process';
+import { mkdirSync, rmSync, readFileSync, writeFileSync, statSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { join } from 'node:path';
+import { pathToFileURL } from 'node:url';
+import assert from 'node:assert/strict';
+
+const [promyk, modules, lessons, work] = process.argv.slice(2);
+const require = createRequire(join(modules, 'noop.js'));
+const { chromium } = require('playwright-core');
+
+rmSync(work, { recursive: true, force: true });
+mkdirSync(work, { recursive: true });
+const everything = join(lessons, 'scenes', 'everything.json');
+
+function run(args, cwd = work) {
+  return execFileSync(promyk, args, { cwd, encoding: 'utf8', env: { ...process.env, LANG: 'C' }, stdio: ['ignore', 'pipe', 'pipe'] });
+}
+
+function exportPage(name, args) {
+  const file = join(work, name);
+  run(['export', '--lang', 'en', ...args, '-o', file]);
+  return file;
+}
+
+// A binary PGM (P5) or PPM (P6) as {w, channels, bytes}.
+function readNetpbm(file) {
+  const data = readFileSync(file);
+  const header = [];
+  let at = 0;
+  while (header.length < 4) {
+    while (/\s/.test(String.fromCharCode(data[at]))) ++at;
+    let token = '';
+    while (!/\s/.test(String.fromCharCode(data[at]))) token += String.fromCharCode(data[at++]);
+    header.push(token);
+  }
+  ++at; // the one whitespace after maxval
+  const channels = header[0] === 'P6' ? 3 : 1;
+  return { w: Number(header[1]), channels, bytes: data.subarray(at) };
+}
+
+const browser = await chromium.launchPersistentContext(join(work, 'profile'), {
+  executablePath: '/usr/bin/chromium',
+  headless: true,
+  args: ['--no-sandbox', '--disable-gpu', '--enable-unsafe-swiftshader', '--disable-background-networking',
+    '--disable-component-update', '--disable-sync', '--no-first-run'],
+  viewport: { width: 1600, height: 1000 },
+  acceptDownloads: true,
+});
+const failures = [];
+let currentUrl = '';
+browser.on('request', (request) => {
+  const url = request.url();
+  if (url.split('#')[0] !== currentUrl && !url.startsWith('data:') && !url.startsWith('blob:')) failures.push(`request: ${url}`);
+});
+
+async function open(file, fragment = '') {
+  const page = browser.pages()[0] || (await browser.newPage());
+  currentUrl = pathToFileURL(file).href;
+  page.removeAllListeners('console');
+  page.removeAllListeners('pageerror');
+  page.on('console', (message) => {
+    if (message.type() === 'error') failures.push(`console: ${message.text()}`);
+  });
+  page.on('pageerror', (error) => failures.push(`page error: ${error.message}`));
+  await page.goto('about:blank');
+  await page.goto(currentUrl + fragment);
+  await page.waitForSelector('body[data-ready="true"]', { timeout: 60000 });
+  return page;
+}
+
+const renders = (page) => page.evaluate(() => Number(document.body.dataset.renders || 0));
+
+// Runs `change` and waits for the render it starts to be shown.
+async function rendered(page, change) {
+  const before = await renders(page);
+  await change();
+  await page.waitForFunction((n) => Number(document.body.dataset.renders || 0) > n, before, { timeout: 120000 });
+  // Later edits may have started further renders: wait until none is under way.
+  await page.waitForFunction(() => !/…/.test(document.getElementById('render-status').textContent), null, { timeout: 120000 });
+}
+
+const pageImage = async (page) => {
+  const image = await page.evaluate(() => window.promykPage.image());
+  return { w: image.w, channels: image.channels, bytes: Buffer.from(image.base64, 'base64') };
+};
+
+// The scene and command line "Copy scene" gives; the command is run as the
+// page wrote it (the scene saved under the name it says), into a PGM/PPM
+// instead of a PNG, and its pixels must be the page's, byte for byte.
+async function checkAgainstCli(page, what) {
+  await page.click('#scene-copy');
+  const copied = await page.inputValue('#scene-copied');
+  const lines = copied.trimEnd().split('\n');
+  const command = lines.pop();
+  const sceneText = lines.join('\n').trimEnd() + '\n';
+  const args = command.split(' ');
+  assert.equal(args[0], 'promyk', `${what}: the command ${command}`);
+  const file = args[args.indexOf('--scene') + 1];
+  writeFileSync(join(work, file), sceneText);
+  // The scene is one `promyk scene check` accepts.
+  run(['scene', 'check', file]);
+  const shown = await pageImage(page);
+  const out = shown.channels === 3 ? 'cli.ppm' : 'cli.pgm';
+  const renderArgs = args.slice(1);
+  renderArgs[renderArgs.indexOf('-o') + 1] = out;
+  run(renderArgs);
+  const cli = readNetpbm(join(work, out));
+  assert.equal(shown.w, cli.w, `${what}: w`);
+  assert.equal(shown.channels, cli.channels, `${what}: channels`);
+  assert.ok(shown.bytes.equals(cli.bytes), `${what}: the page's image differs from ${command}`);
+  return { shown, sceneText, command };
+}
+
+// The loader's message for a scene, as `promyk scene check` words it
+// ("promyk: FILE: /pointer: what"): the what.
+function cliFault(sceneText, pointer, lang) {
+  writeFileSync(join(work, 'bad.json'), sceneText);
+  const result = spawnSync(promyk, ['--lang', lang, 'scene', 'check', 'bad.json'], { cwd: work, encoding: 'utf8', env: { ...process.env, LANG: 'C' } });
+  assert.equal(result.status, 3, `scene check of the invalid scene: ${result.stderr}`);
+  const line = result.stderr.split('\n').find((l) => l.includes(`${pointer}: `));
+  assert.ok(line, `no message for ${pointer} in ${result.stderr}`);
+  return line.slice(line.indexOf(`${pointer}: `) + pointer.length + 2).trim();
+}
+
+const fieldError = (page, pointer) => page.$eval(`#error-${pointer.slice(1).replace(/[^A-Za-z0-9_]/g, '-')}`, (e) => (e.hidden ? '' : e.textContent));
+
+try {
+  // --- the article's scene: edit, add, remove, invalid values, the URL ---
+  const article = exportPage('article.html', ['--w', '64']);
+  let page = await open(article, '#p=20,40');
+  const first = await pageImage(page);
+  assert.equal(first.w, 64);
+
+  // An edit re-renders the image: equal to promyk render of the copied scene.
+  await rendered(page, () => page.fill('#field-spheres-0-r', '0.9'));
+  const edited = await checkAgainstCli(page, 'r = 0.9');
+  assert.ok(!edited.shown.bytes.equals(first.bytes), 'the edit changed the image');
+  // The selected pixel was traced again in the edited scene: as promyk trace.
+  const trace = await page.evaluate(() => window.promykPage.trace());
+  assert.equal(trace, run(['trace', '--format', 'json', '--scene', 'scene.json', '--w', '64', '--pixel', '20,40']).trimEnd(),
+    'the selected pixel\'s trace after the edit');
+  // A decimal comma is read as a point (Polish pupils type one).
+  await rendered(page, () => page.fill('#field-lights-0-L-0', '0,5'));
+  await checkAgainstCli(page, 'x_L = 0,5');
+
+  // Adding a plane and a light: both in the image, as the CLI renders it.
+  await rendered(page, () => page.click('[data-add="planes"]'));
+  const withPlane = await checkAgainstCli(page, 'a plane added');
+  assert.match(withPlane.sceneText, /"planes": \[\n {4}\{"Q": \[0, -1, 0\], "n": \[0, 1, 0\]\}/);
+  await rendered(page, () => page.click('[data-add="lights"]'));
+  await checkAgainstCli(page, 'a light added');
+  // ... and removing them gives the image before, byte for byte.
+  await rendered(page, () => page.click('[data-remove="/lights/1"]'));
+  await rendered(page, () => page.click('[data-remove="/planes/0"]'));
+  const removed = await checkAgainstCli(page, 'the plane and the light removed');
+  assert.ok(removed.shown.bytes.equals((await checkAgainstCli(page, 'again')).shown.bytes));
+  await rendered(page, () => page.fill('#field-lights-0-L-0', '1.5'));
+  const back = await pageImage(page);
+  assert.ok(back.bytes.equals(edited.shown.bytes), 'after removing what was added, the image is the one before');
+
+  // An invalid value: the loader's own message by its field, the last image kept.
+  const rendersBefore = await renders(page);
+  const sceneBefore = await page.evaluate(() => location.hash);
+  await page.fill('#field-spheres-0-r', '-1');
+  await page.waitForFunction(() => !document.getElementById('error-spheres-0-r').hidden);
+  const badScene = edited.sceneText.replace('"r": 0.9', '"r": -1');
+  assert.notEqual(badScene, edited.sceneText);
+  assert.equal(await fieldError(page, '/spheres/0/r'), cliFault(badScene, '/spheres/0/r', 'en'));
+  assert.equal(await page.getAttribute('#field-spheres-0-r', 'aria-invalid'), 'true');
+  assert.equal(await page.isVisible('#scene-invalid'), true);
+  await page.fill('#field-spheres-0-r', 'abc');
+  await page.waitForFunction(() => /string/.test(document.getElementById('error-spheres-0-r').textContent));
+  assert.equal(await fieldError(page, '/spheres/0/r'), cliFault(edited.sceneText.replace('"r": 0.9', '"r": "abc"'), '/spheres/0/r', 'en'));
+  // A fault in a vector's component: by that component's field.
+  await page.fill('#field-spheres-0-r', '0.9');
+  await page.fill('#field-lights-0-I', '-2');
+  await page.waitForFunction(() => !document.getElementById('error-lights-0-I').hidden);
+  assert.equal(await fieldError(page, '/lights/0/I'), cliFault(edited.sceneText.replace('"I": 1', '"I": -2'), '/lights/0/I', 'en'));
+  // The last light cannot go: the loader's message by the lights.
+  await page.click('[data-remove="/lights/0"]');
+  await page.waitForFunction(() => !document.getElementById('error-lights').hidden);
+  await new Promise((resolve) => setTimeout(resolve, 300));
+  assert.equal(await renders(page), rendersBefore, 'no render of an invalid scene');
+  assert.ok((await pageImage(page)).bytes.equals(edited.shown.bytes), 'the last valid image stays');
+  assert.equal(await page.evaluate(() => location.hash), sceneBefore, 'the URL keeps the last valid scene');
+  await page.click('[data-add="lights"]');
+  await page.fill('#field-lights-0-L-0', '1.5');
+  await page.fill('#field-lights-0-L-1', '1');
+  await page.fill('#field-lights-0-L-2', '1');
+  await page.fill('#field-lights-0-I', '1');
+  await page.waitForFunction(() => document.getElementById('error-lights').hidden && document.getElementById('error-lights-0-I').hidden);
+  await page.waitForFunction((h) => location.hash === h, sceneBefore);
+
+  // In Polish: the panel's words and the loader's Polish message.
+  await page.click('#lang-switch button[data-lang="pl"]');
+  assert.equal(await page.textContent('#scene-heading'), 'Scena');
+  await page.fill('#field-spheres-0-r', '-1');
+  await page.waitForFunction(() => !document.getElementById('error-spheres-0-r').hidden);
+  assert.equal(await fieldError(page, '/spheres/0/r'), cliFault(badScene, '/spheres/0/r', 'pl'));
+  await page.fill('#field-spheres-0-r', '0.9');
+  await page.click('#lang-switch button[data-lang="en"]');
+
+  // The keyboard: a slider moves with the arrow keys and the image follows.
+  await page.focus('[data-slider="/z_E"]');
+  assert.equal(await page.evaluate(() => document.activeElement.getAttribute('aria-label')), 'z_E (the pane\'s distance from the eye) — slider');
+  await rendered(page, () => page.keyboard.press('ArrowRight'));
+  assert.equal(await page.inputValue('#field-z_E'), '2.01');
+  const keyed = await checkAgainstCli(page, 'z_E moved by the keyboard');
+
+  // The URL reopens the edited scene (and w): the same image and fields.
+  await rendered(page, () => page.fill('#field-w', '48'));
+  const small = await checkAgainstCli(page, 'w = 48');
+  assert.equal(small.shown.w, 48);
+  assert.notEqual(keyed.command, small.command);
+  const link = page.url();
+  assert.match(link, /[#&]scene=/);
+  assert.match(link, /[#&]w=48/);
+  const reopened = await open(article, link.slice(link.indexOf('#')));
+  await reopened.waitForFunction(() => Number(document.body.dataset.renders || 0) >= 1, null, { timeout: 120000 });
+  assert.ok((await pageImage(reopened)).bytes.equals(small.shown.bytes), 'the link shows the edited image');
+  assert.equal(await reopened.inputValue('#field-spheres-0-r'), '0.9');
+  assert.equal(await reopened.inputValue('#field-z_E'), '2.01');
+  page = reopened;
+  // "Back to the exported scene": the exported image again.
+  await rendered(page, () => page.click('#scene-reset'));
+  assert.ok((await pageImage(page)).bytes.equals(first.bytes), 'the exported scene\'s image again');
+  assert.doesNotMatch(page.url(), /scene=/);
+
+  // --- a coloured scene with every kind of object: materials and colours ---
+  const coloured = exportPage('everything.html', ['--scene', everything, '--w', '40']);
+  page = await open(coloured);
+  await rendered(page, () => page.fill('#field-materials-1-colour-0', '0.8'));
+  await checkAgainstCli(page, 'a material\'s colour');
+  await rendered(page, () => page.click('#edit-shadows'));
+  await checkAgainstCli(page, 'shadows off');
+  await rendered(page, () => page.click('[data-remove="/materials/0"]'));
+  const noMaterial0 = await checkAgainstCli(page, 'material 0 removed');
+  assert.match(noMaterial0.sceneText, /\{"S": \[-0\.6, -0\.3, 3\.4\], "r": 0\.8\}/, 'sphere 0 takes the article\'s material');
+  assert.match(noMaterial0.sceneText, /"material": 0\}/, 'sphere 1 keeps its material, now 0');
+  await rendered(page, () => page.click('[data-add="spheres"]'));
+  await rendered(page, () => page.selectOption('#field-spheres-3-material', '1'));
+  await checkAgainstCli(page, 'a sphere added with material 1');
+  await rendered(page, () => page.fill('#field-background-2', '0.2'));
+  await checkAgainstCli(page, 'the background');
+  await rendered(page, () => page.fill('#field-planes-0-n-1', '2'));
+  await checkAgainstCli(page, 'a plane\'s normal');
+  await rendered(page, () => page.selectOption('#real', 'float'));
+  await checkAgainstCli(page, 'float');
+  await rendered(page, () => page.selectOption('#spp', '4'));
+  await checkAgainstCli(page, 'float, spp 4');
+  // Download gives the same scene text as Copy.
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#scene-download')]);
+  assert.equal(download.suggestedFilename(), 'scene.json');
+  const downloaded = readFileSync(await download.path(), 'utf8');
+  run(['scene', 'check', await download.path()]);
+  assert.equal(downloaded, (await page.inputValue('#scene-copied')).split('\npromyk render')[0]);
+  await page.screenshot({ path: join(work, 'edit.png'), fullPage: true });
+
+  // --- figures: the re-render time at w = 256 and 512, the page's size ---
+  for (const w of [256, 512]) {
+    const big = exportPage(`article_${w}.html`, ['--w', String(w)]);
+    page = await open(big);
+    const times = [];
+    const work = [];
+    for (const value of ['2.1', '2.2', '2.3', '2.4', '2.5']) {
+      await rendered(page, () => page.fill('#field-z_E', value));
+      times.push(Number(await page.evaluate(() => document.body.dataset.renderMs)));
+      work.push(Number(await page.evaluate(() => document.body.dataset.renderWorkMs)));
+    }
+    if (w === 256) await checkAgainstCli(page, 'w = 256');
+    times.sort((a, b) => a - b);
+    const workers = await page.evaluate(() => document.getElementById('render-status').textContent);
+    console.log(`figure: re-render of the article's scene at w = ${w}: median ${times[2]} ms (of ${times.join(', ')} ms, of which the workers ${work.join(', ')} ms; ${workers}); page ${(statSync(big).size / 1e6).toFixed(2)} MB`);
+  }
+  assert.deepEqual(failures, []);
+} finally {
+  await browser.close();
+}
+if (failures.length) {
+  console.error(failures.join('\n'));
+  process.exit(1);
+}
+console.log('web.edit: ok');
