@@ -93,7 +93,7 @@ async function rendered(page, change) {
 
 const pageImage = async (page) => {
   const image = await page.evaluate(() => window.promykPage.image());
-  return { w: image.w, channels: image.channels, bytes: Buffer.from(image.base64, 'base64') };
+  return { w: image.w, channels: image.channels, bytes: Buffer.from(image.base64, 'base64'), map: Buffer.from(image.map, 'base64') };
 };
 
 // The scene and command line "Copy scene" gives; the command is run as the
@@ -120,6 +120,19 @@ async function checkAgainstCli(page, what) {
   assert.equal(shown.w, cli.w, `${what}: w`);
   assert.equal(shown.channels, cli.channels, `${what}: channels`);
   assert.ok(shown.bytes.equals(cli.bytes), `${what}: the page's image differs from ${command}`);
+  // The branch overlay follows: each pixel's category is the colour
+  // `render --map branch` draws for it, with the same settings.
+  const mapArgs = [...renderArgs];
+  mapArgs[mapArgs.indexOf('-o') + 1] = 'map.ppm';
+  run([...mapArgs, '--map', 'branch']);
+  const map = readNetpbm(join(work, 'map.ppm'));
+  const legend = await page.$$eval('#legend-list li', (items) => items.map((li) => [Number(li.dataset.index), li.dataset.rgb]));
+  const categoryOf = new Map(legend.map(([index, rgb]) => [rgb, index]));
+  for (let p = 0; p < shown.w * shown.w; ++p) {
+    const rgb = `${map.bytes[3 * p]},${map.bytes[3 * p + 1]},${map.bytes[3 * p + 2]}`;
+    if (categoryOf.get(rgb) !== shown.map[p])
+      assert.fail(`${what}: pixel (${Math.floor(p / shown.w)}, ${p % shown.w}) is category ${shown.map[p]} in the page, ${rgb} in render --map branch`);
+  }
   return { shown, sceneText, command };
 }
 
@@ -161,6 +174,8 @@ try {
   assert.match(withPlane.sceneText, /"planes": \[\n {4}\{"Q": \[0, -1, 0\], "n": \[0, 1, 0\]\}/);
   await rendered(page, () => page.click('[data-add="lights"]'));
   await checkAgainstCli(page, 'a light added');
+  // The 3D view follows the scene.
+  assert.deepEqual(await page.evaluate(() => window.promykPage.view3d()), { spheres: 1, planes: 1, lights: 2, zE: 2 });
   // ... and removing them gives the image before, byte for byte.
   await rendered(page, () => page.click('[data-remove="/lights/1"]'));
   await rendered(page, () => page.click('[data-remove="/planes/0"]'));
@@ -217,6 +232,7 @@ try {
   assert.equal(await page.evaluate(() => document.activeElement.getAttribute('aria-label')), 'z_E (the pane\'s distance from the eye) — slider');
   await rendered(page, () => page.keyboard.press('ArrowRight'));
   assert.equal(await page.inputValue('#field-z_E'), '2.01');
+  assert.equal((await page.evaluate(() => window.promykPage.view3d())).zE, 2.01);
   const keyed = await checkAgainstCli(page, 'z_E moved by the keyboard');
 
   // The URL reopens the edited scene (and w): the same image and fields.
@@ -281,8 +297,9 @@ try {
     }
     if (w === 256) await checkAgainstCli(page, 'w = 256');
     times.sort((a, b) => a - b);
+    work.sort((a, b) => a - b);
     const workers = await page.evaluate(() => document.getElementById('render-status').textContent);
-    console.log(`figure: re-render of the article's scene at w = ${w}: median ${times[2]} ms (of ${times.join(', ')} ms, of which the workers ${work.join(', ')} ms; ${workers}); page ${(statSync(big).size / 1e6).toFixed(2)} MB`);
+    console.log(`figure: re-render of the article's scene at w = ${w}: median ${times[2]} ms from the edit to the image shown (${times.join(', ')} ms), median ${work[2]} ms of it in the workers (${work.join(', ')} ms); ${workers}; page ${(statSync(big).size / 1e6).toFixed(2)} MB`);
   }
   assert.deepEqual(failures, []);
 } finally {

@@ -457,14 +457,16 @@ async function start() {
   }
   $('scene-copy').addEventListener('click', async () => {
     const text = `${sceneForFile()}\n${commandLine()}\n`;
+    // Shown at once (the clipboard may take its time, or refuse).
+    $('scene-copied').value = text;
+    $('scene-copied').hidden = false;
+    $('scene-copy-status').textContent = '';
     try {
       await navigator.clipboard.writeText(text);
       $('scene-copy-status').textContent = t('edit_copied');
     } catch {
       $('scene-copy-status').textContent = t('edit_copy_failed');
     }
-    $('scene-copied').value = text;
-    $('scene-copied').hidden = false;
   });
   $('scene-download').addEventListener('click', () => {
     const url = URL.createObjectURL(new Blob([sceneForFile()], { type: 'application/json' }));
@@ -573,11 +575,16 @@ async function start() {
   // the selected pixel's trace, as the page holds them.
   window.promykPage = {
     image() {
-      let binary = '';
-      for (let k = 0; k < image.image.length; k += 0x8000) binary += String.fromCharCode(...image.image.subarray(k, k + 0x8000));
-      return { w: image.w, channels: image.channels, base64: btoa(binary) };
+      const base64 = (bytes) => {
+        let binary = '';
+        for (let k = 0; k < bytes.length; k += 0x8000) binary += String.fromCharCode(...bytes.subarray(k, k + 0x8000));
+        return btoa(binary);
+      };
+      return { w: image.w, channels: image.channels, base64: base64(image.image), map: base64(image.map) };
     },
     trace: () => (current ? current.text : null),
+    // What the 3D view draws of the scene.
+    view3d: () => ({ spheres: view3d.objects.sphere.length, planes: view3d.objects.plane.length, lights: view3d.lights.length, zE: view3d.zE }),
   };
   document.body.dataset.readyMs = String(performance.now());
   document.body.dataset.ready = 'true';
