@@ -6,7 +6,9 @@
 // text equals `promyk trace --format json` of the native binary byte for
 // byte (every field: real_text, digits_lost, ...). Also: a trace file of
 // `render --traces` read by the wasm's trace reader gives back its lines,
-// long double is refused, and the view model formats numbers as the CLI.
+// long double is refused, the view model formats numbers as the CLI, and
+// promyk_render_rows gives `promyk render`'s image and `render --map
+// branch`'s categories, byte for byte, for every example scene.
 //
 //   node wasm_equals_native.mjs --module build/.../promyk.js --promyk build/release/promyk
 //   (run from the source root; --tamper changes one wasm result on purpose,
@@ -195,6 +197,71 @@ if (gz && glue) {
     if (other !== one) fail('the split module: ' + settings);
   }
   console.log(`split module: wasm.gz ${statSync(gz).size} bytes, glue ${statSync(glue).size} bytes`);
+}
+
+// ---- promyk_render_rows: the image and the branch map as render's --------
+// Every example scene in double with the article's formula, and two scenes
+// in every real type, formula and 1 or 4 samples: the rows (asked for a few
+// at a time, as the page's workers do) equal `promyk render` (a PGM/PPM)
+// byte for byte, and the categories are the colours `render --map branch`
+// draws.
+{
+  const work = mkdtempSync(join(tmpdir(), 'promyk-rows-'));
+  const netpbm = (file) => {
+    const data = readFileSync(file);
+    const header = data.subarray(0, 64).toString('latin1').match(/^(P[56])\s+(\d+)\s+(\d+)\s+(\d+)\s/);
+    return { channels: header[1] === 'P6' ? 3 : 1, bytes: data.subarray(header[0].length) };
+  };
+  const legend = json('promyk_legend', ['string'], ['en']).categories;
+  const categoryOf = new Map(legend.map((c) => [c.rgb.join(','), c.index]));
+  const cases = [];
+  const sceneFiles = ['', ...['article', 'colour', 'everything', 'far_sphere', 'floor', 'floor_wall', 'phong', 'shadows',
+    'two_lights', 'two_spheres'].map((name) => `lessons/scenes/${name}.json`)];
+  for (const file of sceneFiles) cases.push({ file, w: 13, settings: { real: 'double', formula: 'article', spp: 1 } });
+  for (const file of ['lessons/scenes/everything.json', 'lessons/scenes/far_sphere.json'])
+    for (const real of reals)
+      for (const formula of ['article', 'stable', 'fma', 'geometric'])
+        for (const spp of [1, 4]) cases.push({ file, w: 9, settings: { real, formula, spp } });
+  let rowsCompared = 0;
+  for (const { file, w, settings } of cases) {
+    const what = `render rows ${file || 'article'} w=${w} ${JSON.stringify(settings)}`;
+    const opened = json('promyk_open_scene', ['string', 'string', 'number'], [file ? readFileSync(file, 'utf8') : '', file, w]);
+    if (!opened.ok) {
+      fail(`${what}: ${JSON.stringify(opened)}`);
+      continue;
+    }
+    const image = [], branch = [];
+    for (let first = 0; first < w; first += 4) {
+      const r = json('promyk_render_rows', ['number', 'number', 'string'], [first, Math.min(4, w - first), JSON.stringify(settings)]);
+      if (r.error) {
+        fail(`${what}: ${r.error}`);
+        break;
+      }
+      image.push(...M.HEAPU8.subarray(r.image, r.image + r.image_bytes));
+      branch.push(...M.HEAPU8.subarray(r.branch, r.branch + r.branch_bytes));
+    }
+    const cliArgs = [...(file ? ['--scene', file] : []), '--w', String(w), '--real', settings.real, '--formula', settings.formula,
+      '--spp', String(settings.spp)];
+    const out = join(work, opened.effects.includes('colour') ? 'image.ppm' : 'image.pgm');
+    native(['render', ...cliArgs, '-o', out]);
+    const cli = netpbm(out);
+    if (tamper && rowsCompared === 0) image[0] ^= 1;
+    if (!Buffer.from(image).equals(cli.bytes)) fail(`${what}: the image differs from promyk render`);
+    native(['render', ...cliArgs, '--map', 'branch', '-o', join(work, 'map.ppm')]);
+    const map = netpbm(join(work, 'map.ppm')).bytes;
+    for (let p = 0; p < w * w; ++p)
+      if (categoryOf.get(`${map[3 * p]},${map[3 * p + 1]},${map[3 * p + 2]}`) !== branch[p]) {
+        fail(`${what}: pixel ${p}'s category ${branch[p]} is not render --map branch's`);
+        break;
+      }
+    rowsCompared += 1;
+  }
+  const refused = json('promyk_render_rows', ['number', 'number', 'string'], [8, 2, '{}']);
+  if (refused.code !== 2) fail('rows outside the pane: ' + JSON.stringify(refused));
+  rmSync(work, { recursive: true, force: true });
+  console.log(`${rowsCompared} renders compared (image and branch map)`);
+  // The figures below trace the article's scene at w = 8.
+  json('promyk_open_scene', ['string', 'string', 'number'], ['', '', 8]);
 }
 
 // ---- figures ---------------------------------------------------------------
