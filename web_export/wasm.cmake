@@ -56,7 +56,8 @@ file(GLOB_RECURSE promyk_wasm_inputs CONFIGURE_DEPENDS
      "${PROJECT_SOURCE_DIR}/lessons/*.json" "${PROJECT_SOURCE_DIR}/lessons/*.md"
      "${CMAKE_CURRENT_LIST_DIR}/wasm/*.cpp" "${CMAKE_CURRENT_LIST_DIR}/wasm/*.hpp"
      "${CMAKE_CURRENT_LIST_DIR}/wasm/CMakeLists.txt")
-list(APPEND promyk_wasm_inputs "${PROJECT_SOURCE_DIR}/cmake/embed_files.cmake" "${PROJECT_SOURCE_DIR}/cmake/embedded_text.cpp.in")
+list(APPEND promyk_wasm_inputs "${PROJECT_SOURCE_DIR}/cmake/embed_files.cmake" "${PROJECT_SOURCE_DIR}/cmake/embedded_text.cpp.in"
+     "${PROJECT_SOURCE_DIR}/cmake/core_sources.cmake")
 # em++ 3.1.6 from Debian runs its tools with node and needs Debian's node
 # modules; the native build's compiler launcher (ccache) is not em++'s.
 set(promyk_wasm_env "${CMAKE_COMMAND}" -E env --unset=CMAKE_CXX_COMPILER_LAUNCHER NODE_PATH=/usr/share/nodejs)

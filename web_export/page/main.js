@@ -145,14 +145,24 @@ async function start() {
     state.scene = scene.edited ? scene.text : null;
     state.w = scene.w !== exported.w ? scene.w : null;
     if (state.pixel && (state.pixel[0] >= scene.w || state.pixel[1] >= scene.w)) state.pixel = null;
+    renderImage(); // first: the workers start while the rest is drawn
     view3d.setScene(opened.scene_content);
     image.traced = tracesMatch() ? traces.pixels : null;
     describeScene();
     drawCommand();
-    renderImage();
     retrace();
     return true;
   }
+
+  // The render workers, started on the first render, or as soon as the
+  // scene panel is touched (their instances take a moment to start).
+  function startPool() {
+    if (pool) return;
+    const count = Math.max(2, Math.min(4, navigator.hardwareConcurrency || 2));
+    pool = new RenderPool($('promyk-glue').textContent, wasmModule, count);
+  }
+  for (const event of ['focusin', 'pointerdown'])
+    $('scene-panel').addEventListener(event, startPool, { once: true });
 
   // The image in the scene, w and settings shown, rendered by the workers.
   async function renderImage() {
@@ -166,11 +176,9 @@ async function start() {
       return;
     }
     const started = performance.now();
+    $('render-status').textContent = t('edit_rendering', { percent: 0 });
     try {
-      if (!pool) {
-        const count = Math.max(2, Math.min(4, navigator.hardwareConcurrency || 2));
-        pool = new RenderPool($('promyk-glue').textContent, wasmModule, count);
-      }
+      startPool();
       const w = scene.w;
       const result = await pool.render({ scene: scene.text, file: scene.file, w, settings }, (done) => {
         if (wantedImage === key) $('render-status').textContent = t('edit_rendering', { percent: Math.floor((100 * done) / w) });

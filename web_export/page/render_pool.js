@@ -99,8 +99,13 @@ export class RenderPool {
   async render({ scene, file, w, settings }, onProgress = () => {}) {
     const number = ++this.jobs;
     if (this.job) this.job.finish(null); // superseded
-    await this.ready;
-    if (number !== this.jobs) return null;
+    // Once the workers are up, the chunks go out before this returns: the
+    // workers compute while the page draws the rest of the edit.
+    if (!this.started) {
+      await this.ready;
+      this.started = true;
+      if (number !== this.jobs) return null;
+    }
     return new Promise((resolve, reject) => {
       const rows = chunkRows(w, settings);
       const chunks = [];
