@@ -235,6 +235,17 @@ try {
   assert.equal((await page.evaluate(() => window.promykPage.view3d())).zE, 2.01);
   const keyed = await checkAgainstCli(page, 'z_E moved by the keyboard');
 
+  // Adding and removing from the keyboard: the new sphere's first field
+  // takes the focus; after a removal, the list's add button has it.
+  await page.focus('[data-add="spheres"]');
+  await rendered(page, () => page.keyboard.press('Enter'));
+  assert.equal(await page.evaluate(() => document.activeElement.id), 'field-spheres-1-S-0');
+  assert.equal((await page.evaluate(() => window.promykPage.view3d())).spheres, 2);
+  await page.focus('[data-remove="/spheres/1"]');
+  await rendered(page, () => page.keyboard.press('Enter'));
+  assert.equal(await page.evaluate(() => document.activeElement.dataset.add), 'spheres');
+  assert.ok((await pageImage(page)).bytes.equals(keyed.shown.bytes), 'the sphere added and removed: the image before');
+
   // The URL reopens the edited scene (and w): the same image and fields.
   await rendered(page, () => page.fill('#field-w', '48'));
   const small = await checkAgainstCli(page, 'w = 48');
