@@ -134,8 +134,10 @@ for case in "trace text" "trace json" "lesson" "render traces"; do
 done
 
 # Long commands of other kinds: bench accuracy, the maps, and render --traces
-# with a map. (An error map at w 1024 with 64 samples a pixel: a row takes
-# about 0.1 s, the whole map over a minute.)
+# with a map. (An error map at w 1024 with 16 samples a pixel: a row takes
+# about 30 ms, 0.3 s under the sanitizers, the whole map over 15 s. At w 4096
+# an error map's first second or more, allocating its w² values, does not
+# see a signal: not tested here.)
 for case in "bench accuracy" "bench accuracy json" "map branch traces" "map error" "map digits-lost"; do
     for signal in INT TERM HUP; do
         fresh
@@ -147,9 +149,9 @@ for case in "bench accuracy" "bench accuracy json" "map branch traces" "map erro
                 interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" render --w 16384 --map branch -o m.png \
                     --traces t.jsonl --trace-region 0,0,16383,7 ;;
             "map error")
-                interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" render --w 1024 --spp 64 --map error -o m.png ;;
+                interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" render --w 1024 --spp 16 --map error -o m.png ;;
             "map digits-lost")
-                interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" render --w 1024 --spp 64 --map digits-lost \
+                interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" render --w 1024 --spp 16 --map digits-lost \
                     --traces t.jsonl --trace-pixel 5,5 -o m.png ;;
         esac
         expected=$((128 + $(kill -l "$signal")))
