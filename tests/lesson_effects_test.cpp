@@ -303,3 +303,34 @@ TEST_CASE("one word wrapper: short groups whole, no line ending early before a g
     // An indented line keeps its indent; continuation lines take `indent`.
     CHECK(wrap_text("  x " + std::string(80, 'y'), 4) == "  x\n    " + std::string(80, 'y'));
 }
+
+TEST_CASE("the word wrapper never starts a line with a lone product operator", "[lesson][wrap]") {
+    // At every line width: the "·" (and "×", "⊙") that stands alone as a word
+    // stays at the end of the line before it.
+    const std::string text =
+        "I_P = 0.7 · 0.2023 + 0.5 · 0.3714 · 1, RV⁴ · RV¹⁶ · RV³² and 8 × 8 squares, c ⊙ m, a · b · c · d · e";
+    int breaks = 0;
+    for (std::size_t columns = 6; columns <= 90; ++columns) {
+        const std::string wrapped = wrap_text(text, 2, columns);
+        INFO("columns " << columns << ":\n" << wrapped);
+        std::size_t start = 0;
+        for (std::size_t end; start <= wrapped.size(); start = end + 1) {
+            end = std::min(wrapped.find('\n', start), wrapped.size());
+            std::string line = wrapped.substr(start, end - start);
+            line.erase(0, line.find_first_not_of(' '));
+            for (const std::string op : {"·", "×", "⊙"}) CHECK(line.rfind(op, 0) != 0);
+            if (end == wrapped.size()) break;
+            ++breaks;
+        }
+        // Only the breaks moved: the words are the same.
+        std::string joined;
+        for (const char c : wrapped) joined += c == '\n' ? ' ' : c;
+        std::string flat_joined;
+        for (const char c : joined)
+            if (!(c == ' ' && !flat_joined.empty() && flat_joined.back() == ' ')) flat_joined += c;
+        CHECK(flat_joined == text);
+    }
+    CHECK(breaks > 50);
+    CHECK(wrap_text("aaaa bb · cc", 0, 9) == "aaaa bb ·\ncc");
+    CHECK(wrap_text("aaaa · bb", 0, 7) == "aaaa ·\nbb");
+}

@@ -5,13 +5,16 @@
 #include <catch2/catch.hpp>
 
 #include <map>
+#include <optional>
 
+#include "geometry/unit_normal.hpp"
 #include "lesson/lesson_check.hpp"
 #include "lesson/lesson_library.hpp"
 #include "lesson/lesson_render.hpp"
 #include "render/trace_pixel.hpp"
 #include "trace/intensity_formula.hpp"
 #include "trace/messages.hpp"
+#include "trace/number_text.hpp"
 #include "trace/trace_text.hpp"
 
 using namespace promyk;
@@ -272,4 +275,107 @@ TEST_CASE("lesson checks read the new forms (conditions, needs, {i} in prose) an
     CHECK(problems("## [a] A\n\n= sphere[*].D\n").size() == 1);
     CHECK(problems("## [a] A\n\nPixel value {t} in prose.\n").size() == 1);
     CHECK(problems("## [a] A\n\n::: scene a.json b.json\nx\n:::\n").size() == 1);
+}
+
+namespace {
+
+// A built-in lesson in a language (its faults fail the test).
+Lesson builtin_lesson(const std::string& name, Language language) {
+    const std::optional<Lesson> lesson = LessonLibrary().find(name, language);
+    REQUIRE(lesson);
+    return *lesson;
+}
+
+// "RV⁴ · RV¹⁶": the powers that n's binary digits 1 name, lowest first.
+std::string squarings_product(int n) {
+    static const char* digits[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+    std::string out;
+    for (int bit = 0; (1 << bit) <= n; ++bit) {
+        if (!(n & (1 << bit))) continue;
+        std::string power;
+        for (const char c : std::to_string(1 << bit)) power += digits[c - '0'];
+        out += (out.empty() ? "" : " · ") + std::string("RV") + (bit == 0 ? "" : power);
+    }
+    return out;
+}
+
+std::string binary(int n) {
+    std::string out;
+    for (; n > 0; n >>= 1) out.insert(out.begin(), char('0' + (n & 1)));
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("lesson phong: what it says about n's binary digits holds for the scene's n", "[lesson][guards]") {
+    const Scene own = example("phong.json");
+    REQUIRE(own.materials.size() == 1);
+    for (const Language language : {Language::en, Language::pl}) {
+        const Lesson lesson = builtin_lesson("phong", language);
+        // The own scene: the sentence about n names its n, its binary digits
+        // and the product those digits call for, computed here.
+        {
+            const int n = own.materials[0].exponent;
+            const Run run(lesson, own, {{3, 5}, {2, 4}}, "phong.json");
+            const std::string text = flat(run.text());
+            INFO(text);
+            const std::string product = squarings_product(n);
+            CHECK(product == "RV⁴ · RV¹⁶");
+            CHECK(text.find("n = " + std::to_string(n) + (language == Language::en ? ", which is " : ", czyli dwójkowo ") +
+                            binary(n)) != std::string::npos);
+            CHECK(text.find("RV²⁰ = " + product) != std::string::npos);
+            CHECK(text.find("n = " + std::to_string(n) + " ") != std::string::npos);
+        }
+        // Another n, on a scene of another name: no sentence about 20 or its
+        // digits, and the exercise names the scene's n.
+        for (const int n : {7, 64, 10000}) {
+            Scene scene = own;
+            scene.materials[0].exponent = n;
+            const Run run(lesson, scene, {{3, 5}, {2, 4}}, "shiny.json");
+            const std::string text = flat(run.text());
+            INFO("n = " << n << ": " << text);
+            CHECK(text.find("10100") == std::string::npos);
+            CHECK(text.find("RV²⁰ =") == std::string::npos);
+            CHECK(text.find("n = 20,") == std::string::npos);
+            CHECK(text.find(binary(20)) == std::string::npos);
+            CHECK(text.find(language == Language::en ? "20th power" : "potęgi 20 ") == std::string::npos);
+            // From n = 16 up the exercise runs (it asks for RV¹⁶), naming the scene's n.
+            if (n >= 16) CHECK(text.find("n = " + std::to_string(n) + " ") != std::string::npos);
+        }
+    }
+}
+
+TEST_CASE("lesson planes: n·E is the plane's own, never y_E, on a tilted plane", "[lesson][guards]") {
+    // A plane tilted about the x axis, n = (0, 1, 1), seen by the lower rows.
+    Scene tilted = example("floor_wall.json");
+    tilted.planes.resize(1);
+    tilted.planes[0].n = {0, 1, 1};
+    tilted.planes[0].Q = {0, -1.5, 2};
+    const int w = 15;
+    // The first pixel, row by row, whose nearest hit is the plane.
+    std::pair<int, int> on_plane{-1, -1};
+    for (int i = w - 1; i >= 0 && on_plane.first < 0; --i)
+        for (int j = 0; j < w && on_plane.first < 0; ++j)
+            if (trace_pixel(tilted, w, i, j).hit_object == "plane 0") on_plane = {i, j};
+    REQUIRE(on_plane.first >= 0);
+    const PixelTrace trace = trace_pixel(tilted, w, on_plane.first, on_plane.second);
+    const Vec3d E = std::get<Vec3d>(*lesson_value(trace, "E"));
+    const Vec3d n_hat = unit_normal<double>(tilted.planes[0].n);
+    const double NE = dot(n_hat, E);
+    REQUIRE(E.y != NE);  // the floor's shortcut would be false here
+    for (const Language language : {Language::en, Language::pl}) {
+        const Lesson lesson = builtin_lesson("planes", language);
+        const Run run(lesson, tilted, {on_plane}, "tilted.json", w);
+        const std::string text = flat(run.text());
+        INFO(text);
+        CHECK(text.find("n̂·E = y_E") == std::string::npos);
+        CHECK(text.find("y_E = 0") == std::string::npos);
+        CHECK(text.find("n̂·E = n̂_x·x_E + n̂_y·y_E + n̂_z·z_E = " + shown_number(NE, language, 4)) != std::string::npos);
+    }
+    // The lesson's own scene still says the floor's shortcut, which holds there.
+    const Scene own = example("floor_wall.json");
+    REQUIRE(own.planes[0].n == Vec3d{0, 1, 0});
+    const Lesson lesson = builtin_lesson("planes", Language::en);
+    const Run run(lesson, own, {{14, 3}}, "floor_wall.json", w);
+    CHECK(flat(run.text()).find("for the floor n̂·E = y_E") != std::string::npos);
 }

@@ -228,7 +228,7 @@ TEST_CASE("limits that are allowed load", "[scene]") {
     check_accepted(scene_text(R"("background": 0,)"));
     check_accepted(scene_text(R"("background": 1,)"));
     check_accepted(scene_text("", article_sphere, R"({"L": [1.5, 1, 1], "I": 0})"));
-    check_accepted(scene_text(R"("z_E": 1e-300,)"));
+    check_accepted(scene_text(R"("z_E": 1e-50,)"));  // min_scene_magnitude
     check_accepted(scene_text(R"("name": ")" + std::string(200, 'a') + R"(",)"));
     std::string polish;                                  // 200 characters, 400 bytes
     for (int k = 0; k < 200; ++k) polish += "\xC5\x9B";  // ś
@@ -244,6 +244,20 @@ TEST_CASE("limits that are allowed load", "[scene]") {
     check_accepted(scene_text("", article_sphere, R"({"L": [1, 1, 1], "colour": [0, 0, 1]})"));
     check_accepted(scene_text(R"("planes": [{"Q": [0, 0, 0], "n": [1e-150, 0, 0]}],)"));  // n·n = 1e-300
     check_accepted(scene_text(R"("planes": [{"Q": [0, -1, 0], "n": [0, 1e150, 0]}],)"));
+}
+
+TEST_CASE("a position or length other than 0 below 1e-50 is refused, with the field and the limit", "[scene]") {
+    check_rejected(scene_text(R"("z_E": 1e-300,)"), "/z_E", {"z_E = 1e-300", "at least 1e-50", "too small"});
+    check_rejected(scene_text("", R"({"S": [0, 0, 1e-200], "r": 1e-201})"), "/spheres/0/S/2",
+                   {"S[2] (z) = 1e-200", "at least 1e-50"});
+    check_rejected(scene_text("", R"({"S": [0, 0, 3], "r": 9e-51})"), "/spheres/0/r", {"r = 9e-51"});
+    check_rejected(scene_text("", article_sphere, R"({"L": [-1e-160, 1, 1]})"), "/lights/0/L/0",
+                   {"L[0] (x) = -1e-160"});
+    check_rejected(scene_text(R"("planes": [{"Q": [5e-324, -1, 0], "n": [0, 1, 0]}],)"), "/planes/0/Q/0",
+                   {"Q[0] (x) = 5e-324"});
+    // 0 and -0 are fine, and so is the limit itself.
+    check_accepted(scene_text("", R"({"S": [0, -0.0, 1e-50], "r": 1e-50})"));
+    check_accepted(scene_text("", article_sphere, R"({"L": [-1e-50, 0, 1]})"));
 }
 
 TEST_CASE("a scene that is not a JSON object is rejected", "[scene]") {
@@ -374,7 +388,7 @@ TEST_CASE("the eye inside or on a sphere is accepted, |S|² − r² must be fini
     const Scene inside = parse_scene(scene_text("", R"({"S": [0, 0, 1], "r": 2})"), "test.json");
     CHECK(inside.spheres.at(0).r == 2);
     check_accepted(scene_text("", R"({"S": [0, 0, 3.2], "r": 3.2})"));
-    check_accepted(scene_text("", R"({"S": [0, 0, 1e-200], "r": 1e-201})"));  // |S|² − r² underflows to 0
+    check_accepted(scene_text("", R"({"S": [0, 0, 1e-50], "r": 1e-50})"));  // the eye on the sphere
     check_accepted(scene_text("", R"({"S": [0, 0, 3.2], "r": 3.1999999999999997})"));
     check_rejected(scene_text("", R"({"S": [0, 0, 1e200], "r": 1})"), "/spheres/0", {"not finite", "|S|² − r²"});
     check_rejected(scene_text("", article_sphere + R"(, {"S": [0, 0, 3], "r": 1e155})"), "/spheres/1",
@@ -394,7 +408,11 @@ TEST_CASE("planes: Q and n are required, n must be a usable direction", "[scene]
     // overflowing or underflowing): the engine scales it first.
     check_accepted(plane(R"({"Q": [0, 0, 0], "n": [1e200, 0, 0]})"));
     check_accepted(plane(R"({"Q": [0, 0, 0], "n": [0, 1e-200, 0]})"));
-    check_accepted(plane(R"({"Q": [0, 0, 0], "n": [0, 3e-162, 4e-320]})"));
+    check_accepted(plane(R"({"Q": [0, 0, 0], "n": [0, 3e-162, 4e-212]})"));
+    // A component more than 1e50 times smaller than the largest is refused:
+    // n̂'s products with Q and E would underflow.
+    check_rejected(plane(R"({"Q": [0, 0, 0], "n": [0, 3e-162, 4e-320]})"), "/planes/0/n/2",
+                   {"n[2] = 4e-320", "1e+50 times smaller", "3e-162"});
     check_accepted(plane(R"({"Q": [0, 0, 0], "n": [-1.7e308, 1.7e308, 1.7e308]})"));
     check_rejected(plane(R"({"Q": [1.5e308, 1.5e308, 0], "n": [1, 1, 0]})"), "/planes/0",
                    {"too far", "n̂·Q", "not finite"});
@@ -552,7 +570,7 @@ TEST_CASE("scene_to_json reads back to the same scene", "[scene]") {
     odd.name = "Śledzenie \"promieni\" \\ ☀";
     odd.z_E = 0.1 + 0.2;
     odd.background = {5e-324, 5e-324, 5e-324};
-    odd.spheres[0].S = {-0.0, 1e-300, 123456789012345678.0};
+    odd.spheres[0].S = {-0.0, 1e-50, 123456789012345678.0};
     odd.spheres[0].r = 1.0 / 3;
     odd.lights[0].L = {std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(), -0.0};
     odd.lights[0].I = 1e300;
@@ -567,7 +585,7 @@ TEST_CASE("scene_to_json reads back to the same scene", "[scene]") {
     rich.materials = {promyk::Material{0.1, 0.0, 1e300, 10000, {0.3, 5e-324, 1}}, promyk::Material{}};
     rich.spheres[0].material = 1;
     rich.spheres.push_back(promyk::Sphere{{1, 2, -7}, 0.5, promyk::no_material});
-    rich.planes = {promyk::Plane{{0, -1.1, 0}, {0, 1, 0}, 0}, promyk::Plane{{1e-300, 0, 3}, {-1e-150, 3, 1e150}}};
+    rich.planes = {promyk::Plane{{0, -1.1, 0}, {0, 1, 0}, 0}, promyk::Plane{{1e-50, 0, 3}, {-1e-30, 3, 1e20}}};
     rich.lights[0].colour = {1, 0.95, -0.0};
     rich.lights.push_back(promyk::Light{{0, 0, 0}, 0, {1, 1, 1}});
     const std::string rich_text = promyk::scene_to_json(rich);
@@ -577,9 +595,15 @@ TEST_CASE("scene_to_json reads back to the same scene", "[scene]") {
 
     // Random doubles of every magnitude the validation lets through.
     std::mt19937_64 random(20240611);
-    std::uniform_int_distribution<int> exponent(-150, 150);
+    // (Down to about 1e-48: a number other than 0 below min_scene_magnitude, 1e-50, is refused.)
+    std::uniform_int_distribution<int> exponent(-140, 150);
     std::uniform_real_distribution<double> mantissa(-1, 1);
-    const auto any = [&] { return std::ldexp(mantissa(random), exponent(random)); };
+    const auto any = [&] {
+        double m;
+        do m = mantissa(random);
+        while (std::abs(m) < 1e-6);
+        return std::ldexp(m, exponent(random));
+    };
     for (int n = 0; n < 500; ++n) {
         Scene scene;
         scene.name = "random " + std::to_string(n);
@@ -607,7 +631,7 @@ TEST_CASE("scene_to_json reads back to the same scene", "[scene]") {
             for (int k = count(random); k > 0; --k) {
                 const promyk::Vec3d C{any(), any(), any()};
                 scene.spheres.push_back(
-                    promyk::Sphere{C, std::sqrt(promyk::length_squared(C)) * unit(random) + 1e-300, material()});
+                    promyk::Sphere{C, std::sqrt(promyk::length_squared(C)) * std::max(unit(random), 0.01), material()});
             }
             for (int k = count(random); k > 0; --k) {
                 promyk::Vec3d normal{mantissa(random), mantissa(random), mantissa(random)};

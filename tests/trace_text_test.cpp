@@ -5,11 +5,14 @@
 #include <catch2/catch.hpp>
 
 #include <array>
+#include <cctype>
 #include <string>
 #include <vector>
 
 #include "render/trace_pixel.hpp"
 #include "scene/scene.hpp"
+#include "trace/intensity_formula.hpp"
+#include "trace/messages.hpp"
 #include "trace/trace_compare.hpp"
 #include "trace/trace_text.hpp"
 #include "trace/vocabulary.hpp"
@@ -139,6 +142,37 @@ TEST_CASE("trace --compare: a vector agrees as far as its worst component, and t
             INFO(out.substr(start, end - start));
             CHECK(width <= 80);
             start = end + 1;
+        }
+    }
+}
+
+TEST_CASE("trace text: the branch line names the branch once, then says why", "[trace-text]") {
+    // Every branch's words, in both languages and every effect set, never
+    // repeat its short name ("lit side — the lit side (D > 0)" was the fault).
+    const Vocabulary& vocabulary = builtin_vocabulary();
+    const Branch branches[] = {Branch::miss, Branch::dark, Branch::lit, Branch::shadowed, Branch::non_finite};
+    for (const Language language : {Language::pl, Language::en})
+        for (const Branch branch : branches)
+            for (const char* effects : {"lambert", "lights+shadows+phong+colour"}) {
+                const std::string name = message(language, "branch_name_" + std::string(branch_name(branch)));
+                const std::string about = branch_about(vocabulary, branch, effects, language);
+                INFO(name << " / " << about);
+                CHECK(!about.empty());
+                std::string lower_about = about;
+                for (char& c : lower_about) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+                CHECK(lower_about.find(name) == std::string::npos);
+                CHECK(branch_named(vocabulary, branch, effects, language) == name + " — " + about);
+            }
+    // The trace's footer is that line, once.
+    for (const auto& [i, j] : std::vector<std::pair<int, int>>{{0, 0}, {5, 1}, {3, 4}}) {
+        const PixelTrace trace = trace_pixel(article_scene(), 8, i, j);
+        for (const Language language : {Language::pl, Language::en}) {
+            const std::string text = text_of(trace, language);
+            const std::string name = message(language, "branch_name_" + std::string(branch_name(trace.branch)));
+            std::size_t count = 0;
+            for (std::size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1)) ++count;
+            INFO(text);
+            CHECK(count == 1);
         }
     }
 }

@@ -317,12 +317,10 @@ std::string answers_report(const std::vector<AnswerCheck>& checks, const std::ve
         const std::string pixel = message(language, "pixel_label", {{"i", std::to_string(check.pixel.i)}, {"j", std::to_string(check.pixel.j)}});
         if (!current || current->i != check.pixel.i || current->j != check.pixel.j) {
             current = check.pixel;
-            const BranchEntry* branch = vocabulary.find_branch(branch_name(trace->branch));
             out += (out.empty() ? "" : "\n") +
                    message(language, "answers_pixel",
                            {{"pixel", pixel},
-                            {"branch", branch ? branch_about(vocabulary, trace->branch, effect_set(*trace), language)
-                                              : std::string(branch_name(trace->branch))}}) +
+                            {"branch", branch_named(vocabulary, trace->branch, effect_set(*trace), language)}}) +
                    "\n";
         }
         if (check.verdict == Verdict::unreadable) {

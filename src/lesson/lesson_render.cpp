@@ -45,8 +45,7 @@ std::string not_reached_cell(const PixelTrace& trace, Language language) {
 
 // The branch in words, its formula the one of the trace's scene's effects.
 std::string branch_text(const Vocabulary& vocabulary, const PixelTrace& trace, Language language) {
-    if (vocabulary.find_branch(branch_name(trace.branch)) == nullptr) return std::string(branch_name(trace.branch));
-    return branch_about(vocabulary, trace.branch, effect_set(trace), language);
+    return branch_named(vocabulary, trace.branch, effect_set(trace), language);
 }
 
 // A key's symbol in the lesson's language: the vocabulary's, unless

@@ -4,7 +4,10 @@
 #include <limits>
 #include <string_view>
 
+#include <fmt/format.h>
+
 #include "render/stages.hpp"
+#include "scene/scene_validate.hpp"
 #include "trace/messages.hpp"
 #include "trace/number_text.hpp"
 
@@ -205,6 +208,35 @@ void add_geometry_warnings(const Scene& scene, SceneReport& report) {
         if (scene.lights[l].I == 0) report.warnings.push_back(warning("scene_warn_dark_light", {{"l", index(l)}}));
 }
 
+// The smallest size of a number other than 0 among the positions and
+// lengths (as the loader checks them against min_scene_magnitude), with its
+// JSON pointer; below min_float_magnitude float's unit vectors come out short.
+void add_float_range_warning(const Scene& scene, SceneReport& report) {
+    double smallest = scene.z_E;
+    std::string where = "/z_E";
+    const auto consider = [&](double x, const std::string& pointer) {
+        if (x != 0 && std::fabs(x) < std::fabs(smallest)) {
+            smallest = x;
+            where = pointer;
+        }
+    };
+    const auto consider_point = [&](const Vec3d& p, const std::string& pointer) {
+        consider(p.x, pointer + "/0");
+        consider(p.y, pointer + "/1");
+        consider(p.z, pointer + "/2");
+    };
+    for (std::size_t k = 0; k < scene.spheres.size(); ++k) {
+        consider_point(scene.spheres[k].S, "/spheres/" + index(k) + "/S");
+        consider(scene.spheres[k].r, "/spheres/" + index(k) + "/r");
+    }
+    for (std::size_t k = 0; k < scene.planes.size(); ++k) consider_point(scene.planes[k].Q, "/planes/" + index(k) + "/Q");
+    for (std::size_t l = 0; l < scene.lights.size(); ++l) consider_point(scene.lights[l].L, "/lights/" + index(l) + "/L");
+    if (std::fabs(smallest) < scene_detail::min_float_magnitude)
+        report.warnings.push_back(warning("scene_warn_float_small", {{"value", fmt::format("{}", smallest)},
+                                                                     {"where", where},
+                                                                     {"limit", fmt::format("{}", scene_detail::min_float_magnitude)}}));
+}
+
 void add_probe_warnings(const Scene& scene, int probe_w, SceneReport& report) {
     const Probe probe = probe_pane(scene, probe_w);
     const std::string w = std::to_string(probe_w);
@@ -238,6 +270,7 @@ SceneReport report_scene(const Scene& scene, int probe_w) {
     add_contents(scene, report);
     add_stages(scene, report);
     add_geometry_warnings(scene, report);
+    add_float_range_warning(scene, report);
     add_probe_warnings(scene, probe_w, report);
     return report;
 }

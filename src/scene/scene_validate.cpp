@@ -61,7 +61,7 @@ public:
         Scene scene;
         if (const auto it = root.find("name"); it != root.end()) attempt([&] { scene.name = read_name(*it, "/name"); });
         if (const auto it = root.find("z_E"); it != root.end()) attempt([&] {
-                scene.z_E = read_number(*it, "/z_E", "z_E");
+                scene.z_E = read_length(*it, "/z_E", "z_E");
                 if (!(scene.z_E > 0)) fail("/z_E", ui_message("scene_z_E", {{"value", number(scene.z_E)}}));
             });
         if (const auto it = root.find("background"); it != root.end())
@@ -136,6 +136,31 @@ private:
                 fail(child(pointer, key), ui_message("scene_unknown_key",
                                                      {{"key", shown_key(key)}, {"hint", unknown_key_hint(key, level)}}));
             });
+    }
+
+    // A number other than 0 smaller than min_scene_magnitude: refused.
+    static void require_not_tiny(double x, const std::string& pointer, std::string_view what) {
+        if (x != 0 && std::fabs(x) < min_scene_magnitude)
+            fail(pointer, ui_message("scene_tiny", {{"what", std::string(what)},
+                                                    {"value", number(x)},
+                                                    {"limit", number(min_scene_magnitude)}}));
+    }
+
+    // A length (z_E, r): a finite number, not tiny.
+    static double read_length(const Json& value, const std::string& pointer, std::string_view what) {
+        const double x = read_number(value, pointer, what);
+        require_not_tiny(x, pointer, what);
+        return x;
+    }
+
+    // A position (S, Q, L): three finite numbers, none tiny.
+    static Vec3d read_position(const Json& value, const std::string& pointer, std::string_view what) {
+        const Vec3d p = read_vec3(value, pointer, what);
+        static const char* axes[3] = {"x", "y", "z"};
+        const double xyz[3] = {p.x, p.y, p.z};
+        for (std::size_t k = 0; k < 3; ++k)
+            require_not_tiny(xyz[k], child(pointer, k), fmt::format("{}[{}] ({})", what, k, axes[k]));
+        return p;
     }
 
     static double read_number(const Json& value, const std::string& pointer, std::string_view what) {
@@ -281,9 +306,9 @@ private:
     Sphere read_sphere(const Json& value, const std::string& pointer, std::size_t materials) {
         Sphere sphere;
         if (!check_element(value, pointer, sphere_level(), "{\"S\": [x, y, z], \"r\": r}")) return sphere;
-        const bool S = attempt([&] { sphere.S = read_vec3(require(value, "S", pointer), child(pointer, "S"), "S"); });
+        const bool S = attempt([&] { sphere.S = read_position(require(value, "S", pointer), child(pointer, "S"), "S"); });
         const bool r = attempt([&] {
-            sphere.r = read_number(require(value, "r", pointer), child(pointer, "r"), "r");
+            sphere.r = read_length(require(value, "r", pointer), child(pointer, "r"), "r");
             if (!(sphere.r > 0)) fail(child(pointer, "r"), ui_message("scene_radius", {{"value", number(sphere.r)}}));
         });
         attempt([&] { sphere.material = read_material_index(value, pointer, materials); });
@@ -296,12 +321,24 @@ private:
     Plane read_plane(const Json& value, const std::string& pointer, std::size_t materials) {
         Plane plane;
         if (!check_element(value, pointer, plane_level(), "{\"Q\": [x, y, z], \"n\": [x, y, z]}")) return plane;
-        const bool Q = attempt([&] { plane.Q = read_vec3(require(value, "Q", pointer), child(pointer, "Q"), "Q"); });
+        const bool Q = attempt([&] { plane.Q = read_position(require(value, "Q", pointer), child(pointer, "Q"), "Q"); });
         const std::string n_pointer = child(pointer, "n");
         const bool n = attempt([&] {
             plane.n = read_vec3(require(value, "n", pointer), n_pointer, "n");
             // Any other finite n has a direction: unit_normal scales it first.
             if (plane.n == Vec3d{0, 0, 0}) fail(n_pointer, ui_message("scene_normal_zero"));
+            // A component far smaller than the largest would make n̂'s own
+            // products with Q and E underflow (a plane through the eye to
+            // within 1e-300, its hits' |K|² 0): the same bound, relative.
+            const double parts[3] = {plane.n.x, plane.n.y, plane.n.z};
+            const double largest = std::max({std::fabs(parts[0]), std::fabs(parts[1]), std::fabs(parts[2])});
+            for (std::size_t k = 0; k < 3; ++k)
+                if (parts[k] != 0 && std::fabs(parts[k]) < min_scene_magnitude * largest)
+                    fail(child(n_pointer, k), ui_message("scene_normal_tiny_part",
+                                                         {{"what", fmt::format("n[{}]", k)},
+                                                          {"value", number(parts[k])},
+                                                          {"ratio", number(1 / min_scene_magnitude)},
+                                                          {"largest", number(largest)}}));
         });
         attempt([&] { plane.material = read_material_index(value, pointer, materials); });
         // The engine's n̂·Q.
@@ -313,7 +350,7 @@ private:
     Light read_light(const Json& value, const std::string& pointer) {
         Light light;
         if (!check_element(value, pointer, light_level(), "{\"L\": [x, y, z], \"I\": I}")) return light;
-        attempt([&] { light.L = read_vec3(require(value, "L", pointer), child(pointer, "L"), "L"); });
+        attempt([&] { light.L = read_position(require(value, "L", pointer), child(pointer, "L"), "L"); });
         if (const auto it = value.find("I"); it != value.end()) attempt([&] {
                 light.I = read_number(*it, child(pointer, "I"), "I");
                 if (!(light.I >= 0)) fail(child(pointer, "I"), ui_message("scene_intensity", {{"value", number(light.I)}}));

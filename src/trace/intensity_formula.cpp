@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scene/scene_json.hpp"
+#include "trace/messages.hpp"
 #include "trace/trace.hpp"
 #include "util/errors.hpp"
 
@@ -97,6 +98,12 @@ std::string branch_about(const Vocabulary& vocabulary, Branch branch, std::strin
     if (const std::size_t at = text.find(mark); at != std::string::npos)
         text.replace(at, mark.size(), intensity_formula(effects).formula);
     return text;
+}
+
+std::string branch_named(const Vocabulary& vocabulary, Branch branch, std::string_view effects, Language language) {
+    const std::string name = message(language, "branch_name_" + std::string(branch_name(branch)));
+    const std::string about = branch_about(vocabulary, branch, effects, language);
+    return about.empty() ? name : name + " — " + about;
 }
 
 }  // namespace promyk

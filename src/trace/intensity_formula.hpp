@@ -52,4 +52,10 @@ std::string step_formula(const VocabularyEntry* entry, std::string_view key, std
 // "{formula}" is the effect set's formula of I_P.
 std::string branch_about(const Vocabulary& vocabulary, Branch branch, std::string_view effects, Language language);
 
+// The branch as every output names it: its short name, then what it means,
+// "lit side — the point faces a light (D > 0): I·D / (r·√|K|²)". The
+// vocabulary's words say why (they never repeat the name); the name alone
+// for a branch the vocabulary lacks.
+std::string branch_named(const Vocabulary& vocabulary, Branch branch, std::string_view effects, Language language);
+
 }  // namespace promyk

@@ -317,10 +317,8 @@ std::optional<double> top_level_number(const PixelTrace& trace, Key key) {
 std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, const TraceTextOptions& options) {
     const Language language = options.language;
     const std::string branch(branch_name(trace.branch));
-    const BranchEntry* about = vocabulary.find_branch(branch);
-    const std::string about_text = branch_about(vocabulary, trace.branch, effect_set(trace), language);
     const std::string branch_lead = message(language, "trace_branch");
-    std::string out = "\n" + wrap(branch_lead, message(language, "branch_name_" + branch) + (about ? " — " + about_text : ""),
+    std::string out = "\n" + wrap(branch_lead, branch_named(vocabulary, trace.branch, effect_set(trace), language),
                                   display_width(branch_lead));
     const VocabularyEntry* result = vocabulary.find("I_P");
     const std::string I_P = result ? result->symbol : "I_P";

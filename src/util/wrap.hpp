@@ -16,12 +16,17 @@ inline constexpr std::size_t text_columns = 80;
 // point "(0,1323; 0,1323; 2,116)". A longer group breaks like prose.
 inline constexpr std::size_t group_columns = 40;
 
+// Operators that never start a wrapped line: the product dot of the
+// article's formulas (and ×, ⊙ of the pane's size and of colours).
+inline bool is_glued_operator(std::string_view word) { return word == "·" || word == "×" || word == "⊙"; }
+
 // `text` with each of its lines broken at spaces so that none is wider than
 // `columns` (display width); continuation lines start with `indent` spaces;
 // `first_used` columns of the first line are taken already (a lead printed
 // before it). A word longer than a line stays whole; so does a bracketed
 // group of at most group_columns, moved whole to the next line when it does
-// not fit (a longer one is not: a line never ends early before it). A line's
+// not fit (a longer one is not: a line never ends early before it). A lone
+// "·", "×" or "⊙" stays at the end of the line before. A line's
 // own leading spaces are kept (an indented example). No trailing newline.
 inline std::string wrap_text(std::string_view text, std::size_t indent = 0, std::size_t columns = text_columns,
                              std::size_t first_used = 0) {
@@ -53,6 +58,14 @@ inline std::string wrap_text(std::string_view text, std::size_t indent = 0, std:
                 if (open(line.substr(k, group_end - k)) <= 0 &&
                     display_width(line.substr(k, group_end - k)) <= group_columns)
                     word_end = group_end;
+            }
+            // An operator standing alone ("RV⁴ · RV¹⁶") stays with the word
+            // before it, so that no line starts with it: the break goes after it.
+            while (word_end < line.size()) {
+                std::size_t after = word_end + 1;
+                while (after < line.size() && line[after] != ' ') ++after;
+                if (!is_glued_operator(line.substr(word_end + 1, after - word_end - 1))) break;
+                word_end = after;
             }
             const std::string_view word = line.substr(k, word_end - k);
             if (!first_word && width + 1 + display_width(word) > columns) {

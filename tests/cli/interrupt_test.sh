@@ -9,11 +9,15 @@
 #   - SIGINT, SIGTERM, SIGHUP during one pixel's trace of 1,500 spheres and
 #     1,500 lights with shadows (2.25 million shadow tests): trace (text and
 #     JSON), lesson shadows, render --traces; within a second (3 s under the
-#     sanitizers, PROMYK_SIGNAL_DELAY >= 1), with nothing on standard output.
+#     sanitizers, PROMYK_SIGNAL_DELAY >= 1), with nothing on standard output;
+#   - SIGINT, SIGTERM, SIGHUP during bench accuracy (with --json), during
+#     render --map (branch with traces, error, digits-lost) and during the
+#     trace-size estimate of render --traces: the same exit code, within the
+#     same time, no file left.
 # usage: interrupt_test.sh PROMYK WORKDIR
 set -u
 promyk=$1 dir=$2
-passed=0 failed=0
+. "$(dirname "$0")/lib.sh"
 
 fresh() { rm -rf "$dir" && mkdir -p "$dir" && cd "$dir" || exit 1; }
 fail() { echo "$1"; cat err.txt; failed=$((failed + 1)); }
@@ -99,21 +103,9 @@ before=$failed
 [ -z "$(left)" ] || fail "render scene FIFO SIGINT: files left behind: $(left)"
 [ $failed = $before ] && passed=$((passed + 1))
 
-# A scene of 1,500 spheres and 1,500 lights with shadows: sphere 0 fills the
-# pane's middle, the others are small and behind the eye, every light is
-# between the eye and sphere 0; so pixel (4, 4) of an 8 x 8 pane hits sphere
-# 0, faces every light and tests every sphere on the way to each (a trace of
-# about 1 GB, past the default limit: --max-trace-size lets it run).
-many_scene() {
-    awk -v n="$1" -v m="$2" 'BEGIN {
-        printf "{\"name\": \"many\", \"shadows\": true, \"spheres\": [{\"S\": [0, 0, 6], \"r\": 3}"
-        for (k = 1; k < n; k++) printf ", {\"S\": [%d, %d, -20], \"r\": 0.01}", k % 40, int(k / 40)
-        printf "], \"lights\": ["
-        for (k = 0; k < m; k++)
-            printf "%s{\"L\": [%.3f, %.3f, 1], \"I\": 0.0001}", (k ? ", " : ""), (k % 40) / 40 - 0.5, int(k / 40) / 40 - 0.5
-        printf "]}\n"
-    }'
-}
+# A scene of 1,500 spheres and 1,500 lights with shadows (many_scene, lib.sh):
+# pixel (4, 4) tests every sphere on the way to every light, a trace of about
+# 1 GB, past the default limit: --max-trace-size lets it run.
 # Within a second of the signal; the sanitizers' build is slower to unwind.
 limit_ms=1000
 [ "${PROMYK_SIGNAL_DELAY:-0}" != 0 ] && [ "${PROMYK_SIGNAL_DELAY%%.*}" -ge 1 ] 2>/dev/null && limit_ms=3000
@@ -135,6 +127,37 @@ for case in "trace text" "trace json" "lesson" "render traces"; do
         [ "$code" = "$expected" ] || fail "$case SIG$signal: exit $code, expected $expected"
         [ "$took_ms" -le "$limit_ms" ] || fail "$case SIG$signal: ended ${took_ms} ms after the signal (at most $limit_ms)"
         [ ! -s out.txt ] || fail "$case SIG$signal: $(wc -c <out.txt) bytes on standard output"
+        [ -z "$(left)" ] || fail "$case SIG$signal: files left behind: $(left)"
+        grep -q "interrupted by SIG$signal" err.txt || fail "$case SIG$signal: no message on stderr"
+        [ $failed = $before ] && passed=$((passed + 1))
+    done
+done
+
+# Long commands of other kinds: bench accuracy, the maps, and render --traces
+# with a map. (An error map at w 1024 with 16 samples a pixel: a row takes
+# about 30 ms, 0.3 s under the sanitizers, the whole map over 15 s. At w 4096
+# an error map's first second or more, allocating its w² values, does not
+# see a signal: not tested here.)
+for case in "bench accuracy" "bench accuracy json" "map branch traces" "map error" "map digits-lost"; do
+    for signal in INT TERM HUP; do
+        fresh
+        case $case in
+            "bench accuracy") interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" bench accuracy --threads 1 ;;
+            "bench accuracy json")
+                interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" bench accuracy --threads 1 --json a.json ;;
+            "map branch traces")
+                interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" render --w 16384 --map branch -o m.png \
+                    --traces t.jsonl --trace-region 0,0,16383,7 ;;
+            "map error")
+                interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" render --w 1024 --spp 16 --map error -o m.png ;;
+            "map digits-lost")
+                interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" render --w 1024 --spp 16 --map digits-lost \
+                    --traces t.jsonl --trace-pixel 5,5 -o m.png ;;
+        esac
+        expected=$((128 + $(kill -l "$signal")))
+        before=$failed
+        [ "$code" = "$expected" ] || fail "$case SIG$signal: exit $code, expected $expected"
+        [ "$took_ms" -le "$limit_ms" ] || fail "$case SIG$signal: ended ${took_ms} ms after the signal (at most $limit_ms)"
         [ -z "$(left)" ] || fail "$case SIG$signal: files left behind: $(left)"
         grep -q "interrupted by SIG$signal" err.txt || fail "$case SIG$signal: no message on stderr"
         [ $failed = $before ] && passed=$((passed + 1))

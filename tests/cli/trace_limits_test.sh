@@ -12,19 +12,8 @@ promyk=$1 dir=$2
 scenes=$(cd "$(dirname "$0")/scenes" && pwd)
 . "$(dirname "$0")/lib.sh"
 
-# Sphere 0 fills the pane's middle, the other spheres are small and behind
-# the eye, every light is between the eye and sphere 0: pixel (4, 4) of an
-# 8 x 8 pane faces every light and tests every sphere on the way to each.
-many_scene() {
-    awk -v n="$1" -v m="$2" 'BEGIN {
-        printf "{\"name\": \"many\", \"shadows\": true, \"spheres\": [{\"S\": [0, 0, 6], \"r\": 3}"
-        for (k = 1; k < n; k++) printf ", {\"S\": [%d, %d, -20], \"r\": 0.01}", k % 40, int(k / 40)
-        printf "], \"lights\": ["
-        for (k = 0; k < m; k++)
-            printf "%s{\"L\": [%.3f, %.3f, 1], \"I\": 0.0001}", (k ? ", " : ""), (k % 40) / 40 - 0.5, int(k / 40) / 40 - 0.5
-        printf "]}\n"
-    }'
-}
+# many_scene (lib.sh): pixel (4, 4) of an 8 x 8 pane tests every sphere on
+# the way to every light.
 # The message's lines joined (main wraps errors at 80 columns).
 joined() { tr '\n' ' ' <err.txt | tr -s ' '; }
 
