@@ -22,6 +22,7 @@
 #include "trace/intensity_formula.hpp"
 #include "trace/trace_text.hpp"
 #include "util/wrap.hpp"
+#include "flat_text.hpp"
 
 using namespace promyk;
 
@@ -49,16 +50,6 @@ std::vector<std::string> foreign_symbols(const Scene& scene) {
     if (!stages.shadows) out.insert(out.end(), {"vₖ", "v·"});
     if (!stages.phong && !weights) out.insert(out.end(), {"k_a", "k_d"});
     if (scene.lights.size() < 2) out.insert(out.end(), {"Σ"});
-    return out;
-}
-
-std::string flat(const std::string& text) {
-    std::string out;
-    for (const char c : text) {
-        const bool space = c == ' ' || c == '\n';
-        if (space && !out.empty() && out.back() == ' ') continue;
-        out += space ? ' ' : c;
-    }
     return out;
 }
 

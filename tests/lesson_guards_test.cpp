@@ -16,6 +16,7 @@
 #include "trace/messages.hpp"
 #include "trace/number_text.hpp"
 #include "trace/trace_text.hpp"
+#include "flat_text.hpp"
 
 using namespace promyk;
 
@@ -60,17 +61,6 @@ struct Run {
 };
 
 Scene example(const std::string& name) { return LessonLibrary().scene(name); }
-
-// The text with every run of spaces and line ends made one space (wrapped lines joined).
-std::string flat(const std::string& text) {
-    std::string out;
-    for (const char c : text) {
-        const bool space = c == ' ' || c == '\n';
-        if (space && !out.empty() && out.back() == ' ') continue;
-        out += space ? ' ' : c;
-    }
-    return out;
-}
 
 // The first pixel of the pane, row by row, that takes the branch.
 std::pair<int, int> first_of(const Scene& scene, Branch branch, int w = 8) {

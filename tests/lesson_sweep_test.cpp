@@ -20,6 +20,7 @@
 #include "render/kernel.hpp"
 #include "render/trace_pixel.hpp"
 #include "util/wrap.hpp"
+#include "flat_text.hpp"
 
 using namespace promyk;
 
@@ -56,16 +57,6 @@ private:
     std::map<std::pair<std::string, std::string>, std::unique_ptr<Kernel>> kernels_;
     std::map<std::tuple<int, int, std::string, std::string>, PixelTrace> cache_;
 };
-
-std::string flat(const std::string& text) {
-    std::string out;
-    for (const char c : text) {
-        const bool space = c == ' ' || c == '\n';
-        if (space && !out.empty() && out.back() == ' ') continue;
-        out += space ? ' ' : c;
-    }
-    return out;
-}
 
 // True when a text names the step's pixel ({i}, {j}): the runner leaves it
 // out when no chosen pixel has what the step needs.

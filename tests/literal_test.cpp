@@ -25,6 +25,7 @@
 #include "trace/keys.hpp"
 #include "trace/recorder.hpp"
 #include "trace/trace.hpp"
+#include "sweep_size.hpp"
 
 namespace {
 
@@ -214,7 +215,7 @@ std::vector<int> check_every_pixel(const promyk::Scene& scene, int w) {
 }  // namespace
 
 TEST_CASE("every pixel equals the article's literal program bit for bit", "[literal]") {
-    const int w = GENERATE(1, 2, 3, 7, 8, 63, 64, 100, 512);
+    const int w = GENERATE(1, 2, 3, 7, 8, 63, 64, 100, sweep_size(512, 128));
     const std::vector<int> counts = check_every_pixel(promyk::article_scene(), w);
     if (w >= 8) {
         // The scene has all three branches at these sizes.

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "trace/number_text.hpp"
+#include "sweep_size.hpp"
 
 using promyk::Language;
 using promyk::shown_number;
@@ -67,7 +68,7 @@ TEST_CASE("shown_number is within half a unit in the last shown digit", "[digits
     std::mt19937_64 random(20261201);
     std::uniform_real_distribution<double> mantissa(-10, 10);
     std::uniform_int_distribution<int> exponent(-300, 300);
-    for (int k = 0; k < 20000; ++k) {
+    for (int k = 0; k < sweep_size(20000, 2000); ++k) {
         const double value = std::ldexp(mantissa(random), exponent(random));
         if (value == 0) continue;
         for (int digits = 1; digits <= 17; ++digits) {

@@ -16,6 +16,7 @@
 #include "trace/trace_compare.hpp"
 #include "trace/trace_text.hpp"
 #include "trace/vocabulary.hpp"
+#include "flat_text.hpp"
 
 using namespace promyk;
 
@@ -26,18 +27,6 @@ std::string text_of(const PixelTrace& trace, Language language, int digits = 0) 
     options.language = language;
     options.digits = digits;
     return format_trace_text(trace, builtin_vocabulary(), options);
-}
-
-// The text with every run of spaces and line ends made one space: prose
-// checked whatever its wrapping.
-std::string flat(const std::string& text) {
-    std::string out;
-    for (const char c : text) {
-        const bool space = c == ' ' || c == '\n';
-        if (space && !out.empty() && out.back() == ' ') continue;
-        out += space ? ' ' : c;
-    }
-    return out;
 }
 
 std::string fmt_rgb(const std::array<int, 3>& rgb) {

@@ -87,13 +87,11 @@ int side_for(double seconds, double seconds_per_pixel) {
 
 // The scene's numbers as the trace's "given" line writes them: in Polish a
 // decimal comma, so a semicolon between values.
-std::string separator() { return ui_language() == Language::pl ? "; " : ", "; }
+std::string separator() { return coordinate_separator(ui_language()); }
 
 std::string value_text(double value) { return number_text(value, ui_language()); }
 
-std::string vector_text(const Vec3d& v) {
-    return "(" + value_text(v.x) + separator() + value_text(v.y) + separator() + value_text(v.z) + ")";
-}
+std::string vector_text(const Vec3d& v) { return point_text(v, ui_language()); }
 
 // "z_E = 2, S = (0, 0, 3.2), r = 1.1, L = (1.5, 1, 1), I = 1" (one sphere, one light).
 std::string scene_parameters(const Scene& scene) {

@@ -146,7 +146,7 @@ std::string numbers_text(const std::vector<TypedNumber>& numbers, const std::str
     if (numbers.size() == 1) return typed_number_text(numbers[0], language);
     std::string out = kind == "point" ? "(" : "[";
     for (std::size_t k = 0; k < numbers.size(); ++k)
-        out += (k ? (language == Language::pl ? "; " : ", ") : "") + typed_number_text(numbers[k], language);
+        out += (k ? coordinate_separator(language) : "") + typed_number_text(numbers[k], language);
     return out + (kind == "point" ? ")" : "]");
 }
 

@@ -838,7 +838,7 @@ std::string lesson_number_text(const LessonNumber& number, const std::string& ki
     const Vec3d& v = std::get<Vec3d>(number.value);
     if (number.real_text.size() != 3) return shown_value_text(number.value, kind, language, significant);
     const bool vector = kind == "vector" || kind == "colour";
-    const char* separator = language == Language::pl ? "; " : ", ";
+    const char* separator = coordinate_separator(language);
     return std::string(vector ? "[" : "(") + one(number.real_text[0], v.x) + separator + one(number.real_text[1], v.y) +
            separator + one(number.real_text[2], v.z) + (vector ? "]" : ")");
 }

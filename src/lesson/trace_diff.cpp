@@ -207,7 +207,7 @@ std::string written(const std::vector<std::string>& texts, bool point, Language 
     if (texts.size() == 1) return local_number_text(texts[0], language);
     std::string out = point ? "(" : "[";
     for (std::size_t k = 0; k < texts.size(); ++k)
-        out += (k ? (language == Language::pl ? "; " : ", ") : "") + (texts[k].empty() ? "?" : local_number_text(texts[k], language));
+        out += (k ? coordinate_separator(language) : "") + (texts[k].empty() ? "?" : local_number_text(texts[k], language));
     return out + (point ? ")" : "]");
 }
 

@@ -20,10 +20,7 @@ namespace {
 // semicolon between a point's coordinates.
 std::string number(double value) { return number_text(value, ui_language()); }
 
-std::string point_text(const Vec3d& v) {
-    const std::string separator = ui_language() == Language::pl ? "; " : ", ";
-    return "(" + number(v.x) + separator + number(v.y) + separator + number(v.z) + ")";
-}
+std::string point_text(const Vec3d& v) { return promyk::point_text(v, ui_language()); }
 
 std::string colour_text(const Colour& c) { return is_grey(c) ? number(c.x) : point_text(c); }
 

@@ -77,7 +77,7 @@ const IntensityFormula& intensity_formula(std::string_view effects) {
 std::string intensity_formula_text(std::string_view effects, Language language) {
     const IntensityFormula& formula = intensity_formula(effects);
     const std::string& note = language == Language::pl ? formula.pl : formula.en;
-    return formula.formula + (note.empty() ? "" : (language == Language::pl ? "; " : "; ") + note);
+    return formula.formula + (note.empty() ? "" : std::string("; ") + note);
 }
 
 std::string step_formula(const VocabularyEntry* entry, std::string_view key, std::string_view effects, bool latex) {

@@ -142,13 +142,15 @@ std::string local_number_text(std::string_view text, Language language) {
     return local;
 }
 
+std::string point_text(const Vec3d& point, Language language) { return value_text(point, "point", language); }
+
 std::string value_text(const StepValue& value, const std::string& kind, Language language, int decimals) {
     if (const double* number = std::get_if<double>(&value)) return number_text(*number, language, decimals);
     if (const std::string* word = std::get_if<std::string>(&value)) return word_text(language, *word);
     const Vec3d& v = std::get<Vec3d>(value);
     const char* open = kind == "vector" || kind == "colour" ? "[" : "(";
     const char* close = kind == "vector" || kind == "colour" ? "]" : ")";
-    const char* separator = language == Language::pl ? "; " : ", ";
+    const char* separator = coordinate_separator(language);
     return fmt::format("{}{}{}{}{}{}{}", open, number_text(v.x, language, decimals), separator,
                        number_text(v.y, language, decimals), separator, number_text(v.z, language, decimals), close);
 }
@@ -162,7 +164,7 @@ std::string shown_value_text(const StepValue& value, const std::string& kind, La
     if (const std::string* word = std::get_if<std::string>(&value)) return word_text(language, *word);
     const Vec3d& v = std::get<Vec3d>(value);
     const bool bracket = kind == "vector" || kind == "colour";
-    const char* separator = language == Language::pl ? "; " : ", ";
+    const char* separator = coordinate_separator(language);
     return std::string(bracket ? "[" : "(") + shown_number(v.x, language, digits) + separator +
            shown_number(v.y, language, digits) + separator + shown_number(v.z, language, digits) + (bracket ? "]" : ")");
 }

@@ -28,6 +28,14 @@ std::string_view language_code(Language language);
 // for non-finite values.
 std::string number_text(double value, Language language, int decimals = -1);
 
+// What stands between a point's coordinates: with the Polish decimal comma,
+// a semicolon.
+inline const char* coordinate_separator(Language language) { return language == Language::pl ? "; " : ", "; }
+
+// A point of the scene as the trace's "given" line writes it: the shortest
+// texts that read back, "(1.5, 1, 1)", in Polish "(1,5; 1; 1)".
+std::string point_text(const Vec3d& point, Language language);
+
 // The significant digits this run shows (--digits N), if the command line
 // chose them; otherwise each output keeps its own default (trace: every
 // digit; lessons, worksheets and the page: 4).

@@ -64,7 +64,7 @@ std::string fit_row(const std::string& lead, const std::string& value, const std
     constexpr std::size_t columns = 80;
     const std::string tail = note.empty() ? "" : "   " + note;
     if (display_width(lead) + display_width(value) + display_width(tail) <= columns) return lead + value + tail + "\n";
-    if (separator.empty()) separator = language == Language::pl ? "; " : ", ";
+    if (separator.empty()) separator = coordinate_separator(language);
     const std::string indent(display_width(lead), ' ');
     std::string out = lead;
     std::size_t width = display_width(lead), start = 0;
@@ -212,7 +212,7 @@ std::string format_comparison(const std::vector<PixelTrace>& traces, const Vocab
                         }
                     }
                     text = word ? word_text(language, text) : local_number_text(text, language);
-                    shown += (k ? (language == Language::pl ? "; " : ", ") : "") + text;
+                    shown += (k ? coordinate_separator(language) : "") + text;
                 }
                 if (texts.size() == 3) shown = (vector ? "[" : "(") + shown + (vector ? "]" : ")");
                 if (!word && c + 1 < traces.size() && ref)
@@ -234,7 +234,7 @@ std::string format_comparison(const std::vector<PixelTrace>& traces, const Vocab
                     ? trace.result_real_text
                     : std::vector<std::string>{real_text(trace.result_rgb->x), real_text(trace.result_rgb->y),
                                                real_text(trace.result_rgb->z)};
-            const char* separator = language == Language::pl ? "; " : ", ";
+            const char* separator = coordinate_separator(language);
             result = "[" + local_number_text(texts[0], language) + separator + local_number_text(texts[1], language) +
                      separator + local_number_text(texts[2], language) + "]";
         } else {

@@ -95,7 +95,7 @@ std::string trace_step_value_text(const Step& step, const Vocabulary& vocabulary
     auto local = [&](const std::string& text) { return shown_real_text(text, type, language, digits); };
     if (step.real_text.size() == 1) return local(step.real_text.front());
     const std::string kind = trace_kind(vocabulary, key);
-    const char* separator = language == Language::pl ? "; " : ", ";
+    const char* separator = coordinate_separator(language);
     const bool vector = kind == "vector" || kind == "colour";
     std::string out = vector ? "[" : "(";
     for (std::size_t k = 0; k < step.real_text.size(); ++k)
@@ -133,7 +133,7 @@ std::string header_text(const PixelTrace& trace, const Vocabulary& vocabulary, L
                       "\n";
     out += message(language, "trace_numbers", {{"real", h.real}, {"formula", h.formula}, {"spp", std::to_string(h.spp)}}) +
            "\n";
-    const std::string separator = language == Language::pl ? "; " : ", ";
+    const std::string separator = coordinate_separator(language);
     if (!h.skipped.empty() || h.effects.size() != 1 || h.effects.front() != "lambert") {
         // A scene beyond the article's: what the engine ran and what not, and why.
         std::string stages;
@@ -352,7 +352,7 @@ std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, c
                          : "") +
                     value,
                 display_width(result_lead),
-                trace.hit_object.empty() ? (language == Language::pl ? "; " : ", ") : " ");
+                trace.hit_object.empty() ? coordinate_separator(language) : " ");
     if (noted) out += wrap(std::string(display_width(result_lead), ' '), note, display_width(result_lead));
     // cos α is a cosine only for a point on the sphere: above 1 (beyond
     // rounding) the "hit" is not on the sphere at all, and I_P with it is
