@@ -29,7 +29,9 @@ set(PROMYK_PORTABLE_SOURCES
   render/kernel.cpp
   render/trace_pixel.cpp
   render/renderer.cpp
+  render/article_row.cpp
   render/maps.cpp
+  image/map_colours.cpp
   trace/json_text.cpp
   trace/trace_json.cpp
   trace/trace_read.cpp
@@ -48,7 +50,7 @@ set(PROMYK_PORTABLE_SOURCES
 # The command line's core only (not needed by the page's C API).
 set(PROMYK_NATIVE_CORE_SOURCES
   render/pixel_selection.cpp
-  render/map_legend.cpp
+  image/map_legend.cpp
   render/scene_report.cpp
   render/trace_size.cpp
   lesson/lesson_parse.cpp

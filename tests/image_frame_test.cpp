@@ -18,7 +18,7 @@
 #include "image/legend.hpp"
 #include "image/pane_labels.hpp"
 #include "image/image_writer.hpp"
-#include "render/map_legend.hpp"
+#include "image/map_legend.hpp"
 #include "render/maps.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"

@@ -24,47 +24,7 @@ int resolve_threads(int threads) {
     return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
-RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out) {
-    // A local copy: stores through a uint8_t* may alias anything, so reading the
-    // scene through a reference would reload it, and keep |S|^2 from being
-    // hoisted, on every pixel.
-    // y_E is computed once a row: GCC will not hoist a division out of a loop
-    // by itself (it might trap), and the result is the same double.
-    const ArticleWorld<double> local = world;
-    const double y_E = pane_y<double>(i, w);
-    NullRecorder none;
-    // Counted in registers: an array indexed by the branch would be a store
-    // and a load per pixel, chained from one pixel to the next.
-    int miss = 0, dark = 0, non_finite = 0;
-    // Intensities first, a chunk at a time, then their grey levels in a loop
-    // of its own: measured 8.0 against 8.6 ns a pixel for one loop doing both.
-    constexpr int chunk = 256;
-    double I_P[chunk];
-    for (int j0 = 0; j0 < w; j0 += chunk) {
-        const int n = std::min(chunk, w - j0);
-        for (int k = 0; k < n; ++k) {
-            const PixelResult<double> pixel = trace_ray(local, {pane_x<double>(j0 + k, w), y_E, local.z_E}, none);
-            I_P[k] = pixel.I_P;
-            miss += pixel.branch == Branch::miss;
-            dark += pixel.branch == Branch::dark;
-            non_finite += pixel.branch == Branch::non_finite;
-        }
-        for (int k = 0; k < n; ++k) out[j0 + k] = to_byte(I_P[k]);
-    }
-    RowCounts counts;
-    counts.sphere_tests = w;  // one sphere, one primary ray a pixel
-    counts.branches[static_cast<int>(Branch::miss)] = miss;
-    counts.branches[static_cast<int>(Branch::dark)] = dark;
-    counts.branches[static_cast<int>(Branch::non_finite)] = non_finite;
-    counts.branches[static_cast<int>(Branch::lit)] = w - miss - dark - non_finite;
-    // Rare: looked for only when the row has one, so the loop stays lean.
-    if (counts.branches[static_cast<int>(Branch::non_finite)] != 0) {
-        for (int j = 0; j < w && counts.first_non_finite_j < 0; ++j)
-            if (trace_ray(local, {pane_x<double>(j, w), y_E, local.z_E}, none).branch == Branch::non_finite)
-                counts.first_non_finite_j = j;
-    }
-    return counts;
-}
+// render_row: in render/article_row.cpp, beside the article's rows in lanes.
 
 namespace {
 

@@ -15,7 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "render/branch_names.hpp"
+#include "image/map_colours.hpp"
 #include "render/kernel.hpp"
 #include "render/maps.hpp"
 #include "render/trace_pixel.hpp"

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "image/legend.hpp"
-#include "render/maps.hpp"
+#include "image/map_colours.hpp"
 #include "trace/number_text.hpp"
 
 namespace promyk {

@@ -1,11 +1,10 @@
-#include "render/map_legend.hpp"
+#include "image/map_legend.hpp"
 
 #include <cmath>
 #include <cstdlib>
 
 #include <fmt/format.h>
 
-#include "render/branch_names.hpp"
 #include "trace/messages.hpp"
 
 namespace promyk {

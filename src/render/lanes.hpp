@@ -1,0 +1,148 @@
+// Lanes: the types a kernel computes in, one pixel (a plain double or float)
+// or several side by side (a GCC/clang vector extension, which em++ also
+// compiles). Each operation on a vector acts on every lane alone and rounds
+// as the one-lane operation does, so a lane's bits are the one pixel's bits.
+// A comparison gives a mask (a bool, or a vector of all-ones / all-zeros
+// integers), and a branch becomes a select between two computed values.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+
+// Everything a kernel calls on lanes is inlined into the loop: the kernel
+// is too big for GCC to inline by itself, and a call costs the loop its
+// registers.
+#define PROMYK_LANES_INLINE inline __attribute__((always_inline))
+
+namespace promyk::lanes {
+
+// Two doubles and four floats: one SSE2 register, the baseline x86-64's
+// vector (and wasm's simd128). Wider vectors pay only where the instruction
+// set has them: without AVX, GCC splits a comparison of four doubles into
+// scalar ones. The division and square root units, the kernel's
+// bottleneck, then work on every lane at once.
+typedef double Double2 __attribute__((vector_size(16)));
+typedef float Float4 __attribute__((vector_size(16)));
+// A comparison's result: 64- or 32-bit integers, -1 where true (GCC calls
+// them long, clang long long: the type is the compiler's own).
+using Mask2 = decltype(Double2{} < Double2{});
+using Mask4 = decltype(Float4{} < Float4{});
+
+template <class Lane>
+struct LaneTraits;
+
+template <>
+struct LaneTraits<double> {
+    using Real = double;
+    using Mask = bool;
+    static constexpr int width = 1;
+};
+template <>
+struct LaneTraits<float> {
+    using Real = float;
+    using Mask = bool;
+    static constexpr int width = 1;
+};
+template <>
+struct LaneTraits<Double2> {
+    using Real = double;
+    using Mask = Mask2;
+    static constexpr int width = 2;
+};
+template <>
+struct LaneTraits<Float4> {
+    using Real = float;
+    using Mask = Mask4;
+    static constexpr int width = 4;
+};
+
+template <class Lane>
+using MaskOf = typename LaneTraits<Lane>::Mask;
+
+// One lane: the plain operations.
+PROMYK_LANES_INLINE bool lane_not(bool m) { return !m; }
+PROMYK_LANES_INLINE bool both(bool a, bool b) { return a && b; }
+PROMYK_LANES_INLINE bool either(bool a, bool b) { return a || b; }
+PROMYK_LANES_INLINE bool any(bool m) { return m; }
+PROMYK_LANES_INLINE bool all(bool m) { return m; }
+PROMYK_LANES_INLINE int count(bool m) { return m ? 1 : 0; }
+PROMYK_LANES_INLINE bool lane_of(bool m, int) { return m; }
+template <class Real>
+PROMYK_LANES_INLINE Real select(bool m, Real a, Real b) {
+    return m ? a : b;
+}
+PROMYK_LANES_INLINE double lane_sqrt(double x) { return std::sqrt(x); }
+PROMYK_LANES_INLINE float lane_sqrt(float x) { return std::sqrt(x); }
+
+// x in every lane (written out: 0 + x would turn a -0 into +0).
+template <class Lane, class Real>
+PROMYK_LANES_INLINE Lane splat(Real x) {
+    if constexpr (LaneTraits<Lane>::width == 1) {
+        return x;
+    } else {
+        Lane v;
+        for (int k = 0; k < LaneTraits<Lane>::width; ++k) v[k] = x;
+        return v;
+    }
+}
+
+// Vectors: masks are -1 (true) or 0 in every lane.
+template <class Mask>
+PROMYK_LANES_INLINE Mask lane_not(Mask m) {
+    return ~m;
+}
+template <class Mask>
+PROMYK_LANES_INLINE Mask both(Mask a, Mask b) {
+    return a & b;
+}
+template <class Mask>
+PROMYK_LANES_INLINE Mask either(Mask a, Mask b) {
+    return a | b;
+}
+template <class Mask>
+PROMYK_LANES_INLINE bool any(Mask m) {
+    for (int k = 0; k < int(sizeof m / sizeof m[0]); ++k)
+        if (m[k]) return true;
+    return false;
+}
+template <class Mask>
+PROMYK_LANES_INLINE bool all(Mask m) {
+    for (int k = 0; k < int(sizeof m / sizeof m[0]); ++k)
+        if (!m[k]) return false;
+    return true;
+}
+template <class Mask>
+PROMYK_LANES_INLINE int count(Mask m) {
+    int n = 0;
+    for (int k = 0; k < int(sizeof m / sizeof m[0]); ++k) n += m[k] != 0;
+    return n;
+}
+template <class Mask>
+PROMYK_LANES_INLINE bool lane_of(Mask m, int k) {
+    return m[k] != 0;
+}
+
+// a where m, else b, bit for bit (a NaN's payload too): by the bits, so a
+// NaN in the lane not taken changes nothing.
+PROMYK_LANES_INLINE Double2 select(Mask2 m, Double2 a, Double2 b) {
+    return reinterpret_cast<Double2>((reinterpret_cast<Mask2>(a) & m) | (reinterpret_cast<Mask2>(b) & ~m));
+}
+PROMYK_LANES_INLINE Float4 select(Mask4 m, Float4 a, Float4 b) {
+    return reinterpret_cast<Float4>((reinterpret_cast<Mask4>(a) & m) | (reinterpret_cast<Mask4>(b) & ~m));
+}
+
+// The square root lane by lane: with -fno-math-errno (the kernels' own
+// translation unit) GCC makes this one sqrtpd/sqrtps; the result is the
+// correctly rounded root in every lane either way.
+PROMYK_LANES_INLINE Double2 lane_sqrt(Double2 x) {
+    Double2 s;
+    for (int k = 0; k < 2; ++k) s[k] = std::sqrt(x[k]);
+    return s;
+}
+PROMYK_LANES_INLINE Float4 lane_sqrt(Float4 x) {
+    Float4 s;
+    for (int k = 0; k < 4; ++k) s[k] = std::sqrt(x[k]);
+    return s;
+}
+
+}  // namespace promyk::lanes

@@ -1,0 +1,160 @@
+// The article's rows computed lanes at a time (render/article_row.hpp) give
+// every pixel the bits the traced path gives it (trace_ray, the one-pixel
+// tracer that tracing records through), in double and in float: on the
+// example scenes the article's kernel draws and on every hard case it draws,
+// including the silhouettes tangent to pixel centres.
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "hard_cases_support.hpp"
+#include "render/article_row.hpp"
+#include "image/quantize.hpp"
+#include "render/pane.hpp"
+#include "render/renderer.hpp"
+#include "render/stages.hpp"
+#include "render/tracer.hpp"
+#include "render/world.hpp"
+#include "scene/scene_json.hpp"
+
+namespace {
+
+using namespace promyk;
+
+struct NamedWorld {
+    std::string name;
+    ArticleWorld<double> world;
+    int w;  // the scene's own pane (the hard case's), or 0
+};
+
+template <class Real>
+ArticleWorld<Real> in_type(const ArticleWorld<double>& d) {
+    return {Real(d.z_E), to_real<Real>(d.S), Real(d.r), to_real<Real>(d.L), Real(d.I), Real(d.background)};
+}
+
+template <class Real>
+bool same_bits(Real a, Real b) {
+    return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+std::vector<NamedWorld> article_worlds() {
+    std::vector<NamedWorld> worlds;
+    auto add = [&](const std::string& name, const Scene& scene, int w) {
+        if (!plan_stages(scene).article) return;  // another kernel draws it
+        worlds.push_back({name, article_world(scene), w});
+    };
+    for (const auto& entry : std::filesystem::directory_iterator(PROMYK_SOURCE_DIR "/lessons/scenes")) {
+        const std::string path = entry.path().string();
+        if (entry.path().extension() != ".json" || path.find("schema") != std::string::npos) continue;
+        add(entry.path().filename().string(), load_scene_file(path), 0);
+    }
+    for (const auto& c : hard_cases_support::hard_cases_reference().at("cases")) {
+        const std::string id = c.at("id").get<std::string>();
+        add("hard case " + id, parse_scene(c.at("scene").dump(), id), c.at("pixel").at("w").get<int>());
+    }
+    // A background of -0 (0 + x would make it +0) and overflows: I D
+    // infinite (non-finite after the dark test), and a sphere so far that
+    // |K|^2 overflows (non-finite before it).
+    ArticleWorld<double> base = worlds.front().world;
+    for (const auto& named : worlds)
+        if (named.name == "article.json") base = named.world;
+    ArticleWorld<double> negative_zero = base;
+    negative_zero.background = -0.0;
+    worlds.push_back({"background -0", negative_zero, 0});
+    ArticleWorld<double> bright = base;
+    bright.I = 1e308;
+    worlds.push_back({"I = 1e308", bright, 0});
+    ArticleWorld<double> far_light = base;
+    far_light.L = {1e200, 1e200, 1e200};
+    worlds.push_back({"light at 1e200", far_light, 0});
+    return worlds;
+}
+
+// Every pixel of the w x w pane: the lanes' row, the one-lane template and
+// the traced path agree bit for bit, branch and intensity.
+template <class Real>
+int check_pane(const ArticleWorld<Real>& world, int w) {
+    int mismatches = 0;
+    std::vector<Real> I_P(static_cast<std::size_t>(w));
+    std::vector<std::uint8_t> branches(static_cast<std::size_t>(w));
+    NullRecorder none;
+    for (int i = 0; i < w; ++i) {
+        const ArticleRowCounts counts = article_row_intensities(world, w, i, I_P.data(), branches.data());
+        int miss = 0, dark = 0, non_finite = 0;
+        for (int j = 0; j < w; ++j) {
+            const PixelResult<Real> traced = trace_ray(world, pane_point(i, j, w, world.z_E), none);
+            const PixelResult<Real> one = article_pixel_one_lane(world, w, i, j);
+            const auto branch = static_cast<Branch>(branches[static_cast<std::size_t>(j)]);
+            miss += traced.branch == Branch::miss;
+            dark += traced.branch == Branch::dark;
+            non_finite += traced.branch == Branch::non_finite;
+            if (same_bits(traced.I_P, I_P[static_cast<std::size_t>(j)]) && same_bits(traced.I_P, one.I_P) &&
+                traced.branch == branch && traced.branch == one.branch)
+                continue;
+            if (++mismatches <= 3) {
+                INFO("pixel (" << i << ", " << j << ") of w = " << w << ": traced " << traced.I_P << " ("
+                               << branch_name(traced.branch) << "), lanes " << I_P[static_cast<std::size_t>(j)]
+                               << " (" << branch_name(branch) << "), one lane " << one.I_P << " ("
+                               << branch_name(one.branch) << ")");
+                CHECK(false);
+            }
+        }
+        if constexpr (std::is_same_v<Real, double>) {
+            // The drawn row: each grey level is to_byte of the traced intensity.
+            std::vector<std::uint8_t> grey(static_cast<std::size_t>(w));
+            const RowCounts drawn = render_row(world, w, i, grey.data());
+            for (int j = 0; j < w; ++j)
+                if (grey[static_cast<std::size_t>(j)] != to_byte(static_cast<double>(I_P[static_cast<std::size_t>(j)])))
+                    ++mismatches;
+            CHECK(drawn.branches[static_cast<int>(Branch::miss)] == miss);
+            CHECK(drawn.branches[static_cast<int>(Branch::non_finite)] == non_finite);
+        }
+        CHECK(counts.miss == miss);
+        CHECK(counts.dark == dark);
+        CHECK(counts.non_finite == non_finite);
+    }
+    return mismatches;
+}
+
+}  // namespace
+
+TEST_CASE("Article rows in lanes: every pixel bit-identical to the traced path, double and float",
+          "[lanes][hard]") {
+    const std::vector<NamedWorld> worlds = article_worlds();
+    REQUIRE(worlds.size() >= 20);  // the examples' article scenes, most hard cases, the extremes
+    for (const NamedWorld& named : worlds) {
+        // Panes that are and are not whole vectors (2 doubles, 4 floats), and
+        // the case's own pane and three times it (the same pixel centres).
+        std::vector<int> panes = {61, 64};
+        if (named.w > 0) panes.push_back(named.w), panes.push_back(3 * named.w);
+        for (const int w : panes) {
+            INFO(named.name << ", w = " << w);
+            CHECK(check_pane(named.world, w) == 0);
+            CHECK(check_pane(in_type<float>(named.world), w) == 0);
+        }
+    }
+}
+
+TEST_CASE("Article rows in lanes: the branches the panes above cover", "[lanes]") {
+    // The comparison above must meet every branch somewhere, or it proves little.
+    std::uint8_t seen = 0;
+    for (const NamedWorld& named : article_worlds()) {
+        std::vector<double> I_P(64);
+        std::vector<std::uint8_t> branches(64);
+        for (int i = 0; i < 64; ++i) {
+            article_row_intensities(named.world, 64, i, I_P.data(), branches.data());
+            for (const std::uint8_t b : branches) seen = static_cast<std::uint8_t>(seen | (1u << b));
+        }
+    }
+    CHECK((seen & (1u << static_cast<int>(Branch::miss))) != 0);
+    CHECK((seen & (1u << static_cast<int>(Branch::dark))) != 0);
+    CHECK((seen & (1u << static_cast<int>(Branch::lit))) != 0);
+    CHECK((seen & (1u << static_cast<int>(Branch::non_finite))) != 0);
+}
