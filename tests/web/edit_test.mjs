@@ -147,6 +147,21 @@ function cliFault(sceneText, pointer, lang) {
   return line.slice(line.indexOf(`${pointer}: `) + pointer.length + 2).trim();
 }
 
+// The page's phases of the last edit (web_export/page/timing.js): ms per
+// phase, summed over its measures, once the frames after the image are drawn.
+async function phases(page) {
+  return page.evaluate(async () => {
+    for (let k = 0; k < 3; ++k) await new Promise((resolve) => requestAnimationFrame(resolve));
+    const sums = {};
+    for (const m of performance.getEntriesByType('measure'))
+      if (m.name.startsWith('promyk:')) sums[m.name.slice(7)] = (sums[m.name.slice(7)] || 0) + m.duration;
+    performance.clearMeasures();
+    return sums;
+  });
+}
+
+const median = (values) => [...values].sort((a, b) => a - b)[Math.floor(values.length / 2)];
+
 const fieldError = (page, pointer) => page.$eval(`#error-${pointer.slice(1).replace(/[^A-Za-z0-9_]/g, '-')}`, (e) => (e.hidden ? '' : e.textContent));
 
 try {
@@ -298,14 +313,19 @@ try {
   // --- figures: the re-render time at w = 256 and 512, the page's size ---
   for (const w of [256, 512]) {
     const big = exportPage(`article_${w}.html`, ['--w', String(w)]);
-    page = await open(big);
+    page = await open(big, `#p=${w / 2 - 20},${w / 2}`); // a pixel selected: its derivation and 3D marks follow each edit
     const times = [];
     const work = [];
+    const measured = [];
+    await phases(page);
     for (const value of ['2.1', '2.2', '2.3', '2.4', '2.5']) {
       await rendered(page, () => page.fill('#field-z_E', value));
       times.push(Number(await page.evaluate(() => document.body.dataset.renderMs)));
       work.push(Number(await page.evaluate(() => document.body.dataset.renderWorkMs)));
+      measured.push(await phases(page));
     }
+    const names = [...new Set(measured.flatMap((m) => Object.keys(m)))];
+    console.log(`figure: w = ${w}, the page's phases per edit (median ms): ${names.map((n) => `${n} ${median(measured.map((m) => m[n] || 0)).toFixed(1)}`).join(', ')}`);
     if (w === 256) await checkAgainstCli(page, 'w = 256');
     if (w === 512) {
       // Edits faster than renders: each supersedes the one under way, and
