@@ -233,14 +233,26 @@ try {
   await page.waitForFunction(() => document.getElementById('error-lights').hidden && document.getElementById('error-lights-0-I').hidden);
   await page.waitForFunction((h) => location.hash === h, sceneBefore);
 
-  // In Polish: the panel's words and the loader's Polish message.
-  await page.click('#lang-switch button[data-lang="pl"]');
-  assert.equal(await page.textContent('#scene-heading'), 'Scena');
+  // In Polish: the panel's words and the loader's Polish message, for the
+  // invalid value on screen when the language is switched (no edit since).
+  const rendersValid = await renders(page);
   await page.fill('#field-spheres-0-r', '-1');
   await page.waitForFunction(() => !document.getElementById('error-spheres-0-r').hidden);
+  assert.equal(await fieldError(page, '/spheres/0/r'), cliFault(badScene, '/spheres/0/r', 'en'));
+  await page.click('#lang-switch button[data-lang="pl"]');
+  assert.equal(await page.textContent('#scene-heading'), 'Scena');
+  assert.equal(await page.inputValue('#field-spheres-0-r'), '-1');
   assert.equal(await fieldError(page, '/spheres/0/r'), cliFault(badScene, '/spheres/0/r', 'pl'));
-  await page.fill('#field-spheres-0-r', '0.9');
+  const polishNegative = await fieldError(page, '/spheres/0/r');
+  await page.fill('#field-spheres-0-r', 'abc');
+  await page.waitForFunction((before) => document.getElementById('error-spheres-0-r').textContent !== before, polishNegative);
+  assert.equal(await fieldError(page, '/spheres/0/r'), cliFault(edited.sceneText.replace('"r": 0.9', '"r": "abc"'), '/spheres/0/r', 'pl'));
+  // ... and back in English without an edit.
   await page.click('#lang-switch button[data-lang="en"]');
+  assert.equal(await fieldError(page, '/spheres/0/r'), cliFault(edited.sceneText.replace('"r": 0.9', '"r": "abc"'), '/spheres/0/r', 'en'));
+  assert.equal(await renders(page), rendersValid, 'no render of an invalid scene, in either language');
+  await page.fill('#field-spheres-0-r', '0.9');
+  await page.waitForFunction(() => document.getElementById('error-spheres-0-r').hidden);
 
   // The keyboard: a slider moves with the arrow keys and the image follows.
   await page.focus('[data-slider="/z_E"]');
@@ -279,6 +291,35 @@ try {
   await rendered(page, () => page.click('#scene-reset'));
   assert.ok((await pageImage(page)).bytes.equals(first.bytes), 'the exported scene\'s image again');
   assert.doesNotMatch(page.url(), /scene=/);
+  // The link pasted into the open page (hashchange, no reload): the edited
+  // scene, w and fields, the same image.
+  const pasted = link.slice(link.indexOf('#'));
+  const loads = await page.evaluate(() => document.body.dataset.readyMs);
+  await rendered(page, () => page.evaluate((h) => { location.hash = h; }, pasted));
+  assert.equal(await page.evaluate(() => document.body.dataset.readyMs), loads, 'the page was not loaded again');
+  assert.ok((await pageImage(page)).bytes.equals(small.shown.bytes), 'the pasted link shows the edited image');
+  assert.equal(await page.inputValue('#field-spheres-0-r'), '0.9');
+  assert.equal(await page.inputValue('#field-w'), '48');
+  await checkAgainstCli(page, 'the pasted link');
+  // A pasted link with an invalid scene: the loader's message, in the
+  // page's language (and in the other one after a switch); the image stays.
+  const rendersPasted = await renders(page);
+  const invalidScene = small.sceneText.replace('"r": 0.9', '"r": -1');
+  assert.notEqual(invalidScene, small.sceneText);
+  const invalidLink = pasted.replace(/scene=[^&]*/, `scene=${Buffer.from(invalidScene).toString('base64url')}`);
+  await page.evaluate((h) => { location.hash = h; }, invalidLink);
+  await page.waitForFunction(() => document.getElementById('scene-link-status').textContent !== '');
+  const linkStatus = () => page.textContent('#scene-link-status');
+  assert.ok((await linkStatus()).includes(cliFault(invalidScene, '/spheres/0/r', 'en')), await linkStatus());
+  assert.match(await linkStatus(), /^The link's scene is not valid \(.*\); the page keeps the scene it shows\.$/);
+  await page.click('#lang-switch button[data-lang="pl"]');
+  assert.ok((await linkStatus()).includes(cliFault(invalidScene, '/spheres/0/r', 'pl')), await linkStatus());
+  assert.match(await linkStatus(), /^Scena z odnośnika jest niepoprawna \(.*\); strona pokazuje dotychczasową scenę\.$/);
+  await page.click('#lang-switch button[data-lang="en"]');
+  assert.equal(await page.inputValue('#field-spheres-0-r'), '0.9', 'the panel keeps the scene shown');
+  assert.equal(await renders(page), rendersPasted, 'no render of the invalid link');
+  assert.ok((await pageImage(page)).bytes.equals(small.shown.bytes), 'the image stays');
+  await rendered(page, () => page.click('#scene-reset'));
 
   // --- a coloured scene with every kind of object: materials and colours ---
   const coloured = exportPage('everything.html', ['--scene', everything, '--w', '40']);

@@ -120,6 +120,11 @@ async function start() {
   // last valid image and shows the loader's messages by their fields.
   function sceneEdited() {
     editStarted = performance.now();
+    readEdited();
+  }
+
+  // The panel's scene read by the loader (and rendered when valid).
+  function readEdited() {
     const text = sceneText(editor.model);
     const wText = editor.w.trim();
     const w = /^\d+$/.test(wText) ? Number(wText) : NaN;
@@ -478,6 +483,8 @@ async function start() {
     };
     for (const [id, word] of Object.entries(words)) $(id).textContent = t(word, { i: '·', j: '·' });
     describeScene();
+    // A refused link's message in the new language: the link read again.
+    if (linkRefused) openLink(linkRefused);
     $('full-digits').parentElement.title = t('page_digits_hint');
     $('lang-switch').setAttribute('aria-label', t('page_language'));
     // Why the page has no long double, in the page's language when the
@@ -490,7 +497,10 @@ async function start() {
     drawLegend();
     if (traces) describeTraces();
     editor.build();
-    showSceneErrors();
+    // The loader's messages by the fields in the new language: the panel's
+    // scene (invalid, so nothing renders) read again.
+    if (sceneFaults.length) readEdited();
+    else showSceneErrors();
     drawCommand();
     redrawTrace();
   }
@@ -598,25 +608,34 @@ async function start() {
     retrace(); // a link to another pixel or other settings: its trace
   });
 
-  // A link's edited scene (or w): opened by the same loader; refused, the exported one.
-  function openFragmentScene() {
-    const next = { text: state.scene ?? exported.text, file: state.scene !== null ? editedFile : exported.file, w: state.w || exported.w, edited: state.scene !== null };
-    if (next.text === scene.text && next.w === scene.w && next.edited === scene.edited) return;
-    let refused = null;
+  // A link's scene the loader refused (its message shown by the panel), or null.
+  let linkRefused = null;
+  // Opens a link's scene; false when the loader refuses it, with the
+  // loader's message in the page's language.
+  function openLink(next) {
     tracer.useLanguage(state.lang);
     try {
       opened = tracer.openScene(next.text, next.file, next.w);
     } catch (error) {
-      refused = error;
+      linkRefused = next;
+      $('scene-link-status').textContent = t('edit_link_invalid', { text: error.message });
+      return false;
     }
-    if (refused) {
+    $('scene-link-status').textContent = '';
+    return true;
+  }
+
+  // A link's edited scene (or w): opened by the same loader; refused, the one shown stays.
+  function openFragmentScene() {
+    const next = { text: state.scene ?? exported.text, file: state.scene !== null ? editedFile : exported.file, w: state.w || exported.w, edited: state.scene !== null };
+    if (next.text === scene.text && next.w === scene.w && next.edited === scene.edited) return;
+    linkRefused = null;
+    if (!openLink(next)) {
       // (a failed open leaves the page's scene open)
       state.scene = scene.edited ? scene.text : null;
       state.w = scene.w !== exported.w ? scene.w : null;
-      $('scene-link-status').textContent = t('edit_link_invalid', { text: refused.message });
       return;
     }
-    $('scene-link-status').textContent = '';
     editor.set(modelOf(opened.scene_content), next.w);
     openScene(next);
   }
