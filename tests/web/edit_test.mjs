@@ -8,7 +8,8 @@
 // last image; the URL reopens the edited scene; the selected pixel's trace
 // follows the edit; the sliders work from the keyboard. Prints the re-render
 // time at w = 256 and 512 and the page's size (figures, not checked), and
-// leaves WORKDIR/edit.png (the panel) to look at.
+// leaves WORKDIR/edit.png (the panel) and edit_256.png (after edits at
+// w = 256 with a pixel selected) to look at.
 import { execFileSync, spawnSync } from 'node:child_process';
 import { mkdirSync, rmSync, readFileSync, writeFileSync, statSync } from 'node:fs';
 import { createRequire } from 'node:module';
@@ -356,18 +357,25 @@ try {
     const big = exportPage(`article_${w}.html`, ['--w', String(w)]);
     page = await open(big, `#p=${w / 2 - 20},${w / 2}`); // a pixel selected: its derivation and 3D marks follow each edit
     const times = [];
-    const work = [];
+    const workerMs = [];
     const measured = [];
     await phases(page);
     for (const value of ['2.1', '2.2', '2.3', '2.4', '2.5']) {
       await rendered(page, () => page.fill('#field-z_E', value));
       times.push(Number(await page.evaluate(() => document.body.dataset.renderMs)));
-      work.push(Number(await page.evaluate(() => document.body.dataset.renderWorkMs)));
+      workerMs.push(Number(await page.evaluate(() => document.body.dataset.renderWorkMs)));
       measured.push(await phases(page));
     }
     const names = [...new Set(measured.flatMap((m) => Object.keys(m)))];
     console.log(`figure: w = ${w}, the page's phases per edit (median ms): ${names.map((n) => `${n} ${median(measured.map((m) => m[n] || 0)).toFixed(1)}`).join(', ')}`);
-    if (w === 256) await checkAgainstCli(page, 'w = 256');
+    if (w === 256) {
+      await checkAgainstCli(page, 'w = 256');
+      // The derivation and 3D view drawn after the image: the edited pixel's.
+      assert.equal(await page.textContent('#derivation-heading'), `Derivation of pixel (${w / 2 - 20}, ${w / 2})`);
+      assert.ok((await page.$$eval('#steps .step', (rows) => rows.length)) > 5, 'the derivation is drawn');
+      assert.ok((await page.$$eval('#view-list li', (items) => items.length)) > 2, 'the 3D view draws the pixel\'s ray');
+      await page.screenshot({ path: join(work, 'edit_256.png') });
+    }
     if (w === 512) {
       // Edits faster than renders: each supersedes the one under way, and
       // the image shown is the last edit's.
@@ -379,9 +387,9 @@ try {
       console.log(`figure: five quick edits at w = 512 showed ${(await renders(page)) - before} render(s)`);
     }
     times.sort((a, b) => a - b);
-    work.sort((a, b) => a - b);
+    workerMs.sort((a, b) => a - b);
     const workers = await page.evaluate(() => document.getElementById('render-status').textContent);
-    console.log(`figure: re-render of the article's scene at w = ${w}: median ${times[2]} ms from the edit to the image shown (${times.join(', ')} ms), median ${work[2]} ms of it in the workers (${work.join(', ')} ms); ${workers}; page ${(statSync(big).size / 1e6).toFixed(2)} MB`);
+    console.log(`figure: re-render of the article's scene at w = ${w}: median ${times[2]} ms from the edit to the image shown (${times.join(', ')} ms), median ${workerMs[2]} ms of it in the workers (${workerMs.join(', ')} ms); ${workers}; page ${(statSync(big).size / 1e6).toFixed(2)} MB`);
   }
   assert.deepEqual(failures, []);
 } finally {
