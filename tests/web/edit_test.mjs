@@ -58,6 +58,7 @@ const browser = await chromium.launchPersistentContext(join(work, 'profile'), {
     '--disable-component-update', '--disable-sync', '--no-first-run'],
   viewport: { width: 1600, height: 1000 },
   acceptDownloads: true,
+  bypassCSP: true, // for axe-core, injected as a script the page's CSP would refuse
 });
 const failures = [];
 let currentUrl = '';
@@ -163,6 +164,16 @@ async function phases(page) {
 
 const median = (values) => [...values].sort((a, b) => a - b)[Math.floor(values.length / 2)];
 
+// Accessibility (the issue's Quality section): axe-core's serious and
+// critical violations on the page as it is, as "id (impact): help: where".
+const axeSource = readFileSync(require.resolve('axe-core/axe.min.js'), 'utf8');
+async function axeViolations(page) {
+  await page.addScriptTag({ content: axeSource });
+  return page.evaluate(async () => (await window.axe.run(document, { resultTypes: ['violations'] })).violations
+    .filter((v) => v.impact === 'serious' || v.impact === 'critical')
+    .map((v) => `${v.id} (${v.impact}): ${v.help}: ${v.nodes.slice(0, 4).map((n) => n.target.join(' ')).join('; ')}`));
+}
+
 const fieldError = (page, pointer) => page.$eval(`#error-${pointer.slice(1).replace(/[^A-Za-z0-9_]/g, '-')}`, (e) => (e.hidden ? '' : e.textContent));
 
 try {
@@ -240,8 +251,13 @@ try {
   await page.fill('#field-spheres-0-r', '-1');
   await page.waitForFunction(() => !document.getElementById('error-spheres-0-r').hidden);
   assert.equal(await fieldError(page, '/spheres/0/r'), cliFault(badScene, '/spheres/0/r', 'en'));
+  const statusEn = await page.textContent('#render-status');
+  assert.match(statusEn, /^Rendered 64 × 64 in \d+ ms \(\d+ workers\)\.$/);
   await page.click('#lang-switch button[data-lang="pl"]');
   assert.equal(await page.textContent('#scene-heading'), 'Scena');
+  // The last render's line, in Polish with the same figures.
+  const [, ms, workers] = statusEn.match(/in (\d+) ms \((\d+) workers/);
+  assert.equal(await page.textContent('#render-status'), `Wyrenderowano 64 × 64 w ${ms} ms (wątków roboczych: ${workers}).`);
   assert.equal(await page.inputValue('#field-spheres-0-r'), '-1');
   assert.equal(await fieldError(page, '/spheres/0/r'), cliFault(badScene, '/spheres/0/r', 'pl'));
   const polishNegative = await fieldError(page, '/spheres/0/r');
@@ -351,6 +367,14 @@ try {
   run(['scene', 'check', await download.path()]);
   assert.equal(downloaded, (await page.inputValue('#scene-copied')).split('\npromyk render')[0]);
   await page.screenshot({ path: join(work, 'edit.png'), fullPage: true });
+  // axe-core on the page with the scene panel (every kind of object), a
+  // selected pixel's derivation and 3D view, and an invalid value's message.
+  await page.click('#image', { position: { x: 150, y: 150 } });
+  await page.waitForFunction(() => document.querySelectorAll('#steps .step').length > 0);
+  await page.fill('#field-spheres-0-r', '-1');
+  await page.waitForFunction(() => !document.getElementById('error-spheres-0-r').hidden);
+  assert.deepEqual(await axeViolations(page), [], 'axe-core: serious or critical violations');
+  await page.fill('#field-spheres-0-r', '0.8');
 
   // --- figures: the re-render time at w = 256 and 512, the page's size ---
   for (const w of [256, 512]) {

@@ -200,6 +200,14 @@ async function start() {
   for (const event of ['focusin', 'pointerdown'])
     $('scene-panel').addEventListener(event, startPool, { once: true });
 
+  // The render's status line (its message id and arguments kept, so that a
+  // language switch words it again); no id: none.
+  let statusLine = null;
+  function renderStatus(id, args) {
+    statusLine = id ? [id, args] : null;
+    $('render-status').textContent = id ? t(id, args) : '';
+  }
+
   // The image in the scene, w and settings shown, rendered by the workers.
   async function renderImage() {
     const settings = { real: state.real, formula: state.formula, spp: state.spp };
@@ -208,19 +216,19 @@ async function start() {
     wantedImage = key;
     if (key === shownImage) {
       if (pool) pool.cancel(); // the image shown is wanted again: the render under way is not
-      $('render-status').textContent = '';
+      renderStatus();
       askFrame();
       return;
     }
     const started = performance.now();
     const edited = editStarted ?? started;
     editStarted = null;
-    $('render-status').textContent = t('edit_rendering', { percent: 0 });
+    renderStatus('edit_rendering', { percent: 0 });
     try {
       startPool();
       const w = scene.w;
       const result = await pool.render({ scene: scene.text, file: scene.file, w, settings }, (done) => {
-        if (wantedImage === key) $('render-status').textContent = t('edit_rendering', { percent: Math.floor((100 * done) / w) });
+        if (wantedImage === key) renderStatus('edit_rendering', { percent: Math.floor((100 * done) / w) });
       });
       if (!result || wantedImage !== key) return; // a later edit took over
       const workMs = Math.round(performance.now() - started);
@@ -234,7 +242,7 @@ async function start() {
       });
       measureSince('edit-to-image', edited);
       const ms = Math.round(performance.now() - edited);
-      $('render-status').textContent = t('edit_rendered', { w, ms, workers: pool.count });
+      renderStatus('edit_rendered', { w, ms, workers: pool.count });
       document.body.dataset.renderMs = String(ms);
       document.body.dataset.renderWorkMs = String(workMs); // the workers' part of it
       document.body.dataset.renders = String(++renders);
@@ -483,6 +491,7 @@ async function start() {
     };
     for (const [id, word] of Object.entries(words)) $(id).textContent = t(word, { i: '·', j: '·' });
     describeScene();
+    if (statusLine) renderStatus(...statusLine);
     // A refused link's message in the new language: the link read again.
     if (linkRefused) openLink(linkRefused);
     $('full-digits').parentElement.title = t('page_digits_hint');
