@@ -8,7 +8,8 @@
 // last image; the URL reopens the edited scene; the selected pixel's trace
 // follows the edit; the sliders work from the keyboard. Prints the re-render
 // time at w = 256 and 512 and the page's size (figures, not checked), and
-// leaves WORKDIR/edit.png (the panel) to look at.
+// leaves WORKDIR/edit.png (the panel) and edit_256.png (after edits at
+// w = 256 with a pixel selected) to look at.
 import { execFileSync, spawnSync } from 'node:child_process';
 import { mkdirSync, rmSync, readFileSync, writeFileSync, statSync } from 'node:fs';
 import { createRequire } from 'node:module';
@@ -57,6 +58,7 @@ const browser = await chromium.launchPersistentContext(join(work, 'profile'), {
     '--disable-component-update', '--disable-sync', '--no-first-run'],
   viewport: { width: 1600, height: 1000 },
   acceptDownloads: true,
+  bypassCSP: true, // for axe-core, injected as a script the page's CSP would refuse
 });
 const failures = [];
 let currentUrl = '';
@@ -147,6 +149,31 @@ function cliFault(sceneText, pointer, lang) {
   return line.slice(line.indexOf(`${pointer}: `) + pointer.length + 2).trim();
 }
 
+// The page's phases of the last edit (web_export/page/timing.js): ms per
+// phase, summed over its measures, once the frames after the image are drawn.
+async function phases(page) {
+  return page.evaluate(async () => {
+    for (let k = 0; k < 3; ++k) await new Promise((resolve) => requestAnimationFrame(resolve));
+    const sums = {};
+    for (const m of performance.getEntriesByType('measure'))
+      if (m.name.startsWith('promyk:')) sums[m.name.slice(7)] = (sums[m.name.slice(7)] || 0) + m.duration;
+    performance.clearMeasures();
+    return sums;
+  });
+}
+
+const median = (values) => [...values].sort((a, b) => a - b)[Math.floor(values.length / 2)];
+
+// Accessibility (the issue's Quality section): axe-core's serious and
+// critical violations on the page as it is, as "id (impact): help: where".
+const axeSource = readFileSync(require.resolve('axe-core/axe.min.js'), 'utf8');
+async function axeViolations(page) {
+  await page.addScriptTag({ content: axeSource });
+  return page.evaluate(async () => (await window.axe.run(document, { resultTypes: ['violations'] })).violations
+    .filter((v) => v.impact === 'serious' || v.impact === 'critical')
+    .map((v) => `${v.id} (${v.impact}): ${v.help}: ${v.nodes.slice(0, 4).map((n) => n.target.join(' ')).join('; ')}`));
+}
+
 const fieldError = (page, pointer) => page.$eval(`#error-${pointer.slice(1).replace(/[^A-Za-z0-9_]/g, '-')}`, (e) => (e.hidden ? '' : e.textContent));
 
 try {
@@ -218,14 +245,31 @@ try {
   await page.waitForFunction(() => document.getElementById('error-lights').hidden && document.getElementById('error-lights-0-I').hidden);
   await page.waitForFunction((h) => location.hash === h, sceneBefore);
 
-  // In Polish: the panel's words and the loader's Polish message.
-  await page.click('#lang-switch button[data-lang="pl"]');
-  assert.equal(await page.textContent('#scene-heading'), 'Scena');
+  // In Polish: the panel's words and the loader's Polish message, for the
+  // invalid value on screen when the language is switched (no edit since).
+  const rendersValid = await renders(page);
   await page.fill('#field-spheres-0-r', '-1');
   await page.waitForFunction(() => !document.getElementById('error-spheres-0-r').hidden);
+  assert.equal(await fieldError(page, '/spheres/0/r'), cliFault(badScene, '/spheres/0/r', 'en'));
+  const statusEn = await page.textContent('#render-status');
+  assert.match(statusEn, /^Rendered 64 × 64 in \d+ ms \(\d+ workers\)\.$/);
+  await page.click('#lang-switch button[data-lang="pl"]');
+  assert.equal(await page.textContent('#scene-heading'), 'Scena');
+  // The last render's line, in Polish with the same figures.
+  const [, ms, workers] = statusEn.match(/in (\d+) ms \((\d+) workers/);
+  assert.equal(await page.textContent('#render-status'), `Wyrenderowano 64 × 64 w ${ms} ms (wątków roboczych: ${workers}).`);
+  assert.equal(await page.inputValue('#field-spheres-0-r'), '-1');
   assert.equal(await fieldError(page, '/spheres/0/r'), cliFault(badScene, '/spheres/0/r', 'pl'));
-  await page.fill('#field-spheres-0-r', '0.9');
+  const polishNegative = await fieldError(page, '/spheres/0/r');
+  await page.fill('#field-spheres-0-r', 'abc');
+  await page.waitForFunction((before) => document.getElementById('error-spheres-0-r').textContent !== before, polishNegative);
+  assert.equal(await fieldError(page, '/spheres/0/r'), cliFault(edited.sceneText.replace('"r": 0.9', '"r": "abc"'), '/spheres/0/r', 'pl'));
+  // ... and back in English without an edit.
   await page.click('#lang-switch button[data-lang="en"]');
+  assert.equal(await fieldError(page, '/spheres/0/r'), cliFault(edited.sceneText.replace('"r": 0.9', '"r": "abc"'), '/spheres/0/r', 'en'));
+  assert.equal(await renders(page), rendersValid, 'no render of an invalid scene, in either language');
+  await page.fill('#field-spheres-0-r', '0.9');
+  await page.waitForFunction(() => document.getElementById('error-spheres-0-r').hidden);
 
   // The keyboard: a slider moves with the arrow keys and the image follows.
   await page.focus('[data-slider="/z_E"]');
@@ -264,6 +308,35 @@ try {
   await rendered(page, () => page.click('#scene-reset'));
   assert.ok((await pageImage(page)).bytes.equals(first.bytes), 'the exported scene\'s image again');
   assert.doesNotMatch(page.url(), /scene=/);
+  // The link pasted into the open page (hashchange, no reload): the edited
+  // scene, w and fields, the same image.
+  const pasted = link.slice(link.indexOf('#'));
+  const loads = await page.evaluate(() => document.body.dataset.readyMs);
+  await rendered(page, () => page.evaluate((h) => { location.hash = h; }, pasted));
+  assert.equal(await page.evaluate(() => document.body.dataset.readyMs), loads, 'the page was not loaded again');
+  assert.ok((await pageImage(page)).bytes.equals(small.shown.bytes), 'the pasted link shows the edited image');
+  assert.equal(await page.inputValue('#field-spheres-0-r'), '0.9');
+  assert.equal(await page.inputValue('#field-w'), '48');
+  await checkAgainstCli(page, 'the pasted link');
+  // A pasted link with an invalid scene: the loader's message, in the
+  // page's language (and in the other one after a switch); the image stays.
+  const rendersPasted = await renders(page);
+  const invalidScene = small.sceneText.replace('"r": 0.9', '"r": -1');
+  assert.notEqual(invalidScene, small.sceneText);
+  const invalidLink = pasted.replace(/scene=[^&]*/, `scene=${Buffer.from(invalidScene).toString('base64url')}`);
+  await page.evaluate((h) => { location.hash = h; }, invalidLink);
+  await page.waitForFunction(() => document.getElementById('scene-link-status').textContent !== '');
+  const linkStatus = () => page.textContent('#scene-link-status');
+  assert.ok((await linkStatus()).includes(cliFault(invalidScene, '/spheres/0/r', 'en')), await linkStatus());
+  assert.match(await linkStatus(), /^The link's scene is not valid \(.*\); the page keeps the scene it shows\.$/);
+  await page.click('#lang-switch button[data-lang="pl"]');
+  assert.ok((await linkStatus()).includes(cliFault(invalidScene, '/spheres/0/r', 'pl')), await linkStatus());
+  assert.match(await linkStatus(), /^Scena z odnośnika jest niepoprawna \(.*\); strona pokazuje dotychczasową scenę\.$/);
+  await page.click('#lang-switch button[data-lang="en"]');
+  assert.equal(await page.inputValue('#field-spheres-0-r'), '0.9', 'the panel keeps the scene shown');
+  assert.equal(await renders(page), rendersPasted, 'no render of the invalid link');
+  assert.ok((await pageImage(page)).bytes.equals(small.shown.bytes), 'the image stays');
+  await rendered(page, () => page.click('#scene-reset'));
 
   // --- a coloured scene with every kind of object: materials and colours ---
   const coloured = exportPage('everything.html', ['--scene', everything, '--w', '40']);
@@ -294,19 +367,39 @@ try {
   run(['scene', 'check', await download.path()]);
   assert.equal(downloaded, (await page.inputValue('#scene-copied')).split('\npromyk render')[0]);
   await page.screenshot({ path: join(work, 'edit.png'), fullPage: true });
+  // axe-core on the page with the scene panel (every kind of object), a
+  // selected pixel's derivation and 3D view, and an invalid value's message.
+  await page.click('#image', { position: { x: 150, y: 150 } });
+  await page.waitForFunction(() => document.querySelectorAll('#steps .step').length > 0);
+  await page.fill('#field-spheres-0-r', '-1');
+  await page.waitForFunction(() => !document.getElementById('error-spheres-0-r').hidden);
+  assert.deepEqual(await axeViolations(page), [], 'axe-core: serious or critical violations');
+  await page.fill('#field-spheres-0-r', '0.8');
 
   // --- figures: the re-render time at w = 256 and 512, the page's size ---
   for (const w of [256, 512]) {
     const big = exportPage(`article_${w}.html`, ['--w', String(w)]);
-    page = await open(big);
+    page = await open(big, `#p=${w / 2 - 20},${w / 2}`); // a pixel selected: its derivation and 3D marks follow each edit
     const times = [];
-    const work = [];
+    const workerMs = [];
+    const measured = [];
+    await phases(page);
     for (const value of ['2.1', '2.2', '2.3', '2.4', '2.5']) {
       await rendered(page, () => page.fill('#field-z_E', value));
       times.push(Number(await page.evaluate(() => document.body.dataset.renderMs)));
-      work.push(Number(await page.evaluate(() => document.body.dataset.renderWorkMs)));
+      workerMs.push(Number(await page.evaluate(() => document.body.dataset.renderWorkMs)));
+      measured.push(await phases(page));
     }
-    if (w === 256) await checkAgainstCli(page, 'w = 256');
+    const names = [...new Set(measured.flatMap((m) => Object.keys(m)))];
+    console.log(`figure: w = ${w}, the page's phases per edit (median ms): ${names.map((n) => `${n} ${median(measured.map((m) => m[n] || 0)).toFixed(1)}`).join(', ')}`);
+    if (w === 256) {
+      await checkAgainstCli(page, 'w = 256');
+      // The derivation and 3D view drawn after the image: the edited pixel's.
+      assert.equal(await page.textContent('#derivation-heading'), `Derivation of pixel (${w / 2 - 20}, ${w / 2})`);
+      assert.ok((await page.$$eval('#steps .step', (rows) => rows.length)) > 5, 'the derivation is drawn');
+      assert.ok((await page.$$eval('#view-list li', (items) => items.length)) > 2, 'the 3D view draws the pixel\'s ray');
+      await page.screenshot({ path: join(work, 'edit_256.png') });
+    }
     if (w === 512) {
       // Edits faster than renders: each supersedes the one under way, and
       // the image shown is the last edit's.
@@ -318,9 +411,9 @@ try {
       console.log(`figure: five quick edits at w = 512 showed ${(await renders(page)) - before} render(s)`);
     }
     times.sort((a, b) => a - b);
-    work.sort((a, b) => a - b);
+    workerMs.sort((a, b) => a - b);
     const workers = await page.evaluate(() => document.getElementById('render-status').textContent);
-    console.log(`figure: re-render of the article's scene at w = ${w}: median ${times[2]} ms from the edit to the image shown (${times.join(', ')} ms), median ${work[2]} ms of it in the workers (${work.join(', ')} ms); ${workers}; page ${(statSync(big).size / 1e6).toFixed(2)} MB`);
+    console.log(`figure: re-render of the article's scene at w = ${w}: median ${times[2]} ms from the edit to the image shown (${times.join(', ')} ms), median ${workerMs[2]} ms of it in the workers (${workerMs.join(', ')} ms); ${workers}; page ${(statSync(big).size / 1e6).toFixed(2)} MB`);
   }
   assert.deepEqual(failures, []);
 } finally {

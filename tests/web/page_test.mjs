@@ -144,6 +144,7 @@ async function selected(page) {
 // A hash of the 3D canvas's pixels and how many differ from the background.
 async function canvasPixels(page) {
   return page.evaluate(() => {
+    window.promykPage.view3d(); // the drawing asked for (at most one a frame) done now
     const gl = document.getElementById('view3d');
     const copy = document.createElement('canvas');
     copy.width = gl.width;
@@ -485,6 +486,7 @@ try {
   await page.evaluate((hash) => { location.hash = hash; }, `#p=${shadowed.i},${shadowed.j}&s=${blockerIndex}&lang=en&atlas=1`);
   await page.waitForFunction((k) => document.querySelector('#steps .step.current')?.dataset.index === String(k), blockerIndex);
   assert.equal(await page.getAttribute('#steps .step.current', 'data-key'), 'blocker');
+  await page.evaluate(() => window.promykPage.view3d()); // the drawing asked for, done now
   assert.match(await page.textContent('#view-labels .label.current'), /^P \+ s/);
   // R and V where Phong runs, pointing as the trace's R̂ and V̂
   const phong = everyTrace.find((trace) => trace.branch === 'lit' && cliSteps(JSON.stringify(trace)).steps.some((s) => s.key === 'R_hat'));

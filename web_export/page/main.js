@@ -9,6 +9,7 @@ import { Derivation } from './derivation.js';
 import { View3D } from './view3d.js';
 import { RenderPool } from './render_pool.js';
 import { SceneEditor, modelOf, sceneText, maxW } from './scene_editor.js';
+import { timed, measureSince } from './timing.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -102,6 +103,7 @@ async function start() {
   }
 
   let sceneFaults = [];
+  let editStarted = null; // when the edit being rendered was made (performance.now())
   function showSceneErrors() {
     const left = editor.showErrors(sceneFaults);
     const box = $('scene-errors');
@@ -117,6 +119,12 @@ async function start() {
   // is opened (traces follow it) and rendered, an invalid one leaves the
   // last valid image and shows the loader's messages by their fields.
   function sceneEdited() {
+    editStarted = performance.now();
+    readEdited();
+  }
+
+  // The panel's scene read by the loader (and rendered when valid).
+  function readEdited() {
     const text = sceneText(editor.model);
     const wText = editor.w.trim();
     const w = /^\d+$/.test(wText) ? Number(wText) : NaN;
@@ -132,7 +140,7 @@ async function start() {
   function openScene(next) {
     tracer.useLanguage(state.lang);
     try {
-      opened = tracer.openScene(next.text, next.file, next.w);
+      opened = timed('open', () => tracer.openScene(next.text, next.file, next.w));
     } catch (error) {
       if (!(error instanceof TracerError) || error.code !== 3) throw error;
       sceneFaults = error.faults();
@@ -146,12 +154,40 @@ async function start() {
     state.w = scene.w !== exported.w ? scene.w : null;
     if (state.pixel && (state.pixel[0] >= scene.w || state.pixel[1] >= scene.w)) state.pixel = null;
     renderImage(); // first: the workers start while the rest is drawn
-    view3d.setScene(opened.scene_content);
-    image.traced = tracesMatch() ? traces.pixels : null;
-    describeScene();
-    drawCommand();
-    retrace();
+    timed('after-dispatch', () => {
+      const content = opened.scene_content;
+      drawAfterImage('scene3d', () => view3d.setScene(content));
+      image.traced = tracesMatch() ? traces.pixels : null;
+      describeScene();
+      drawCommand();
+      retrace({ afterImage: true });
+    });
     return true;
+  }
+
+  // Drawing that waits for the image. While a render is under way the
+  // derivation and the 3D view are not redrawn: on this one thread they
+  // would keep the workers' rows waiting (their KaTeX and three.js cost more
+  // than the tracer at w = 256). They are drawn once, in the frame after the
+  // image is shown (or at once in the next frame when no render is under way).
+  const waiting = new Map(); // name → draw, in the order last asked
+  let frameAsked = false;
+  function drawAfterImage(name, draw) {
+    waiting.delete(name);
+    waiting.set(name, draw);
+    if (wantedImage === shownImage) askFrame();
+  }
+  function askFrame() {
+    if (!waiting.size || frameAsked) return;
+    frameAsked = true;
+    requestAnimationFrame(drawWaiting);
+  }
+  function drawWaiting() {
+    frameAsked = false;
+    const draws = [...waiting.values()];
+    waiting.clear();
+    for (const draw of draws) draw();
+    view3d.flush();
   }
 
   // The render workers, started on the first render, or as soon as the
@@ -164,6 +200,14 @@ async function start() {
   for (const event of ['focusin', 'pointerdown'])
     $('scene-panel').addEventListener(event, startPool, { once: true });
 
+  // The render's status line (its message id and arguments kept, so that a
+  // language switch words it again); no id: none.
+  let statusLine = null;
+  function renderStatus(id, args) {
+    statusLine = id ? [id, args] : null;
+    $('render-status').textContent = id ? t(id, args) : '';
+  }
+
   // The image in the scene, w and settings shown, rendered by the workers.
   async function renderImage() {
     const settings = { real: state.real, formula: state.formula, spp: state.spp };
@@ -172,30 +216,43 @@ async function start() {
     wantedImage = key;
     if (key === shownImage) {
       if (pool) pool.cancel(); // the image shown is wanted again: the render under way is not
-      $('render-status').textContent = '';
+      renderStatus();
+      askFrame();
       return;
     }
     const started = performance.now();
-    $('render-status').textContent = t('edit_rendering', { percent: 0 });
+    const edited = editStarted ?? started;
+    editStarted = null;
+    renderStatus('edit_rendering', { percent: 0 });
     try {
       startPool();
       const w = scene.w;
       const result = await pool.render({ scene: scene.text, file: scene.file, w, settings }, (done) => {
-        if (wantedImage === key) $('render-status').textContent = t('edit_rendering', { percent: Math.floor((100 * done) / w) });
+        if (wantedImage === key) renderStatus('edit_rendering', { percent: Math.floor((100 * done) / w) });
       });
       if (!result || wantedImage !== key) return; // a later edit took over
       const workMs = Math.round(performance.now() - started);
+      measureSince('workers', started);
+      performance.measure('promyk:tracer-in-workers', { start: started, duration: result.tracerMs });
       shownImage = key;
-      image.setImage(result);
-      drawLegend();
-      redraw();
-      const ms = Math.round(performance.now() - started);
-      $('render-status').textContent = t('edit_rendered', { w, ms, workers: pool.count });
+      timed('show', () => {
+        timed('show-image', () => image.setImage(result));
+        drawAfterImage('legend', () => timed('legend', drawLegend)); // its counts: after the image
+        timed('show-redraw', redraw);
+      });
+      measureSince('edit-to-image', edited);
+      const ms = Math.round(performance.now() - edited);
+      renderStatus('edit_rendered', { w, ms, workers: pool.count });
       document.body.dataset.renderMs = String(ms);
       document.body.dataset.renderWorkMs = String(workMs); // the workers' part of it
       document.body.dataset.renders = String(++renders);
+      askFrame();
     } catch (error) {
-      if (wantedImage === key) showError(error);
+      if (wantedImage === key) {
+        showError(error);
+        wantedImage = shownImage; // no render under way: what waits is drawn
+        askFrame();
+      }
     }
   }
 
@@ -290,15 +347,16 @@ async function start() {
   }
 
   // The selected pixel's trace: the trace file's line when the file has the
-  // pixel (and its values are wanted), else computed live.
-  function retrace() {
+  // pixel (and its values are wanted), else computed live. After an edit its
+  // drawing waits for the image (drawAfterImage); the trace is at once.
+  function retrace({ afterImage = false } = {}) {
     current = null;
     comparison = null;
     if (state.pixel) {
       const [i, j] = state.pixel;
       try {
         const fromFile = traces && state.useFile && traces.pixels.has(`${i},${j}`) && tracesMatch();
-        const text = fromFile ? tracer.traceFromFile(i, j) : tracer.trace(i, j, { real: state.real, formula: state.formula, spp: state.spp });
+        const text = timed('trace', () => (fromFile ? tracer.traceFromFile(i, j) : tracer.trace(i, j, { real: state.real, formula: state.formula, spp: state.spp })));
         current = { text, fromFile };
         if (state.compare && !fromFile) {
           const [real, formula] = state.compare.split(',');
@@ -311,7 +369,11 @@ async function start() {
         showError(error);
       }
     }
-    redrawTrace();
+    if (afterImage) drawAfterImage('trace', redrawTrace);
+    else {
+      waiting.delete('trace');
+      redrawTrace();
+    }
   }
 
   // Everything that depends on the trace and the language.
@@ -342,8 +404,8 @@ async function start() {
     $('source-note').textContent = current.fromFile
       ? t('page_from_file', { real: h.real, formula: h.formula, spp: h.spp, scene_file: sceneFileText(h.scene_file) })
       : t('page_settings_live', { real: h.real, formula: h.formula, spp: h.spp });
-    derivation.show(view, state.full);
-    view3d.setPixel(current.geometry, scene.w, view);
+    timed('derivation', () => derivation.show(view, state.full));
+    timed('view3d-pixel', () => view3d.setPixel(current.geometry, scene.w, view));
     drawComparison();
     state.step = Math.min(state.step, view.steps.length - 1);
     redraw();
@@ -429,6 +491,9 @@ async function start() {
     };
     for (const [id, word] of Object.entries(words)) $(id).textContent = t(word, { i: '·', j: '·' });
     describeScene();
+    if (statusLine) renderStatus(...statusLine);
+    // A refused link's message in the new language: the link read again.
+    if (linkRefused) openLink(linkRefused);
     $('full-digits').parentElement.title = t('page_digits_hint');
     $('lang-switch').setAttribute('aria-label', t('page_language'));
     // Why the page has no long double, in the page's language when the
@@ -441,7 +506,10 @@ async function start() {
     drawLegend();
     if (traces) describeTraces();
     editor.build();
-    showSceneErrors();
+    // The loader's messages by the fields in the new language: the panel's
+    // scene (invalid, so nothing renders) read again.
+    if (sceneFaults.length) readEdited();
+    else showSceneErrors();
     drawCommand();
     redrawTrace();
   }
@@ -549,25 +617,34 @@ async function start() {
     retrace(); // a link to another pixel or other settings: its trace
   });
 
-  // A link's edited scene (or w): opened by the same loader; refused, the exported one.
-  function openFragmentScene() {
-    const next = { text: state.scene ?? exported.text, file: state.scene !== null ? editedFile : exported.file, w: state.w || exported.w, edited: state.scene !== null };
-    if (next.text === scene.text && next.w === scene.w && next.edited === scene.edited) return;
-    let refused = null;
+  // A link's scene the loader refused (its message shown by the panel), or null.
+  let linkRefused = null;
+  // Opens a link's scene; false when the loader refuses it, with the
+  // loader's message in the page's language.
+  function openLink(next) {
     tracer.useLanguage(state.lang);
     try {
       opened = tracer.openScene(next.text, next.file, next.w);
     } catch (error) {
-      refused = error;
+      linkRefused = next;
+      $('scene-link-status').textContent = t('edit_link_invalid', { text: error.message });
+      return false;
     }
-    if (refused) {
+    $('scene-link-status').textContent = '';
+    return true;
+  }
+
+  // A link's edited scene (or w): opened by the same loader; refused, the one shown stays.
+  function openFragmentScene() {
+    const next = { text: state.scene ?? exported.text, file: state.scene !== null ? editedFile : exported.file, w: state.w || exported.w, edited: state.scene !== null };
+    if (next.text === scene.text && next.w === scene.w && next.edited === scene.edited) return;
+    linkRefused = null;
+    if (!openLink(next)) {
       // (a failed open leaves the page's scene open)
       state.scene = scene.edited ? scene.text : null;
       state.w = scene.w !== exported.w ? scene.w : null;
-      $('scene-link-status').textContent = t('edit_link_invalid', { text: refused.message });
       return;
     }
-    $('scene-link-status').textContent = '';
     editor.set(modelOf(opened.scene_content), next.w);
     openScene(next);
   }
@@ -591,8 +668,8 @@ async function start() {
       return { w: image.w, channels: image.channels, base64: base64(image.image), map: base64(image.map) };
     },
     trace: () => (current ? current.text : null),
-    // What the 3D view draws of the scene.
-    view3d: () => ({ spheres: view3d.objects.sphere.length, planes: view3d.objects.plane.length, lights: view3d.lights.length, zE: view3d.zE }),
+    // What the 3D view draws of the scene (with what waits for the image drawn).
+    view3d: () => (wantedImage === shownImage && drawWaiting(), { spheres: view3d.objects.sphere.length, planes: view3d.objects.plane.length, lights: view3d.lights.length, zE: view3d.zE }),
   };
   document.body.dataset.readyMs = String(performance.now());
   document.body.dataset.ready = 'true';

@@ -40,6 +40,7 @@ function promykRenderWorker() {
       self.postMessage({ type: 'ready' });
       return;
     }
+    const started = performance.now();
     try {
       if (opened !== m.sceneKey) {
         opened = null;
@@ -51,7 +52,8 @@ function promykRenderWorker() {
         checked(M.ccall('promyk_render_rows', 'string', ['number', 'number', 'number'], [m.first, m.count, s])));
       const image = M.HEAPU8.slice(r.image, r.image + r.image_bytes);
       const branch = M.HEAPU8.slice(r.branch, r.branch + r.branch_bytes);
-      self.postMessage({ type: 'rows', job: m.job, first: m.first, count: m.count, channels: r.channels, image, branch },
+      const ms = performance.now() - started; // this chunk's time in the tracer
+      self.postMessage({ type: 'rows', job: m.job, first: m.first, count: m.count, channels: r.channels, image, branch, ms },
         [image.buffer, branch.buffer]);
     } catch (error) {
       self.postMessage({ type: 'error', job: m.job, message: error && error.message ? error.message : String(error) });
@@ -95,7 +97,8 @@ export class RenderPool {
   // Renders `scene` (its text, as --scene reads it) at w with settings
   // {real, formula, spp}; resolves to {w, channels, image, map} (map: the
   // branch category of each pixel), or to null when a later render
-  // superseded it. onProgress(rowsDone, w) after each chunk.
+  // superseded it (tracerMs: the workers' time in the tracer, summed over
+  // the chunks). onProgress(rowsDone, w) after each chunk.
   async render({ scene, file, w, settings }, onProgress = () => {}) {
     const number = ++this.jobs;
     if (this.job) this.job.finish(null); // superseded
@@ -112,7 +115,7 @@ export class RenderPool {
       for (let first = 0; first < w; first += rows) chunks.push([first, Math.min(rows, w - first)]);
       const job = {
         number, scene, file, w, settings, chunks, done: 0, channels: 0, image: null,
-        map: new Uint8Array(w * w), sceneKey: `${number}`,
+        map: new Uint8Array(w * w), sceneKey: `${number}`, tracerMs: 0,
         finish: (value, error) => {
           if (this.job === job) this.job = null;
           if (error) reject(error);
@@ -157,8 +160,9 @@ export class RenderPool {
         job.image.set(message.image, message.first * job.w * job.channels);
         job.map.set(message.branch, message.first * job.w);
         job.done += message.count;
+        job.tracerMs += message.ms;
         job.onProgress(job.done, job.w);
-        if (job.done === job.w) job.finish({ w: job.w, channels: job.channels, image: job.image, map: job.map });
+        if (job.done === job.w) job.finish({ w: job.w, channels: job.channels, image: job.image, map: job.map, tracerMs: job.tracerMs });
       }
     }
     this.feed(slot);

@@ -13,6 +13,7 @@ import {
   Scene, SphereGeometry, Vector3, WebGLRenderer, EdgesGeometry, LineSegments,
 } from 'three';
 import { quantityColour } from './colours.js';
+import { timed } from './timing.js';
 import { t } from './words.js';
 
 const toThree = (v) => new Vector3(v[0], v[1], -v[2]);
@@ -333,7 +334,20 @@ export class View3D {
     this.render();
   }
 
+  // Asks for a drawing: at most one a frame, however many changes ask.
   render() {
+    if (this.frame) return;
+    this.frame = requestAnimationFrame(() => this.flush());
+  }
+
+  // Draws now what was asked for (the page's deferred drawing, the tests).
+  // A view not laid out (its panel hidden) is not drawn: its ResizeObserver
+  // asks again when it gets a size.
+  flush() {
+    if (!this.frame) return;
+    cancelAnimationFrame(this.frame);
+    this.frame = 0;
+    if (!this.canvas.isConnected || this.canvas.getClientRects().length === 0) return;
     const width = this.canvas.clientWidth || 400;
     const height = this.canvas.clientHeight || 300;
     this.renderer.setPixelRatio(window.devicePixelRatio || 1);
@@ -344,8 +358,10 @@ export class View3D {
     this.camera.position.set(target.x + radius * Math.sin(phi) * Math.sin(theta), target.y + radius * Math.cos(phi),
       target.z + radius * Math.sin(phi) * Math.cos(theta));
     this.camera.lookAt(target);
-    this.renderer.render(this.scene, this.camera);
-    this.drawLabels(width, height);
+    timed('view3d', () => {
+      this.renderer.render(this.scene, this.camera);
+      this.drawLabels(width, height);
+    });
   }
 
   // The symbols as HTML text over the canvas (textContent: never markup).
