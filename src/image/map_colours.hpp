@@ -21,8 +21,9 @@ std::optional<MapKind> parse_map_name(std::string_view name);
 
 struct Rgb8 {
     std::uint8_t r = 0, g = 0, b = 0;
-    friend bool operator==(Rgb8 a, Rgb8 b) { return a.r == b.r && a.g == b.g && a.b == b.b; }
-    friend bool operator!=(Rgb8 a, Rgb8 b) { return !(a == b); }
+    // Parameters not named after the fields (clang's -Wshadow: b is blue).
+    friend bool operator==(Rgb8 x, Rgb8 y) { return x.r == y.r && x.g == y.g && x.b == y.b; }
+    friend bool operator!=(Rgb8 x, Rgb8 y) { return !(x == y); }
 };
 
 // One colour of a legend: what it marks, the colour's name and hex code.
