@@ -13,7 +13,8 @@
 #   - SIGINT, SIGTERM, SIGHUP during bench accuracy (with --json), during
 #     render --map (branch with traces, error, digits-lost) and during the
 #     trace-size estimate of render --traces: the same exit code, within the
-#     same time, no file left.
+#     same time, no file left. (Under the sanitizers these two groups send
+#     one of the three signals a command, in turn.)
 # usage: interrupt_test.sh PROMYK WORKDIR
 set -u
 promyk=$1 dir=$2
@@ -108,9 +109,24 @@ before=$failed
 # 1 GB, past the default limit: --max-trace-size lets it run.
 # Within a second of the signal; the sanitizers' build is slower to unwind.
 limit_ms=1000
-[ "${PROMYK_SIGNAL_DELAY:-0}" != 0 ] && [ "${PROMYK_SIGNAL_DELAY%%.*}" -ge 1 ] 2>/dev/null && limit_ms=3000
+sanitized=0
+[ "${PROMYK_SIGNAL_DELAY:-0}" != 0 ] && [ "${PROMYK_SIGNAL_DELAY%%.*}" -ge 1 ] 2>/dev/null && sanitized=1 && limit_ms=3000
+# The signals sent during each long command: all three in the release pass;
+# under the sanitizers, where each case waits 3 s for promyk to reach main,
+# one a command, in turn, so every signal still meets every kind of loop.
+turn=0
+pick_signals() {
+    if [ "$sanitized" = 1 ]; then
+        local all=(INT TERM HUP)
+        signals=("${all[turn % 3]}")
+        turn=$((turn + 1))
+    else
+        signals=(INT TERM HUP)
+    fi
+}
 for case in "trace text" "trace json" "lesson" "render traces"; do
-    for signal in INT TERM HUP; do
+    pick_signals
+    for signal in "${signals[@]}"; do
         fresh
         many_scene 1500 1500 >scene.json
         big="--scene scene.json --max-trace-size 1TB"
@@ -139,7 +155,8 @@ done
 # an error map's first second or more, allocating its w² values, does not
 # see a signal: not tested here.)
 for case in "bench accuracy" "bench accuracy json" "map branch traces" "map error" "map digits-lost"; do
-    for signal in INT TERM HUP; do
+    pick_signals
+    for signal in "${signals[@]}"; do
         fresh
         case $case in
             "bench accuracy") interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" bench accuracy --threads 1 ;;
