@@ -10,30 +10,21 @@
 // time at w = 256 and 512 and the page's size (figures, not checked), and
 // leaves WORKDIR/edit.png (the panel) and edit_256.png (after edits at
 // w = 256 with a pixel selected) to look at.
-import { execFileSync, spawnSync } from 'node:child_process';
+import { spawnSync } from 'node:child_process';
 import { mkdirSync, rmSync, readFileSync, writeFileSync, statSync } from 'node:fs';
-import { createRequire } from 'node:module';
+import { startBrowser, runPromyk, exportPage as exportTo } from './harness.mjs';
 import { join } from 'node:path';
-import { pathToFileURL } from 'node:url';
 import assert from 'node:assert/strict';
 
 const [promyk, modules, lessons, work] = process.argv.slice(2);
-const require = createRequire(join(modules, 'noop.js'));
-const { chromium } = require('playwright-core');
 
 rmSync(work, { recursive: true, force: true });
 mkdirSync(work, { recursive: true });
 const everything = join(lessons, 'scenes', 'everything.json');
 
-function run(args, cwd = work) {
-  return execFileSync(promyk, args, { cwd, encoding: 'utf8', env: { ...process.env, LANG: 'C' }, stdio: ['ignore', 'pipe', 'pipe'] });
-}
+const run = (args, cwd = work) => runPromyk(promyk, args, cwd);
 
-function exportPage(name, args) {
-  const file = join(work, name);
-  run(['export', '--lang', 'en', ...args, '-o', file]);
-  return file;
-}
+const exportPage = (name, args) => exportTo(promyk, work, name, args);
 
 // A binary PGM (P5) or PPM (P6) as {w, channels, bytes}.
 function readNetpbm(file) {
@@ -51,36 +42,8 @@ function readNetpbm(file) {
   return { w: Number(header[1]), channels, bytes: data.subarray(at) };
 }
 
-const browser = await chromium.launchPersistentContext(join(work, 'profile'), {
-  executablePath: '/usr/bin/chromium',
-  headless: true,
-  args: ['--no-sandbox', '--disable-gpu', '--enable-unsafe-swiftshader', '--disable-background-networking',
-    '--disable-component-update', '--disable-sync', '--no-first-run'],
-  viewport: { width: 1600, height: 1000 },
-  acceptDownloads: true,
-  bypassCSP: true, // for axe-core, injected as a script the page's CSP would refuse
-});
-const failures = [];
-let currentUrl = '';
-browser.on('request', (request) => {
-  const url = request.url();
-  if (url.split('#')[0] !== currentUrl && !url.startsWith('data:') && !url.startsWith('blob:')) failures.push(`request: ${url}`);
-});
-
-async function open(file, fragment = '') {
-  const page = browser.pages()[0] || (await browser.newPage());
-  currentUrl = pathToFileURL(file).href;
-  page.removeAllListeners('console');
-  page.removeAllListeners('pageerror');
-  page.on('console', (message) => {
-    if (message.type() === 'error') failures.push(`console: ${message.text()}`);
-  });
-  page.on('pageerror', (error) => failures.push(`page error: ${error.message}`));
-  await page.goto('about:blank');
-  await page.goto(currentUrl + fragment);
-  await page.waitForSelector('body[data-ready="true"]', { timeout: 60000 });
-  return page;
-}
+// bypassCSP: axe-core is injected as a script the page's CSP would refuse.
+const { browser, failures, open } = await startBrowser(modules, work, { acceptDownloads: true, bypassCSP: true });
 
 const renders = (page) => page.evaluate(() => Number(document.body.dataset.renders || 0));
 
@@ -166,7 +129,7 @@ const median = (values) => [...values].sort((a, b) => a - b)[Math.floor(values.l
 
 // Accessibility (the issue's Quality section): axe-core's serious and
 // critical violations on the page as it is, as "id (impact): help: where".
-const axeSource = readFileSync(require.resolve('axe-core/axe.min.js'), 'utf8');
+const axeSource = readFileSync(join(modules, 'axe-core', 'axe.min.js'), 'utf8');
 async function axeViolations(page) {
   await page.addScriptTag({ content: axeSource });
   return page.evaluate(async () => (await window.axe.run(document, { resultTypes: ['violations'] })).violations

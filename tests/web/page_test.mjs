@@ -7,30 +7,20 @@
 // file, keys, languages, the URL state, the 3D canvas, hostile strings.
 // Leaves WORKDIR/page.png (a lit pixel at step D) to look at, and prints the
 // page's size, first paint and the time to trace one pixel (figures only).
-import { execFileSync } from 'node:child_process';
 import { mkdirSync, rmSync, readFileSync, writeFileSync, statSync } from 'node:fs';
-import { createRequire } from 'node:module';
+import { startBrowser, runPromyk, exportPage as exportTo } from './harness.mjs';
 import { join } from 'node:path';
-import { pathToFileURL } from 'node:url';
 import assert from 'node:assert/strict';
 
 const [promyk, modules, lessons, work] = process.argv.slice(2);
-const require = createRequire(join(modules, 'noop.js'));
-const { chromium } = require('playwright-core');
 
 rmSync(work, { recursive: true, force: true });
 mkdirSync(work, { recursive: true });
 const everything = join(lessons, 'scenes', 'everything.json');
 
-function run(args) {
-  return execFileSync(promyk, args, { encoding: 'utf8', env: { ...process.env, LANG: 'C' }, stdio: ['ignore', 'pipe', 'pipe'] });
-}
+const run = (args) => runPromyk(promyk, args);
 
-function exportPage(name, args) {
-  const file = join(work, name);
-  run(['export', '--lang', 'en', ...args, '-o', file]);
-  return file;
-}
+const exportPage = (name, args) => exportTo(promyk, work, name, args);
 
 // The CLI's trace of a pixel, its steps flattened in the trace's order.
 function cliSteps(traceText) {
@@ -78,34 +68,7 @@ function assertSameValues(pageSteps, cli, what) {
   });
 }
 
-const browser = await chromium.launchPersistentContext(join(work, 'profile'), {
-  executablePath: '/usr/bin/chromium',
-  headless: true,
-  args: ['--no-sandbox', '--disable-gpu', '--enable-unsafe-swiftshader', '--disable-background-networking',
-    '--disable-component-update', '--disable-sync', '--no-first-run'],
-  viewport: { width: 1600, height: 1000 },
-});
-const failures = [];
-let currentUrl = '';
-browser.on('request', (request) => {
-  const url = request.url();
-  // data: URLs (KaTeX's fonts) are read from the page itself, not requested.
-  if (url.split('#')[0] !== currentUrl && !url.startsWith('data:') && !url.startsWith('blob:')) failures.push(`request: ${url}`);
-});
-
-async function open(file, fragment = '') {
-  const page = browser.pages()[0] || (await browser.newPage());
-  currentUrl = pathToFileURL(file).href;
-  page.removeAllListeners('console');
-  page.removeAllListeners('pageerror');
-  page.on('console', (message) => {
-    if (message.type() === 'error') failures.push(`console: ${message.text()}`);
-  });
-  page.on('pageerror', (error) => failures.push(`page error: ${error.message}`));
-  await page.goto(currentUrl + fragment);
-  await page.waitForSelector('body[data-ready="true"]', { timeout: 60000 });
-  return page;
-}
+const { browser, failures, open } = await startBrowser(modules, work);
 
 // The derivation as the page shows it: per step its key, kind and full text.
 async function shownSteps(page) {
