@@ -91,15 +91,13 @@ std::string separator() { return coordinate_separator(ui_language()); }
 
 std::string value_text(double value) { return number_text(value, ui_language()); }
 
-std::string vector_text(const Vec3d& v) { return point_text(v, ui_language()); }
-
 // "z_E = 2, S = (0, 0, 3.2), r = 1.1, L = (1.5, 1, 1), I = 1" (one sphere, one light).
 std::string scene_parameters(const Scene& scene) {
     std::string text = "z_E = " + value_text(scene.z_E);
     for (const Sphere& s : scene.spheres)
-        text += separator() + "S = " + vector_text(s.S) + separator() + "r = " + value_text(s.r);
+        text += separator() + "S = " + point_text(s.S, ui_language()) + separator() + "r = " + value_text(s.r);
     for (const Light& l : scene.lights)
-        text += separator() + "L = " + vector_text(l.L) + separator() + "I = " + value_text(l.I);
+        text += separator() + "L = " + point_text(l.L, ui_language()) + separator() + "I = " + value_text(l.I);
     return text;
 }
 
