@@ -114,7 +114,7 @@ sanitized=0
 # The signals sent during each long command: all three in the release pass;
 # under the sanitizers, where each case waits 3 s for promyk to reach main,
 # one a command, in turn, so every signal still meets every kind of loop.
-turn=0
+turn=0 sent=0
 pick_signals() {
     if [ "$sanitized" = 1 ]; then
         local all=(INT TERM HUP)
@@ -123,6 +123,7 @@ pick_signals() {
     else
         signals=(INT TERM HUP)
     fi
+    sent=$((sent + ${#signals[@]}))
 }
 for case in "trace text" "trace json" "lesson" "render traces"; do
     pick_signals
@@ -181,5 +182,7 @@ for case in "bench accuracy" "bench accuracy json" "map branch traces" "map erro
     done
 done
 
+# Nine long commands: each got its signals (one under the sanitizers, else three).
+[ "$sent" = $((sanitized ? 9 : 27)) ] || fail "the long commands got $sent signals, expected $((sanitized ? 9 : 27))"
 echo "interrupt test: $passed passed, $failed failed"
 [ $failed = 0 ]
