@@ -147,7 +147,10 @@ async function assertImageFits(page, what) {
     const rect = (id) => document.getElementById(id).getBoundingClientRect().toJSON();
     const frame = document.getElementById('image-frame');
     return { frame: rect('image-frame'), canvas: rect('image'), panel: rect('image-panel'),
-      scroll: [frame.scrollWidth, frame.clientWidth, frame.scrollHeight, frame.clientHeight], page: [document.documentElement.scrollWidth, window.innerWidth] };
+      scroll: [frame.scrollWidth, frame.clientWidth, frame.scrollHeight, frame.clientHeight], page: [document.documentElement.scrollWidth, window.innerWidth],
+      // what reaches past the window's right edge (the first few), to say why
+      wide: [...document.querySelectorAll('body *')].filter((e) => e.getBoundingClientRect().right > window.innerWidth + 0.5)
+        .slice(0, 4).map((e) => `${e.tagName.toLowerCase()}#${e.id}.${e.className} ${e.getBoundingClientRect().right.toFixed(0)}`) };
   });
   const at = `${what}: ${JSON.stringify(box)}`;
   assert.ok(box.scroll[0] <= box.scroll[1] && box.scroll[2] <= box.scroll[3], `the image frame scrolls: ${at}`);
@@ -395,7 +398,17 @@ try {
   await page.setViewportSize({ width: 900, height: 900 });
   await page.waitForTimeout(200);
   await assertImageFits(page, 'a window 900 wide');
-  await page.setViewportSize({ width: 1600, height: 1000 });
+  // a window narrowed for a moment (or a full-page screenshot, which broke
+  // web.edit in CI) must not lose the reader's zoom: back to full width,
+  // the zoom shown is the one chosen before
+  const zoomLabel = () => page.textContent('#zoom-label');
+  const chosenZoom = await zoomLabel();
+  for (const width of [420, 300, 1600]) {
+    await page.setViewportSize({ width, height: 1000 });
+    await page.waitForTimeout(200);
+    await assertImageFits(page, `a window ${width} wide`);
+  }
+  assert.equal(await zoomLabel(), chosenZoom, 'the zoom after the window narrowed and widened again');
 
   // --- a scene with planes, shadows, Phong and colour ---
   const everythingW = 24;

@@ -67,8 +67,13 @@ export class ImageView {
     this.map = data.branchMap; // Uint8Array, w·w
     this.onSelect = onSelect;
     this.onHover = onHover;
+    // The zoom the reader chose (or the first one, about 512 screen pixels);
+    // `zoom` is the one shown: the chosen one, or the largest below it that
+    // fits the box now. A box that narrows for a moment (a resize, a
+    // full-page screenshot) must not lose the choice.
+    this.chosen = Math.floor(512 / this.w);
     this.zoom = 1;
-    this.zoomTo(Math.floor(512 / this.w));
+    this.zoomTo(this.chosen);
     this.legend = [];
     this.traced = null; // Set of "i,j"
     this.atlas = false;
@@ -102,7 +107,8 @@ export class ImageView {
     this.channels = channels;
     this.image = image;
     this.map = map;
-    if (!sameSize) this.zoomTo(Math.floor(512 / w));
+    if (!sameSize) this.chosen = Math.floor(512 / w);
+    this.zoomTo(this.chosen);
     this.base = this.imageBitmap();
     this.setLegend(this.legend);
   }
@@ -228,12 +234,12 @@ export class ImageView {
 
   zoomIn() {
     const next = this.zoomLevels().find((z) => z > this.zoom);
-    if (next) this.zoom = next;
+    if (next) this.zoom = this.chosen = next;
   }
 
   zoomOut() {
     const levels = this.zoomLevels().filter((z) => z < this.zoom);
-    if (levels.length) this.zoom = levels[levels.length - 1];
+    if (levels.length) this.zoom = this.chosen = levels[levels.length - 1];
   }
 
   canZoomIn() {
@@ -271,7 +277,7 @@ export class ImageView {
   }
 
   draw() {
-    this.zoomTo(this.zoom); // the box may have narrowed since
+    this.zoomTo(this.chosen); // the box may have narrowed or widened since
     const side = this.w * this.zoom;
     if (this.canvas.width !== side) this.canvas.width = this.canvas.height = side;
     this.canvas.style.width = `${side}px`;
