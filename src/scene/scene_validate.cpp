@@ -436,7 +436,10 @@ Scene validate_scene(const ParsedJson& parsed, const std::string& source) {
     std::stable_sort(order.begin(), order.end());
     std::vector<SceneFault> sorted;
     for (std::size_t k = 0; k < order.size() && k < max_reported_faults; ++k) sorted.push_back(faults[order[k].second]);
-    throw SceneErrors(source, std::move(sorted), faults.size() - sorted.size(), counted);
+    // Counted before `sorted` is moved: the order in which a call's arguments
+    // are evaluated is unspecified (clang moves it first, GCC last).
+    const std::size_t more = faults.size() - sorted.size();
+    throw SceneErrors(source, std::move(sorted), more, counted);
 }
 
 }  // namespace promyk::scene_detail
