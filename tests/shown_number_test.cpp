@@ -66,10 +66,10 @@ TEST_CASE("shown_number at 0 digits is the shortest round-trip text", "[digits]"
 // 64-bit significand holds every double and the rounding of the text).
 TEST_CASE("shown_number is within half a unit in the last shown digit", "[digits]") {
     std::mt19937_64 random(20261201);
-    std::uniform_real_distribution<double> mantissa(-10, 10);
+    std::uniform_real_distribution<double> significand(-10, 10);
     std::uniform_int_distribution<int> exponent(-300, 300);
     for (int k = 0; k < sweep_size(20000, 2000); ++k) {
-        const double value = std::ldexp(mantissa(random), exponent(random));
+        const double value = std::ldexp(significand(random), exponent(random));
         if (value == 0) continue;
         for (int digits = 1; digits <= 17; ++digits) {
             std::string text = shown_number(value, Language::en, digits);

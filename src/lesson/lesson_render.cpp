@@ -551,14 +551,14 @@ std::optional<StepValue> lesson_value(const PixelTrace& trace, const std::string
     if (path->groups.empty() && !trace.groups.empty()) {
         if (path->key == "t")
             if (std::optional<StepValue> value = lesson_value(trace, "t_hit")) return value;
-        std::vector<std::string> groups;
+        std::vector<std::string> prefixes;
         const std::size_t space = trace.hit_object.find(' ');
         if (space != std::string::npos)
-            groups.push_back(trace.hit_object.substr(0, space) + "[" + trace.hit_object.substr(space + 1) + "].");
-        groups.push_back("sphere[0].");
-        groups.push_back("light[0].");
-        for (const std::string& group : groups)
-            if (std::optional<StepValue> value = lesson_value(trace, group + path->key)) return value;
+            prefixes.push_back(trace.hit_object.substr(0, space) + "[" + trace.hit_object.substr(space + 1) + "].");
+        prefixes.push_back("sphere[0].");
+        prefixes.push_back("light[0].");
+        for (const std::string& prefix : prefixes)
+            if (std::optional<StepValue> value = lesson_value(trace, prefix + path->key)) return value;
     }
     return std::nullopt;
 }
