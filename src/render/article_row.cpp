@@ -6,9 +6,12 @@
 
 #include <algorithm>
 #include <cstring>
+#include <vector>
 
 #include "image/quantize.hpp"
 #include "render/article_lanes.hpp"
+#include "render/article_row_isa.hpp"
+#include "render/isa.hpp"
 #include "render/renderer.hpp"
 
 namespace promyk {
@@ -121,7 +124,41 @@ ArticleRowCounts article_row_intensities(const ArticleWorld<float>& world, int w
     return article_chunk<lanes::Float4>(world, w, i, 0, w, I_P, branches);
 }
 
+namespace {
+
+#if defined(PROMYK_ISA_KERNELS)
+// x_E of every column of a w-pixel pane, the same for every row: computed
+// once per thread and pane, not a division per pixel.
+const double* pane_columns(int w) {
+    thread_local std::vector<double> x_E;
+    if (static_cast<int>(x_E.size()) != w) {
+        x_E.resize(static_cast<std::size_t>(w));
+        for (int j = 0; j < w; ++j) x_E[static_cast<std::size_t>(j)] = pane_x<double>(j, w);
+    }
+    return x_E.data();
+}
+#endif
+
+// The baseline's row: one pixel at a time through trace_ray.
+RowCounts one_pixel_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out);
+
+}  // namespace
+
 RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out) {
+#if defined(PROMYK_ISA_KERNELS)
+    const Isa isa = article_isa();
+    if (isa != Isa::baseline) {
+        const lanes::ArticleRow<double> row(world, pane_y<double>(i, w));
+        return isa == Isa::avx512 ? lanes::avx512::draw_article_row(row, pane_columns(w), w, out)
+                                  : lanes::avx2::draw_article_row(row, pane_columns(w), w, out);
+    }
+#endif
+    return one_pixel_row(world, w, i, out);
+}
+
+namespace {
+
+RowCounts one_pixel_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out) {
     // A local copy: stores through a uint8_t* may alias anything, so reading the
     // scene through a reference would reload it, and keep |S|^2 from being
     // hoisted, on every pixel.
@@ -166,5 +203,7 @@ RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8
     }
     return counts;
 }
+
+}  // namespace
 
 }  // namespace promyk
