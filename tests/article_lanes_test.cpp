@@ -183,12 +183,19 @@ struct PathForced {
 
 }  // namespace
 
-TEST_CASE("Drawn article rows: every instruction-set path this processor has, bit-identical to the literal program",
+// Every path this processor has draws each pixel as to_byte of the traced
+// path's intensity, and counts its branches as the traced path does; on the
+// article's scenes that is also the literal program's image (which differs
+// from the engine's by design elsewhere: a sphere behind the eye, say).
+TEST_CASE("Drawn article rows: every instruction-set path this processor has, bit-identical to the traced path "
+          "and the literal program",
           "[lanes][isa][hard]") {
     const std::vector<NamedWorld> worlds = article_worlds();
     const std::vector<Isa> paths = supported_isas();
     REQUIRE(paths.front() == Isa::baseline);
-    INFO("paths: " << paths.size());
+    int article_scenes = 0;
+    for (const NamedWorld& named : worlds) article_scenes += named.name == "article.json" || named.name == "far_sphere.json";
+    REQUIRE(article_scenes == 2);
     NullRecorder none;
     for (const Isa isa : paths) {
         PathForced forced(isa);
@@ -196,21 +203,27 @@ TEST_CASE("Drawn article rows: every instruction-set path this processor has, bi
             // Panes that are and are not whole vectors of 2, 4 and 8 doubles.
             std::vector<int> panes = {61, 64, 67};
             if (named.w > 0) panes.push_back(named.w), panes.push_back(3 * named.w);
+            const bool article = named.name == "article.json" || named.name == "far_sphere.json";
+            if (article) panes.push_back(301);
             for (const int w : panes) {
                 INFO(isa_name(isa) << ", " << named.name << ", w = " << w);
-                const std::vector<std::uint8_t> literal = literal_grey(named.world, w);
+                const std::vector<std::uint8_t> literal = article ? literal_grey(named.world, w) : std::vector<std::uint8_t>{};
+                int literal_mismatches = 0;
                 std::vector<std::uint8_t> grey(static_cast<std::size_t>(w));
                 int mismatches = 0, count_mismatches = 0;
                 for (int i = 0; i < w; ++i) {
                     const RowCounts drawn = render_row(named.world, w, i, grey.data());
                     RowCounts traced;
                     for (int j = 0; j < w; ++j) {
-                        const Branch b = trace_ray(named.world, pane_point(i, j, w, named.world.z_E), none).branch;
-                        ++traced.branches[static_cast<int>(b)];
-                        if (b == Branch::non_finite && traced.first_non_finite_j < 0) traced.first_non_finite_j = j;
-                        mismatches += grey[static_cast<std::size_t>(j)] !=
-                                      literal[static_cast<std::size_t>(i) * static_cast<std::size_t>(w) +
-                                              static_cast<std::size_t>(j)];
+                        const PixelResult<double> pixel =
+                            trace_ray(named.world, pane_point(i, j, w, named.world.z_E), none);
+                        ++traced.branches[static_cast<int>(pixel.branch)];
+                        if (pixel.branch == Branch::non_finite && traced.first_non_finite_j < 0)
+                            traced.first_non_finite_j = j;
+                        const std::uint8_t drawn_grey = grey[static_cast<std::size_t>(j)];
+                        mismatches += drawn_grey != to_byte(pixel.I_P);
+                        if (article)
+                            literal_mismatches += drawn_grey != literal[static_cast<std::size_t>(i) * w + j];
                     }
                     for (int b = 0; b < branch_count; ++b)
                         count_mismatches += drawn.branches[b] != traced.branches[b];
@@ -218,6 +231,7 @@ TEST_CASE("Drawn article rows: every instruction-set path this processor has, bi
                     count_mismatches += drawn.sphere_tests != w;
                 }
                 CHECK(mismatches == 0);
+                CHECK(literal_mismatches == 0);
                 CHECK(count_mismatches == 0);
             }
         }

@@ -16,12 +16,19 @@ namespace promyk::lanes {
 inline namespace PROMYK_LANES_ISA {
 
 // A vector's truncated grey levels and its bytes, lane for lane.
+typedef std::int32_t Int2 __attribute__((vector_size(8)));
 typedef std::int32_t Int4 __attribute__((vector_size(16)));
 typedef std::int32_t Int8 __attribute__((vector_size(32)));
+typedef std::uint8_t Byte2 __attribute__((vector_size(2)));
 typedef std::uint8_t Byte4 __attribute__((vector_size(4)));
 typedef std::uint8_t Byte8 __attribute__((vector_size(8)));
 template <class Vector>
 struct GreyTypes;
+template <>
+struct GreyTypes<Double2> {
+    using Ints = Int2;
+    using Bytes = Byte2;
+};
 template <>
 struct GreyTypes<Double4> {
     using Ints = Int4;
