@@ -197,9 +197,11 @@ int run_speed_bench(const SpeedOptions& options) {
     line(ui_message("bench_speed_threaded", {{"threads", counted(threads, "bench_threads")},
                                              {"ns", threaded.timed ? fixed(ns_per_pixel(threaded), 2) : "-"}}));
     print_standard_output("\n");
+    const char* isa_variable = std::getenv("PROMYK_ISA");
+    const bool forced = isa_variable && *isa_variable;
     line(ui_message("bench_speed_path",
                     {{"path", isa_name(in_use)},
-                     {"why", ui_message(in_use == supported_isas().back() && !std::getenv("PROMYK_ISA")
+                     {"why", ui_message(in_use == supported_isas().back() && !forced
                                             ? "isa_why_widest"
                                             : "isa_why_forced")}}));
     for (std::size_t p = 0; p < paths.size(); ++p)

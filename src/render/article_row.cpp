@@ -161,8 +161,8 @@ RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8
         case Isa::avx2:
             return lanes::avx2::draw_article_row(row, pane_columns(w), w, out);
         default:
-            // SSE2's two lanes: 51 instructions a pixel against 68 one pixel
-            // at a time (callgrind, w = 1024), and faster measured.
+            // SSE2's two lanes: 57 instructions a pixel against 68 one pixel
+            // at a time (callgrind, w = 1024), and no slower measured.
             return lanes::draw_row<lanes::Double2>(row, pane_columns(w), w, out);
     }
 #else
