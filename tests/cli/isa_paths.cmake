@@ -91,6 +91,29 @@ foreach(k RANGE ${last})
   same_on_every_path(${id}_${w} --scene "${WORK}/${id}.json" --w ${w})
 endforeach()
 
+# Under valgrind, a processor without AVX-512 (valgrind cannot run it): the
+# default takes a narrower path and draws the same bytes (AVX-512 code on
+# that path would stop it with an illegal instruction), and forcing avx512
+# is refused.
+find_program(VALGRIND valgrind)
+if(VALGRIND)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=PROMYK_ISA ${VALGRIND} -q --tool=none "${PROMYK}" render
+                          --w 67 -o "${WORK}/valgrind.png" RESULT_VARIABLE code ERROR_VARIABLE err)
+  file(SHA256 "${WORK}/article_67.baseline.png" expected)
+  if(EXISTS "${WORK}/valgrind.png")
+    file(SHA256 "${WORK}/valgrind.png" got)
+  endif()
+  if(NOT code EQUAL 0 OR NOT got STREQUAL expected)
+    message(FATAL_ERROR "under valgrind: exit ${code}, ${err}, or other bytes than the baseline's")
+  endif()
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env PROMYK_ISA=avx512 LC_ALL=C ${VALGRIND} -q --tool=none "${PROMYK}"
+                          render --w 8 -o "${WORK}/valgrind8.png" RESULT_VARIABLE code ERROR_VARIABLE err)
+  if(NOT code EQUAL 2 OR NOT err MATCHES "PROMYK_ISA=avx512: this processor \\(or this build of promyk\\) cannot run[ \n]+that path")
+    message(FATAL_ERROR "PROMYK_ISA=avx512 under valgrind: exit ${code}, ${err}")
+  endif()
+  message(STATUS "under valgrind: the default path drew the same bytes; avx512 refused")
+endif()
+
 # A value that names no path: exit 2, in the run's language.
 execute_process(COMMAND ${CMAKE_COMMAND} -E env PROMYK_ISA=sse2 "${PROMYK}" --lang pl render --w 8 -o "${WORK}/x.png"
                 RESULT_VARIABLE code ERROR_VARIABLE err)
