@@ -30,6 +30,7 @@ set(PROMYK_PORTABLE_SOURCES
   render/trace_pixel.cpp
   render/renderer.cpp
   render/article_row.cpp
+  render/isa.cpp
   render/maps.cpp
   image/map_colours.cpp
   trace/json_text.cpp

@@ -14,8 +14,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bench/article_literal.hpp"
 #include "hard_cases_support.hpp"
 #include "render/article_row.hpp"
+#include "render/isa.hpp"
 #include "image/quantize.hpp"
 #include "render/pane.hpp"
 #include "render/renderer.hpp"
@@ -157,4 +159,93 @@ TEST_CASE("Article rows in lanes: the branches the panes above cover", "[lanes]"
     CHECK((seen & (1u << static_cast<int>(Branch::dark))) != 0);
     CHECK((seen & (1u << static_cast<int>(Branch::lit))) != 0);
     CHECK((seen & (1u << static_cast<int>(Branch::non_finite))) != 0);
+}
+
+namespace {
+
+// The article's literal program (bench/article_literal.hpp) on a world.
+std::vector<std::uint8_t> literal_grey(const ArticleWorld<double>& world, int w) {
+    const bench::LiteralScene scene{world.S.x, world.S.y, world.S.z, world.r, world.L.x,
+                                    world.L.y, world.L.z, world.I,   world.z_E, world.background};
+    std::vector<double> t;
+    bench::literal_render(scene, w, t);
+    std::vector<std::uint8_t> grey(t.size());
+    for (std::size_t k = 0; k < t.size(); ++k) grey[k] = to_byte(t[k]);
+    return grey;
+}
+
+// Sets the path for a scope, and back to the one in use after.
+struct PathForced {
+    Isa before = article_isa();
+    explicit PathForced(Isa isa) { set_article_isa(isa); }
+    ~PathForced() { set_article_isa(before); }
+};
+
+}  // namespace
+
+// Every path this processor has draws each pixel as to_byte of the traced
+// path's intensity, and counts its branches as the traced path does; on the
+// article's scenes that is also the literal program's image (which differs
+// from the engine's by design elsewhere: a sphere behind the eye, say).
+TEST_CASE("Drawn article rows: every instruction-set path this processor has, bit-identical to the traced path "
+          "and the literal program",
+          "[lanes][isa][hard]") {
+    const std::vector<NamedWorld> worlds = article_worlds();
+    const std::vector<Isa> paths = supported_isas();
+    REQUIRE(paths.front() == Isa::baseline);
+    int article_scenes = 0;
+    for (const NamedWorld& named : worlds) article_scenes += named.name == "article.json" || named.name == "far_sphere.json";
+    REQUIRE(article_scenes == 2);
+    NullRecorder none;
+    for (const Isa isa : paths) {
+        PathForced forced(isa);
+        for (const NamedWorld& named : worlds) {
+            // Panes that are and are not whole vectors of 2, 4 and 8 doubles.
+            std::vector<int> panes = {61, 64, 67};
+            if (named.w > 0) panes.push_back(named.w), panes.push_back(3 * named.w);
+            const bool article = named.name == "article.json" || named.name == "far_sphere.json";
+            if (article) panes.push_back(301);
+            for (const int w : panes) {
+                INFO(isa_name(isa) << ", " << named.name << ", w = " << w);
+                const std::vector<std::uint8_t> literal = article ? literal_grey(named.world, w) : std::vector<std::uint8_t>{};
+                int literal_mismatches = 0;
+                std::vector<std::uint8_t> grey(static_cast<std::size_t>(w));
+                int mismatches = 0, count_mismatches = 0;
+                for (int i = 0; i < w; ++i) {
+                    const RowCounts drawn = render_row(named.world, w, i, grey.data());
+                    RowCounts traced;
+                    for (int j = 0; j < w; ++j) {
+                        const PixelResult<double> pixel =
+                            trace_ray(named.world, pane_point(i, j, w, named.world.z_E), none);
+                        ++traced.branches[static_cast<int>(pixel.branch)];
+                        if (pixel.branch == Branch::non_finite && traced.first_non_finite_j < 0)
+                            traced.first_non_finite_j = j;
+                        const std::uint8_t drawn_grey = grey[static_cast<std::size_t>(j)];
+                        mismatches += drawn_grey != to_byte(pixel.I_P);
+                        if (article)
+                            literal_mismatches += drawn_grey != literal[static_cast<std::size_t>(i) * w + j];
+                    }
+                    for (int b = 0; b < branch_count; ++b)
+                        count_mismatches += drawn.branches[b] != traced.branches[b];
+                    count_mismatches += drawn.first_non_finite_j != traced.first_non_finite_j;
+                    count_mismatches += drawn.sphere_tests != w;
+                }
+                CHECK(mismatches == 0);
+                CHECK(literal_mismatches == 0);
+                CHECK(count_mismatches == 0);
+            }
+        }
+    }
+}
+
+TEST_CASE("Instruction-set paths: names, and the widest this processor has is the default", "[isa]") {
+    for (const Isa isa : {Isa::baseline, Isa::avx2, Isa::avx512}) CHECK(isa_from_name(isa_name(isa)) == isa);
+    CHECK_FALSE(isa_from_name("AVX2"));
+    CHECK_FALSE(isa_from_name("sse2"));
+    CHECK(isa_supported(Isa::baseline));
+#if defined(__x86_64__)
+    // The processor's own word (gcc's), independent of render/isa.cpp.
+    CHECK(isa_supported(Isa::avx2) == static_cast<bool>(__builtin_cpu_supports("avx2")));
+    CHECK(isa_supported(Isa::avx512) == static_cast<bool>(__builtin_cpu_supports("avx512f")));
+#endif
 }

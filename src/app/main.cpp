@@ -23,6 +23,7 @@
 #include "app/cli_values.hpp"
 #include "app/commands.hpp"
 #include "app/global_options.hpp"
+#include "render/isa.hpp"
 #include "scene/scene_json.hpp"
 #include "trace/messages.hpp"
 #include "util/errors.hpp"
@@ -185,6 +186,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
     try {
         promyk::app::take_global_options(args);
+        promyk::choose_isa_from_environment();  // PROMYK_ISA, in the language just chosen
     } catch (const promyk::UsageError& error) {
         report(error.what());
         const auto command = std::find_if(args.begin(), args.end(), [&](const std::string& arg) {

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <optional>
@@ -16,6 +17,7 @@
 #include "bench/cpu_pinning.hpp"
 #include "bench/timing.hpp"
 #include "image/quantize.hpp"
+#include "render/isa.hpp"
 #include "render/renderer.hpp"
 #include "trace/messages.hpp"
 #include "util/errors.hpp"
@@ -97,7 +99,12 @@ int run_speed_bench(const SpeedOptions& options) {
     const double pixels = static_cast<double>(w) * w;
     std::vector<double> literal_t;
     literal_render(literal, w, literal_t);  // untimed: allocates and touches t[i, j] once
-    std::vector<std::uint8_t> engine_image(literal_t.size());
+    // Every instruction-set path this processor has, each timed single-threaded
+    // beside the literal program; the threaded run takes the path in use.
+    const Isa in_use = article_isa();
+    const std::vector<Isa> paths = supported_isas();
+    const std::size_t per_core = 1 + paths.size();  // the literal, then each path
+    std::vector<std::vector<std::uint8_t>> engine_images(paths.size(), std::vector<std::uint8_t>(literal_t.size()));
     std::vector<std::uint8_t> threaded_image(literal_t.size());
 
     // Single-thread runs visit every core in turn, the literal program and the
@@ -105,21 +112,24 @@ int run_speed_bench(const SpeedOptions& options) {
     std::vector<int> cpus = allowed_cpus();
     const bool pinned = !cpus.empty();
     if (!pinned) cpus = {-1};
-    std::vector<TimedWork> jobs;  // per core: literal, engine; then the threaded engine
+    std::vector<TimedWork> jobs;  // per core: literal, engine on each path; then the threaded engine
     for (const int cpu : cpus) {
         jobs.push_back([&, cpu](long count) {
             std::optional<PinnedToCpu> pin;
             if (pinned) pin.emplace(cpu);
             for (long k = 0; k < count; ++k) literal_render(literal, w, literal_t);
         });
-        jobs.push_back([&, cpu](long count) {
-            std::optional<PinnedToCpu> pin;
-            if (pinned) pin.emplace(cpu);
-            for (long k = 0; k < count; ++k) {
-                MemorySink sink(engine_image.data(), w);
-                render(scene, {w, 1}, PixelSelection{}, sink);
-            }
-        });
+        for (std::size_t p = 0; p < paths.size(); ++p)
+            jobs.push_back([&, cpu, p](long count) {
+                std::optional<PinnedToCpu> pin;
+                if (pinned) pin.emplace(cpu);
+                set_article_isa(paths[p]);
+                for (long k = 0; k < count; ++k) {
+                    MemorySink sink(engine_images[p].data(), w);
+                    render(scene, {w, 1}, PixelSelection{}, sink);
+                }
+                set_article_isa(in_use);
+            });
     }
     jobs.push_back(repeated([&] {
         MemorySink sink(threaded_image.data(), w);
@@ -141,49 +151,63 @@ int run_speed_bench(const SpeedOptions& options) {
     const Timing& threaded = timings.back();
 
     const std::vector<std::uint8_t> literal_image = to_bytes(literal_t);
-    const bool identical = engine_image == literal_image && threaded_image == literal_image;
+    bool identical = threaded_image == literal_image;
+    for (const std::vector<std::uint8_t>& image : engine_images) identical = identical && image == literal_image;
     const auto ns_per_pixel = [&](const Timing& t) { return t.median_seconds_per_unit / pixels * 1e9; };
 
     TextTable table({{ui_message("bench_col_single_thread"), true},
                      {ui_message("bench_col_literal_ns")},
                      {ui_message("bench_col_engine_ns")},
                      {ui_message("bench_col_engine_over_literal")}});
-    std::vector<double> ratios;
+    std::vector<std::vector<double>> ratios(paths.size());  // by path
     std::vector<std::string> problems;
-    double throughput_sum = 0;  // panes per second, summed over cores
+    double throughput_sum = 0;  // panes per second on the path in use, summed over cores
     bool all_timed = threaded.timed;
     if (!threaded.timed) problems.push_back(ui_message("bench_speed_untimed_threaded", {{"why", threaded.problem}}));
     for (std::size_t c = 0; c < cpus.size(); ++c) {
-        const Timing& lit = timings[2 * c];
-        const Timing& eng = timings[2 * c + 1];
-        const std::string where = pinned ? ui_message("bench_speed_on_core", {{"cpu", std::to_string(cpus[c])}})
-                                         : ui_message("bench_speed_any_core");
-        std::string ratio = "-";
-        if (lit.timed && eng.timed) {
-            // Per round, the two runs that were taken next to each other.
-            for (std::size_t r = 0; r < lit.seconds_per_unit.size(); ++r)
-                ratios.push_back(eng.seconds_per_unit[r] / lit.seconds_per_unit[r]);
-            throughput_sum += 1 / eng.median_seconds_per_unit;
-            ratio = fixed(eng.median_seconds_per_unit / lit.median_seconds_per_unit, 3);
-        } else {
-            all_timed = false;
-            for (const Timing* t : {&lit, &eng})
-                if (!t->timed)
-                    problems.push_back(ui_message(
-                        "bench_speed_untimed_core",
-                        {{"what", ui_message(t == &lit ? "bench_speed_what_literal" : "bench_speed_what_engine")},
-                         {"where", where},
-                         {"why", t->problem}}));
+        const Timing& lit = timings[per_core * c];
+        const std::string core = pinned ? ui_message("bench_speed_on_core", {{"cpu", std::to_string(cpus[c])}})
+                                        : ui_message("bench_speed_any_core");
+        for (std::size_t p = 0; p < paths.size(); ++p) {
+            const Timing& eng = timings[per_core * c + 1 + p];
+            const std::string where = core + ", " + isa_name(paths[p]);
+            std::string ratio = "-";
+            if (lit.timed && eng.timed) {
+                // Per round, the two runs that were taken next to each other.
+                for (std::size_t r = 0; r < lit.seconds_per_unit.size(); ++r)
+                    ratios[p].push_back(eng.seconds_per_unit[r] / lit.seconds_per_unit[r]);
+                if (paths[p] == in_use) throughput_sum += 1 / eng.median_seconds_per_unit;
+                ratio = fixed(eng.median_seconds_per_unit / lit.median_seconds_per_unit, 3);
+            } else {
+                all_timed = false;
+                for (const Timing* t : {&lit, &eng})
+                    if (!t->timed)
+                        problems.push_back(ui_message(
+                            "bench_speed_untimed_core",
+                            {{"what", ui_message(t == &lit ? "bench_speed_what_literal" : "bench_speed_what_engine")},
+                             {"where", where},
+                             {"why", t->problem}}));
+            }
+            table.add_row({where, lit.timed ? fixed(ns_per_pixel(lit), 2) : "-",
+                           eng.timed ? fixed(ns_per_pixel(eng), 2) : "-", ratio});
         }
-        table.add_row({where, lit.timed ? fixed(ns_per_pixel(lit), 2) : "-", eng.timed ? fixed(ns_per_pixel(eng), 2) : "-",
-                       ratio});
     }
     print_standard_output("{}", table.text());
     const auto line = [](const std::string& text) { print_standard_output("{}\n", indented(text)); };
     line(ui_message("bench_speed_threaded", {{"threads", counted(threads, "bench_threads")},
                                              {"ns", threaded.timed ? fixed(ns_per_pixel(threaded), 2) : "-"}}));
     print_standard_output("\n");
-    if (!ratios.empty()) line(ui_message("bench_speed_ratio", {{"ratio", fixed(median_of(ratios), 3)}}));
+    const char* isa_variable = std::getenv("PROMYK_ISA");
+    const bool forced = isa_variable && *isa_variable;
+    line(ui_message("bench_speed_path",
+                    {{"path", isa_name(in_use)},
+                     {"why", ui_message(in_use == supported_isas().back() && !forced
+                                            ? "isa_why_widest"
+                                            : "isa_why_forced")}}));
+    for (std::size_t p = 0; p < paths.size(); ++p)
+        if (!ratios[p].empty())
+            line(ui_message(paths[p] == in_use ? "bench_speed_ratio" : "bench_speed_ratio_path",
+                            {{"path", isa_name(paths[p])}, {"ratio", fixed(median_of(ratios[p]), 3)}}));
     if (all_timed) {
         const double t_one = 1 / (throughput_sum / static_cast<double>(cpus.size()));  // the average core
         line(ui_message("bench_speed_speedup", {{"threads", counted(threads, "bench_threads")},

@@ -32,6 +32,11 @@ struct ArticleRow {
           SS(length_squared(w.S)), SS_rr(SS - w.r * w.r) {}
 };
 
+// The templates below are compiled once per instruction set, each in its
+// namespace (render/lanes.hpp); ArticleRow is not: only the baseline
+// builds one, and the wider sets read it.
+inline namespace PROMYK_LANES_ISA {
+
 template <class Lane>
 struct LanePixel {
     Lane I_P;
@@ -82,4 +87,5 @@ PROMYK_LANES_INLINE LanePixel<Lane> article_lanes(const ArticleRow<Real>& row, L
     return pixel;
 }
 
+}  // namespace PROMYK_LANES_ISA
 }  // namespace promyk::lanes

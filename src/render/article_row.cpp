@@ -1,14 +1,19 @@
-// The article's rows: lanes at a time (article_chunk, for the tests and the
-// wider instruction sets to come) and as rendering draws them (render_row).
+// The article's rows: lanes at a time (article_chunk, for the tests) and as
+// rendering draws them (render_row: the path render/isa.hpp chose, or one
+// pixel at a time where there are no lanes, as in the wasm).
 // Compiled with -fno-math-errno (src/CMakeLists.txt): a square root that need
 // not set errno becomes one sqrtpd for its lanes, with the same bits.
 #include "render/article_row.hpp"
 
 #include <algorithm>
 #include <cstring>
+#include <vector>
 
 #include "image/quantize.hpp"
 #include "render/article_lanes.hpp"
+#include "render/article_row_isa.hpp"
+#include "render/article_row_lanes.hpp"
+#include "render/isa.hpp"
 #include "render/renderer.hpp"
 
 namespace promyk {
@@ -66,6 +71,7 @@ ArticleRowCounts article_chunk(const ArticleWorld<Real>& world, int w, int i, in
     return counts;
 }
 
+#if !defined(PROMYK_ISA_KERNELS)
 // to_byte (image/quantize.hpp) two pixels at a time, the same steps: clamp
 // to [0, 1] (NaN to 0), scale by 255, truncate, and round a half up. As a
 // loop of scalar to_byte, GCC makes the rounding a branch, mispredicted
@@ -92,6 +98,8 @@ void put_row_bytes(const double* I_P, int n, std::uint8_t* out) {
     }
     for (; k < n; ++k) out[k] = to_byte(I_P[k]);
 }
+
+#endif
 
 template <class Real>
 PixelResult<Real> one_lane(const ArticleWorld<Real>& world, int w, int i, int j) {
@@ -121,7 +129,51 @@ ArticleRowCounts article_row_intensities(const ArticleWorld<float>& world, int w
     return article_chunk<lanes::Float4>(world, w, i, 0, w, I_P, branches);
 }
 
+namespace {
+
+#if defined(PROMYK_ISA_KERNELS)
+// x_E of every column of a w-pixel pane, the same for every row: computed
+// once per thread and pane, not a division per pixel.
+const double* pane_columns(int w) {
+    thread_local std::vector<double> x_E;
+    if (static_cast<int>(x_E.size()) != w) {
+        x_E.resize(static_cast<std::size_t>(w));
+        for (int j = 0; j < w; ++j) x_E[static_cast<std::size_t>(j)] = pane_x<double>(j, w);
+    }
+    return x_E.data();
+}
+#endif
+
+#if !defined(PROMYK_ISA_KERNELS)
+// A row one pixel at a time through trace_ray: where there is no lane path
+// (the wasm, processors other than x86-64).
+RowCounts one_pixel_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out);
+#endif
+
+}  // namespace
+
 RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out) {
+#if defined(PROMYK_ISA_KERNELS)
+    const lanes::ArticleRow<double> row(world, pane_y<double>(i, w));
+    switch (article_isa()) {
+        case Isa::avx512:
+            return lanes::avx512::draw_article_row(row, pane_columns(w), w, out);
+        case Isa::avx2:
+            return lanes::avx2::draw_article_row(row, pane_columns(w), w, out);
+        default:
+            // SSE2's two lanes: 57 instructions a pixel against 68 one pixel
+            // at a time (callgrind, w = 1024), and no slower measured.
+            return lanes::draw_row<lanes::Double2>(row, pane_columns(w), w, out);
+    }
+#else
+    return one_pixel_row(world, w, i, out);
+#endif
+}
+
+#if !defined(PROMYK_ISA_KERNELS)
+namespace {
+
+RowCounts one_pixel_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out) {
     // A local copy: stores through a uint8_t* may alias anything, so reading the
     // scene through a reference would reload it, and keep |S|^2 from being
     // hoisted, on every pixel.
@@ -135,10 +187,6 @@ RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8
     int miss = 0, dark = 0, non_finite = 0;
     // Intensities first, a chunk at a time, then their grey levels in a loop
     // of its own: measured 8.0 against 8.6 ns a pixel for one loop doing both.
-    // Not yet article_chunk's lanes: same bits, but two lanes of SSE2 measured
-    // slower here (0.72 s against 0.50 s of CPU for w = 8192 on one thread,
-    // 2026-12-02): every lane pays for a dark or missed neighbour's sqrt and
-    // division. Wider lanes (AVX2, AVX-512) are where they should pay.
     constexpr int chunk = 256;
     double I_P[chunk];
     for (int j0 = 0; j0 < w; j0 += chunk) {
@@ -166,5 +214,8 @@ RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8
     }
     return counts;
 }
+
+}  // namespace
+#endif
 
 }  // namespace promyk

@@ -8,13 +8,24 @@
 
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 // Everything a kernel calls on lanes is inlined into the loop: the kernel
 // is too big for GCC to inline by itself, and a call costs the loop its
 // registers.
 #define PROMYK_LANES_INLINE inline __attribute__((always_inline))
 
+// Each instruction set's build of these templates gets a namespace of its
+// own (PROMYK_LANES_ISA, set per translation unit by src/CMakeLists.txt):
+// an inline function the compiler did not inline is emitted in every
+// translation unit that uses it, and the linker keeps one copy; were the
+// AVX-512 copy kept, the baseline path would crash on older processors.
+#ifndef PROMYK_LANES_ISA
+#define PROMYK_LANES_ISA baseline
+#endif
+
 namespace promyk::lanes {
+inline namespace PROMYK_LANES_ISA {
 
 // Two doubles and four floats: one SSE2 register, the baseline x86-64's
 // vector (and wasm's simd128). Wider vectors pay only where the instruction
@@ -27,6 +38,12 @@ typedef float Float4 __attribute__((vector_size(16)));
 // them long, clang long long: the type is the compiler's own).
 using Mask2 = decltype(Double2{} < Double2{});
 using Mask4 = decltype(Float4{} < Float4{});
+// Four and eight doubles: AVX2's and AVX-512's registers, compiled only in
+// those instruction sets' translation units (render/article_row_avx*.cpp).
+typedef double Double4 __attribute__((vector_size(32)));
+typedef double Double8 __attribute__((vector_size(64)));
+using Mask4d = decltype(Double4{} < Double4{});
+using Mask8d = decltype(Double8{} < Double8{});
 
 template <class Lane>
 struct LaneTraits;
@@ -54,6 +71,19 @@ struct LaneTraits<Float4> {
     using Real = float;
     using Mask = Mask4;
     static constexpr int width = 4;
+};
+
+template <>
+struct LaneTraits<Double4> {
+    using Real = double;
+    using Mask = Mask4d;
+    static constexpr int width = 4;
+};
+template <>
+struct LaneTraits<Double8> {
+    using Real = double;
+    using Mask = Mask8d;
+    static constexpr int width = 8;
 };
 
 template <class Lane>
@@ -124,25 +154,21 @@ PROMYK_LANES_INLINE bool lane_of(Mask m, int k) {
 
 // a where m, else b, bit for bit (a NaN's payload too): by the bits, so a
 // NaN in the lane not taken changes nothing.
-PROMYK_LANES_INLINE Double2 select(Mask2 m, Double2 a, Double2 b) {
-    return reinterpret_cast<Double2>((reinterpret_cast<Mask2>(a) & m) | (reinterpret_cast<Mask2>(b) & ~m));
-}
-PROMYK_LANES_INLINE Float4 select(Mask4 m, Float4 a, Float4 b) {
-    return reinterpret_cast<Float4>((reinterpret_cast<Mask4>(a) & m) | (reinterpret_cast<Mask4>(b) & ~m));
+template <class Vector, class = std::enable_if_t<(LaneTraits<Vector>::width > 1)>>
+PROMYK_LANES_INLINE Vector select(MaskOf<Vector> m, Vector a, Vector b) {
+    using Mask = MaskOf<Vector>;
+    return reinterpret_cast<Vector>((reinterpret_cast<Mask>(a) & m) | (reinterpret_cast<Mask>(b) & ~m));
 }
 
 // The square root lane by lane: with -fno-math-errno (the kernels' own
 // translation unit) GCC makes this one sqrtpd/sqrtps; the result is the
 // correctly rounded root in every lane either way.
-PROMYK_LANES_INLINE Double2 lane_sqrt(Double2 x) {
-    Double2 s;
-    for (int k = 0; k < 2; ++k) s[k] = std::sqrt(x[k]);
-    return s;
-}
-PROMYK_LANES_INLINE Float4 lane_sqrt(Float4 x) {
-    Float4 s;
-    for (int k = 0; k < 4; ++k) s[k] = std::sqrt(x[k]);
+template <class Vector, class = std::enable_if_t<(LaneTraits<Vector>::width > 1)>>
+PROMYK_LANES_INLINE Vector lane_sqrt(Vector x) {
+    Vector s;
+    for (int k = 0; k < LaneTraits<Vector>::width; ++k) s[k] = std::sqrt(x[k]);
     return s;
 }
 
+}  // namespace PROMYK_LANES_ISA
 }  // namespace promyk::lanes

@@ -1,0 +1,14 @@
+// The article's drawn rows in avx2: compiled with its instruction set
+// (src/CMakeLists.txt) and PROMYK_LANES_ISA=avx2, so every template here is
+// promyk::lanes::avx2::..., apart from the baseline's copies.
+// First: it opens the inline namespace the declarations below extend.
+#include "render/article_row_lanes.hpp"
+#include "render/article_row_isa.hpp"
+
+namespace promyk::lanes::avx2 {
+
+RowCounts draw_article_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out) {
+    return draw_row<Double4>(row, x_E, w, out);
+}
+
+}  // namespace promyk::lanes::avx2

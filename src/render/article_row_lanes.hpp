@@ -1,0 +1,109 @@
+// A drawn row of the article's scene, a vector of pixels at a time: the
+// intensities of render/article_lanes.hpp turned into grey levels and counted
+// by branch. Included by one translation unit per instruction set
+// (render/article_row_avx2.cpp, ..._avx512.cpp), each compiling it in its own
+// namespace (PROMYK_LANES_ISA). Calls nothing that is not inlined: a shared
+// function compiled here would carry this instruction set into the others.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+
+#include "render/article_lanes.hpp"
+#include "render/kernel.hpp"
+
+namespace promyk::lanes {
+inline namespace PROMYK_LANES_ISA {
+
+// A vector's truncated grey levels and its bytes, lane for lane.
+typedef std::int32_t Int2 __attribute__((vector_size(8)));
+typedef std::int32_t Int4 __attribute__((vector_size(16)));
+typedef std::int32_t Int8 __attribute__((vector_size(32)));
+typedef std::uint8_t Byte2 __attribute__((vector_size(2)));
+typedef std::uint8_t Byte4 __attribute__((vector_size(4)));
+typedef std::uint8_t Byte8 __attribute__((vector_size(8)));
+template <class Vector>
+struct GreyTypes;
+template <>
+struct GreyTypes<Double2> {
+    using Ints = Int2;
+    using Bytes = Byte2;
+};
+template <>
+struct GreyTypes<Double4> {
+    using Ints = Int4;
+    using Bytes = Byte4;
+};
+template <>
+struct GreyTypes<Double8> {
+    using Ints = Int8;
+    using Bytes = Byte8;
+};
+
+// image/quantize.hpp's to_byte, lane by lane, the same steps: clamp to
+// [0, 1] (NaN to 0), scale by 255, truncate, and round a half up.
+template <class Vector>
+PROMYK_LANES_INLINE void put_grey_levels(Vector v, std::uint8_t* out, int n) {
+    using Ints = typename GreyTypes<Vector>::Ints;
+    using Bytes = typename GreyTypes<Vector>::Bytes;
+    const Vector positive = select(v > 0.0, v, splat<Vector>(0.0));  // also NaN -> 0
+    const Vector clamped = select(positive < 1.0, positive, splat<Vector>(1.0));
+    const Vector y = clamped * 255.0;
+    const Ints q = __builtin_convertvector(y, Ints);  // truncation; y - q is then exact
+    const auto half_up = __builtin_convertvector((y - __builtin_convertvector(q, Vector)) >= 0.5, Ints);
+    const Bytes grey = __builtin_convertvector(q - half_up, Bytes);  // a mask is -1 where true
+    std::memcpy(out, &grey, static_cast<std::size_t>(n));
+}
+
+// Row `row` of a w-pixel pane into out[0 .. w): x_E[j] is pane_x(j, w),
+// given for the whole pane (columns share it; computing it here would cost
+// each pixel a division). The last vector is filled past w and only its
+// first pixels are kept.
+template <class Vector>
+PROMYK_LANES_INLINE RowCounts draw_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out) {
+    constexpr int width = LaneTraits<Vector>::width;
+    using Mask = MaskOf<Vector>;
+    Mask miss{}, dark{}, non_finite{};  // counted lane by lane: a mask is -1 where true
+    int first_non_finite_j = -1;
+    // Pixels j .. j + n - 1 of the row, x their x_E (and, past n, filler).
+    const auto draw = [&](int j, int n, Vector x, Mask kept) __attribute__((always_inline)) {
+        const LanePixel<Vector> pixel = article_lanes(row, x);
+        put_grey_levels(pixel.I_P, out + j, n);
+        miss -= pixel.miss & kept;
+        dark -= pixel.dark & kept;
+        const Mask now_non_finite = pixel.non_finite & kept;
+        non_finite -= now_non_finite;
+        if (first_non_finite_j < 0 && any(now_non_finite))  // rare
+            for (int k = width - 1; k >= 0; --k)
+                if (lane_of(now_non_finite, k)) first_non_finite_j = j + k;
+    };
+    int j = 0;
+    for (; j + width <= w; j += width) {
+        Vector x;
+        std::memcpy(&x, x_E + j, sizeof x);
+        draw(j, width, x, ~Mask{});
+    }
+    if (j < w) {
+        Vector x = splat<Vector>(x_E[j]);
+        Mask kept{};
+        for (int k = 0; k < w - j; ++k) x[k] = x_E[j + k], kept[k] = -1;
+        draw(j, w - j, x, kept);
+    }
+    RowCounts counts;
+    counts.sphere_tests = w;  // one sphere, one primary ray a pixel
+    int missed = 0, darks = 0, non_finites = 0;
+    for (int k = 0; k < width; ++k) {
+        missed += static_cast<int>(miss[k]);
+        darks += static_cast<int>(dark[k]);
+        non_finites += static_cast<int>(non_finite[k]);
+    }
+    counts.branches[static_cast<int>(Branch::miss)] = missed;
+    counts.branches[static_cast<int>(Branch::dark)] = darks;
+    counts.branches[static_cast<int>(Branch::non_finite)] = non_finites;
+    counts.branches[static_cast<int>(Branch::lit)] = w - missed - darks - non_finites;
+    counts.first_non_finite_j = first_non_finite_j;
+    return counts;
+}
+
+}  // namespace PROMYK_LANES_ISA
+}  // namespace promyk::lanes
