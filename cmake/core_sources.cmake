@@ -45,6 +45,15 @@ set(PROMYK_PORTABLE_SOURCES
   trace/messages.cpp
   util/interrupt.cpp
   util/printable.cpp
+  # The lesson runner: the page shows lessons through it (web_export/wasm).
+  lesson/lesson_parse.cpp
+  lesson/lesson_check.cpp
+  lesson/lesson_library.cpp
+  lesson/lesson_render.cpp
+  lesson/lesson_run.cpp
+  lesson/lesson_html.cpp
+  util/system_error_text.cpp
+  util/atomic_file.cpp
 )
 
 # The command line's core only (not needed by the page's C API).
@@ -53,16 +62,10 @@ set(PROMYK_NATIVE_CORE_SOURCES
   image/map_legend.cpp
   render/scene_report.cpp
   render/trace_size.cpp
-  lesson/lesson_parse.cpp
-  lesson/lesson_check.cpp
-  lesson/lesson_library.cpp
-  lesson/lesson_render.cpp
   lesson/worksheet.cpp
   lesson/answers_read.cpp
   lesson/answers_judge.cpp
   lesson/trace_diff.cpp
-  util/system_error_text.cpp
-  util/atomic_file.cpp
   util/output_file.cpp
   util/standard_output.cpp
   image/image_writer.cpp
