@@ -7,8 +7,9 @@
 # Paths are relative to src/. promyk_core_sources(OUT SRC_DIR [NATIVE])
 # sets OUT to the absolute paths: the portable core (scene reader, kernels'
 # non-generated parts, trace writer and reader, number formatter, messages,
-# vocabulary), and with NATIVE also what only the command line needs
-# (lessons, image files, output files, the x87 long double, benchmarks are
+# vocabulary, the lesson runner the page shows lessons with), and with NATIVE
+# also what only the command line needs (worksheets and answers, image files,
+# output files, the x87 long double, benchmarks are
 # listed by src/CMakeLists.txt itself).
 include_guard(GLOBAL)
 

@@ -239,6 +239,7 @@ int run_lesson(const LessonOptions& options) {
         throw UsageError(ui_message("lesson_unknown", {{"name", options.name}, {"hint", hint.empty() ? "." : hint}, {"names", names}}));
     }
     const Lesson& lesson = *found;
+    if (options.worksheet && options.format == "html") throw UsageError(ui_message("lesson_worksheet_no_html"));
     require_runnable(lesson);
     const Scene scene = options.scene_file.empty() ? library.scene(lesson.header.scene) : load_scene_file(options.scene_file);
     LessonRunOptions run_options;
