@@ -113,6 +113,12 @@ await page.locator('#lesson-next').click();
 assert.deepEqual(await visibleSteps(), ['2']);
 await page.locator('#lesson-prev').click();
 assert.deepEqual(await visibleSteps(), ['1']);
+// The arrows walk the lesson's steps while the focus is in the section.
+await page.locator('#lesson-next').focus();
+await page.keyboard.press('ArrowRight');
+assert.deepEqual(await visibleSteps(), ['2']);
+await page.keyboard.press('ArrowLeft');
+assert.deepEqual(await visibleSteps(), ['1']);
 const withAnswer = await page.$eval('#lesson-body details.answer', (d) => Number(d.dataset.step));
 for (let k = 1; k < withAnswer; ++k) await page.locator('#lesson-next').click();
 assert.deepEqual(await visibleSteps(), [String(withAnswer)]);

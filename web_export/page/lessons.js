@@ -47,6 +47,15 @@ export class Lessons {
     });
     this.prev.addEventListener('click', () => this.go(this.step - 1));
     this.next.addEventListener('click', () => this.go(this.step + 1));
+    // In step mode, ← and → (focus in the section, not in a field) walk the steps.
+    root.addEventListener('keydown', (event) => {
+      if (!this.stepMode || event.altKey || event.ctrlKey || event.metaKey) return;
+      if (/^(INPUT|SELECT|TEXTAREA)$/.test(event.target.tagName)) return;
+      const by = { ArrowLeft: -1, ArrowRight: 1 }[event.key];
+      if (!by) return;
+      event.preventDefault();
+      this.go(this.step + by);
+    });
     for (const [id, answers] of [['lesson-print', false], ['lesson-print-key', true]])
       $(id).addEventListener('click', () => this.print(answers));
   }

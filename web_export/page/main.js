@@ -598,6 +598,8 @@ async function start() {
     // The focused image and 3D view take the arrows themselves (and stop
     // them); Home and End still walk the steps there.
     if (focus && /^(INPUT|SELECT|TEXTAREA)$/.test(focus.tagName)) return;
+    // In the lessons section the arrows walk the lesson's steps (lessons.js).
+    if (focus && focus.closest && focus.closest('#lessons-panel')) return;
     if (event.altKey || event.ctrlKey || event.metaKey) return;
     const keys = { ArrowLeft: () => step(state.step - 1), ArrowRight: () => step(state.step + 1), Home: () => step(0), End: () => step(Infinity) };
     if (!keys[event.key]) return;
