@@ -7,8 +7,9 @@
 # Paths are relative to src/. promyk_core_sources(OUT SRC_DIR [NATIVE])
 # sets OUT to the absolute paths: the portable core (scene reader, kernels'
 # non-generated parts, trace writer and reader, number formatter, messages,
-# vocabulary), and with NATIVE also what only the command line needs
-# (lessons, image files, output files, the x87 long double, benchmarks are
+# vocabulary, the lesson runner the page shows lessons with), and with NATIVE
+# also what only the command line needs (worksheets and answers, image files,
+# output files, the x87 long double, benchmarks are
 # listed by src/CMakeLists.txt itself).
 include_guard(GLOBAL)
 
@@ -46,6 +47,15 @@ set(PROMYK_PORTABLE_SOURCES
   trace/messages.cpp
   util/interrupt.cpp
   util/printable.cpp
+  # The lesson runner: the page shows lessons through it (web_export/wasm).
+  lesson/lesson_parse.cpp
+  lesson/lesson_check.cpp
+  lesson/lesson_library.cpp
+  lesson/lesson_render.cpp
+  lesson/lesson_run.cpp
+  lesson/lesson_html.cpp
+  util/system_error_text.cpp
+  util/atomic_file.cpp
 )
 
 # The command line's core only (not needed by the page's C API).
@@ -54,16 +64,10 @@ set(PROMYK_NATIVE_CORE_SOURCES
   image/map_legend.cpp
   render/scene_report.cpp
   render/trace_size.cpp
-  lesson/lesson_parse.cpp
-  lesson/lesson_check.cpp
-  lesson/lesson_library.cpp
-  lesson/lesson_render.cpp
   lesson/worksheet.cpp
   lesson/answers_read.cpp
   lesson/answers_judge.cpp
   lesson/trace_diff.cpp
-  util/system_error_text.cpp
-  util/atomic_file.cpp
   util/output_file.cpp
   util/standard_output.cpp
   image/image_writer.cpp

@@ -27,6 +27,7 @@
 #include "lesson/lesson_check.hpp"
 #include "lesson/lesson_library.hpp"
 #include "lesson/lesson_render.hpp"
+#include "lesson/lesson_run.hpp"
 #include "lesson/worksheet.hpp"
 #include "trace/messages.hpp"
 #include "util/edit_distance.hpp"
@@ -66,38 +67,6 @@ struct LessonOptions {
     bool real_given = false, formula_given = false, spp_given = false;
     std::string max_trace_size;  // --max-trace-size; empty: the default limit
 };
-
-std::optional<RealType> real_type_named(const std::string& name) {
-    for (const RealType type : {RealType::float_, RealType::double_, RealType::long_double, RealType::quad_})
-        if (real_type_name(type) == name) return type;
-    return std::nullopt;
-}
-
-std::optional<Formula> formula_named(const std::string& name) {
-    for (const Formula formula : all_formulas)
-        if (formula_name(formula) == name) return formula;
-    return std::nullopt;
-}
-
-// The traces of the pixels in each other setting a qualifier names
-// ({delta@float}, delta@float = … in an answer file), added to view.others once a setting;
-// with `only`, of those pixels alone.
-void trace_settings(LessonView& view, const Scene& scene, const TraceHeader& header, const std::vector<std::string>& qualifiers,
-                    int spp, const std::set<std::pair<int, int>>* only = nullptr) {
-    const TraceHeader& own = view.traces.front().header;
-    std::set<std::pair<std::string, std::string>> done;
-    for (const PixelTrace& other : view.others) done.emplace(other.header.real, other.header.formula);
-    for (const std::string& qualifier : qualifiers) {
-        const auto [real, formula] = resolve_settings(qualifier, own.real, own.formula);
-        if ((real == own.real && formula == own.formula) || !done.emplace(real, formula).second) continue;
-        const std::unique_ptr<Kernel> kernel = make_kernel(scene, *real_type_named(real), *formula_named(formula), spp);
-        std::set<std::pair<int, int>> traced;
-        for (const PixelTrace& trace : view.traces)
-            if ((only == nullptr || only->count({trace.header.i, trace.header.j}) > 0) &&
-                traced.emplace(trace.header.i, trace.header.j).second)
-                view.others.push_back(kernel->trace(header, trace.header.i, trace.header.j));
-    }
-}
 
 // Flushed at once (step mode waits between steps); a failed write (a full
 // disk, a reader that quit) is an error here: once flushed, the failure
@@ -199,7 +168,10 @@ std::vector<std::string> lesson_names(const LessonLibrary& library, Language lan
 }
 
 // --answers FILE: the student's numbers against the traces; exit 1 when any is wrong.
-int run_answers(const LessonOptions& options, LessonView& view, const Kernel& kernel, const Scene& scene, const TraceHeader& header) {
+int run_answers(const LessonOptions& options, LessonRun& run) {
+    LessonView& view = run.view();
+    const Kernel& kernel = run.kernel();
+    const TraceHeader& header = run.header();
     const std::string shown = options.answers == "-" ? "(stdin)" : options.answers;
     const LessonPixel first{view.traces.front().header.i, view.traces.front().header.j};
     // A bad line makes that answer unreadable, the rest are checked; a fraction is a number.
@@ -224,7 +196,7 @@ int run_answers(const LessonOptions& options, LessonView& view, const Kernel& ke
             if (answer.unreadable.empty()) qualifiers.push_back(split_settings(answer.key).second);
     for (const SettingsUse& use : settings_used(view.lesson)) qualifiers.push_back(use.settings);
     view.others.clear();
-    trace_settings(view, scene, header, qualifiers, kernel.spp());
+    run.trace_settings(qualifiers);
     std::vector<AnswerCheck> checks = check_answers(answers, view.traces, view.others);
     // A fraction or a number with more digits than the type holds, wrong against the computed value
     // alone, is judged against the exact value: the same pixel and formula in quad, traced only for these.
@@ -236,7 +208,7 @@ int run_answers(const LessonOptions& options, LessonView& view, const Kernel& ke
             exact_pixels.emplace(check.pixel.i, check.pixel.j);
         }
     if (!exact.empty()) {
-        trace_settings(view, scene, header, exact, kernel.spp(), &exact_pixels);
+        run.trace_settings(exact, &exact_pixels);
         checks = check_answers(answers, view.traces, view.others);
     }
     print(wrap_lines(message(view.lesson.language, "answers_heading",
@@ -267,86 +239,53 @@ int run_lesson(const LessonOptions& options) {
         throw UsageError(ui_message("lesson_unknown", {{"name", options.name}, {"hint", hint.empty() ? "." : hint}, {"names", names}}));
     }
     const Lesson& lesson = *found;
-    // A fault --check would report (a misspelt placeholder, an unknown branch)
-    // stops the lesson as it stops --check: the file, the line, exit 3.
-    {
-        std::vector<LessonProblem> problems;
-        check_lesson(lesson, builtin_vocabulary(), problems);
-        if (!problems.empty())
-            throw InputError(lesson.file, fmt::format("line {}", problems.front().line), problems.front().message);
-    }
-    // Each column's numbers: real type and formula (one for all, or one a column).
-    std::istringstream columns(lesson.header.columns);
-    for (std::string column; columns >> column;)
-        if (column != "double/article")
-            throw InputError(lesson.file, "columns", ui_message("lesson_columns", {{"column", column}}));
+    if (options.worksheet && options.format == "html") throw UsageError(ui_message("lesson_worksheet_no_html"));
+    require_runnable(lesson);
     const Scene scene = options.scene_file.empty() ? library.scene(lesson.header.scene) : load_scene_file(options.scene_file);
-    const int w = options.w_given ? options.w : lesson.header.w;
-    std::vector<LessonPixel> pixels;
+    LessonRunOptions run_options;
+    run_options.w = options.w_given ? options.w : lesson.header.w;
+    const int w = run_options.w;
     for (const std::string& text : options.pixels) {
         const cli::Pixel pixel = cli::parse_pixel(text, "--pixel", w);
-        pixels.push_back({pixel.i, pixel.j});
+        run_options.pixels.push_back({pixel.i, pixel.j});
     }
-    if (pixels.empty()) {
+    if (run_options.pixels.empty()) {
         for (const LessonPixel& pixel : lesson.header.pixels) {
             if (pixel.i >= w || pixel.j >= w)
                 throw UsageError(ui_message("lesson_pixel_outside", {{"i", std::to_string(pixel.i)},
                                                                      {"j", std::to_string(pixel.j)},
                                                                      {"w", std::to_string(w)}}));
-            pixels.push_back(pixel);
+            run_options.pixels.push_back(pixel);
         }
     }
-
-    LessonView view{lesson, builtin_vocabulary(), {}, scene.name, w, LessonFormat::text, false, {}, {}};
-    view.format = options.format == "markdown" ? LessonFormat::markdown : LessonFormat::text;
-    view.digits = shown_digits(lesson.header.digits);  // 4 significant digits unless digits: or --digits
-    const char* no_color = std::getenv("NO_COLOR");
-    view.color = view.format == LessonFormat::text && isatty(STDOUT_FILENO) == 1 && (no_color == nullptr || *no_color == '\0');
+    run_options.format = options.format == "markdown" ? LessonFormat::markdown
+                         : options.format == "html"   ? LessonFormat::html
+                                                      : LessonFormat::text;
+    run_options.digits = shown_digits(lesson.header.digits);  // 4 significant digits unless digits: or --digits
     // The numbers' type and formula: the command line's, else the lesson's header's (else double, article).
-    const RealType real = options.real_given ? options.real : real_type_named(lesson.header.real).value_or(RealType::double_);
-    const Formula formula =
-        options.formula_given ? options.formula : formula_named(lesson.header.formula).value_or(Formula::article);
-    // A qualifier that names no setting cannot be traced: the lesson is broken (exit 3, file and line).
-    std::vector<std::string> qualifiers;
-    for (const SettingsUse& use : settings_used(lesson)) {
-        if (!parse_settings(use.settings))
-            throw InputError(lesson.file, fmt::format("line {}", use.line),
-                             message(lesson.language, "error_unknown_setting", {{"key", use.qualified}, {"settings", use.settings}}));
-        qualifiers.push_back(use.settings);
-    }
-    const int spp = options.spp_given ? options.spp : lesson.header.spp;
+    run_options.real = options.real_given ? options.real : lesson_real(lesson);
+    run_options.formula = options.formula_given ? options.formula : lesson_formula(lesson);
+    run_options.spp = options.spp_given ? options.spp : lesson.header.spp;
     // Each pixel's trace, estimated from the scene before anything is traced
     // (quad for the other settings a lesson may name).
     TraceCost cost;
     cost.scene = &scene;
-    cost.real = qualifiers.empty() && options.answers.empty() ? real : RealType::quad_;
-    cost.spp = spp;
+    cost.real = lesson_qualifiers(lesson).empty() && options.answers.empty() ? run_options.real : RealType::quad_;
+    cost.spp = run_options.spp;
     require_trace_size(cost, options.max_trace_size);
-    const std::unique_ptr<Kernel> kernel = make_kernel(scene, real, formula, spp);
-    const TraceHeader header = trace_header(scene, w);
-    view.scene = &scene;
     // The scene's file name, for "::: scene FILE" blocks; the lesson's own scene shows its own prose.
-    view.scene_file = lesson.header.scene;
+    run_options.scene_file = lesson.header.scene;
     if (!options.scene_file.empty()) {
         const std::size_t slash = options.scene_file.find_last_of("/\\");
-        view.scene_file = slash == std::string::npos ? options.scene_file : options.scene_file.substr(slash + 1);
+        run_options.scene_file = slash == std::string::npos ? options.scene_file : options.scene_file.substr(slash + 1);
     }
-    view.own_scene = view.scene_file == lesson.header.scene ||
-                     (lesson.header.scene == "article" && view.scene_file == "article.json");
-    // Any pixel of the pane, traced once when a step's needs or the figure ask for it.
-    auto pane = std::make_shared<std::map<std::pair<int, int>, PixelTrace>>();
-    const Kernel* pane_kernel = kernel.get();
-    view.pane_pixel = [pane, pane_kernel, header](int i, int j) -> const PixelTrace& {
-        // A step's needs may search a large pane, pixel by pixel: a signal stops it.
-        throw_if_interrupted();
-        auto at = pane->find({i, j});
-        if (at == pane->end()) at = pane->emplace(std::make_pair(i, j), pane_kernel->trace(header, i, j)).first;
-        return at->second;
-    };
-    view.traces.reserve(pixels.size());
-    for (const LessonPixel& pixel : pixels) view.traces.push_back(kernel->trace(header, pixel.i, pixel.j));
-    trace_settings(view, scene, header, qualifiers, spp);
-    if (!options.answers.empty()) return run_answers(options, view, *kernel, scene, header);
+    run_options.own_scene = run_options.scene_file == lesson.header.scene ||
+                            (lesson.header.scene == "article" && run_options.scene_file == "article.json");
+    LessonRun run(lesson, scene, run_options);
+    LessonView& view = run.view();
+    const char* no_color = std::getenv("NO_COLOR");
+    view.color = view.format == LessonFormat::text && isatty(STDOUT_FILENO) == 1 && (no_color == nullptr || *no_color == '\0');
+    if (!options.answers.empty()) return run_answers(options, run);
 
     // A worksheet shows blanks for the pixels' numbers and leaves the answers out (they are the teacher's).
     std::optional<Worksheet> worksheet;
@@ -406,7 +345,8 @@ std::function<int()> setup_lesson(CLI::App& app) {
                       "sample nearest the pixel's centre, whose branch is the pixel's; {I_mean} is the pixel's value,\n"
                       "{sample[2].delta} another sample's step")
         ->default_str("");
-    add_format_option(*cmd, options->format, {"text", "markdown"}, "text: for the terminal; markdown: with $…$ math and tables");
+    add_format_option(*cmd, options->format, {"text", "markdown", "html"},
+                      "text: for the terminal; markdown: with $…$ math and tables; html: a fragment, TeX for KaTeX");
     cmd->add_flag("--list", options->list, "List the lessons with their summaries");
     cmd->add_flag("--check", options->check,
                   "Check every lesson against the vocabulary and its translation; exit 1 on a fault");

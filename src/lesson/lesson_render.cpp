@@ -14,6 +14,7 @@
 #include "trace/trace_text.hpp"
 #include "render/world.hpp"
 #include "lesson/lesson_check.hpp"
+#include "lesson/lesson_html.hpp"
 #include "trace/intensity_formula.hpp"
 
 namespace promyk {
@@ -462,6 +463,59 @@ std::string markdown_part(const LessonView& view, const LessonPart& part, const 
     return "";
 }
 
+// --- HTML (the web page) -----------------------------------------------------
+
+std::string html_values(const LessonView& view, const LessonPart& part) {
+    const Language language = view.lesson.language;
+    std::string out = "<table class=\"values\">\n<thead><tr><td></td>";
+    for (const PixelTrace& trace : view.traces)
+        out += "<th scope=\"col\">" + html_escape(pixel_label(view, trace)) + "</th>";
+    out += "</tr></thead>\n<tbody>\n";
+    for (const std::string& key : expanded_keys(view, part.keys)) {
+        const VocabularyEntry* entry = view.vocabulary.find(path_key(key));
+        std::string math = split_settings(key).first;
+        if (entry != nullptr) {
+            math = row_formula(view, key, *entry, true);
+            if (math.empty()) math = entry->latex;
+        }
+        out += "<tr><th scope=\"row\">" + html_math(math) + html_escape(group_suffix(view, key)) + "</th>";
+        for (const PixelTrace& trace : view.traces) {
+            const std::optional<LessonNumber> number = lesson_number(view, trace, key);
+            out += number ? "<td>" + html_escape(cell_text(view, trace, key, *number)) + "</td>"
+                          : "<td class=\"not-reached\">" + html_escape(not_reached_cell(trace, language)) + "</td>";
+        }
+        out += "</tr>\n";
+    }
+    return out + "</tbody>\n</table>\n";
+}
+
+std::string html_part(const LessonView& view, const LessonPart& part, const PixelTrace* named) {
+    switch (part.kind) {
+        case PartKind::prose:
+            return html_prose(fill(view, part.text, nullptr, named));
+        case PartKind::scene:
+            return scene_shown(view, part) ? html_prose(fill(view, part.text, nullptr, named)) : "";
+        case PartKind::figure:
+            return "<pre class=\"figure\">" + html_escape(pane_figure(view)) + "</pre>\n";
+        case PartKind::values:
+            return html_values(view, part);
+        case PartKind::block: {
+            std::string out;
+            for (const PixelTrace& trace : view.traces) {
+                if (!shown_for(view, part, trace)) continue;
+                out += fmt::format("<div class=\"block\" data-i=\"{}\" data-j=\"{}\">\n<p class=\"pixel\"><strong>", trace.header.i,
+                                   trace.header.j) +
+                       html_escape(pixel_label(view, trace)) + ":</strong></p>\n" + html_prose(fill(view, part.text, &trace)) +
+                       "</div>\n";
+            }
+            return out;
+        }
+        case PartKind::answer:
+            return "";
+    }
+    return "";
+}
+
 }  // namespace
 
 bool is_scene_value(const std::string& key);
@@ -875,6 +929,10 @@ std::string render_lesson_title(const LessonView& view) {
                              {"effect", message(language, "effect_" + effect)},
                              {"example", view.lesson.header.scene},
                              {"name", view.lesson.header.name}});
+    if (view.format == LessonFormat::html)
+        return "<header class=\"lesson-head\">\n<h1>" + html_escape(heading) + "</h1>\n<p class=\"summary\"><em>" +
+               html_inline(view.lesson.header.summary) + "</em></p>\n<p class=\"setup\">" + html_escape(setup) + "</p>\n" +
+               (settings.empty() ? "" : "<p class=\"settings\">" + html_escape(settings) + "</p>\n") + "</header>\n";
     if (view.format == LessonFormat::markdown)
         return "# " + heading + "\n\n*" + view.lesson.header.summary + "*\n\n" + setup + (settings.empty() ? "" : "\n\n" + settings) + "\n";
     return bold(view, heading) + "\n" + wrap(view.lesson.header.summary, 0) + "\n" + wrap(setup, 0) + "\n" +
@@ -896,6 +954,14 @@ std::string render_step(const LessonView& view, std::size_t k) {
     const auto skipped = [&](const LessonPart& part) {
         return named == nullptr && (part.kind == PartKind::prose || part.kind == PartKind::scene) && names_pixel(part.text);
     };
+    if (view.format == LessonFormat::html) {
+        out = fmt::format("<section class=\"lesson-step\" data-step=\"{}\" data-steps=\"{}\">\n<h2>", k + 1, view.lesson.steps.size()) +
+              html_escape(heading) + "</h2>\n";
+        if (!missing.empty()) out += "<p class=\"needs\"><em>" + html_escape(missing) + "</em></p>\n";
+        for (const LessonPart& part : step.parts)
+            if (!skipped(part)) out += html_part(view, part, named);
+        return out + "</section>\n";
+    }
     if (view.format == LessonFormat::markdown) {
         out = "## " + heading + "\n";
         if (!missing.empty()) out += "\n*" + missing + "*\n";
@@ -929,7 +995,10 @@ std::string render_answers(const LessonView& view, std::size_t k) {
         const PixelTrace* pixel = step_pixel(view, step);
         if (pixel == nullptr) return "";
         const std::string text = fill(view, part.text, pixel);
-        if (view.format == LessonFormat::markdown)
+        if (view.format == LessonFormat::html)
+            out += fmt::format("<details class=\"answer\" data-step=\"{}\"><summary>", k + 1) + html_escape(title) +
+                   "</summary>\n" + html_prose(text) + "</details>\n";
+        else if (view.format == LessonFormat::markdown)
             out += "\n<details><summary>" + title + "</summary>\n\n" + text + "\n\n</details>\n";
         else
             out += "\n" + bold(view, title + ":") + "\n" + text_paragraphs(text, 0);

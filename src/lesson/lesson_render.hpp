@@ -1,5 +1,7 @@
-// A lesson with the real numbers of its pixels, as terminal text or as
-// Markdown ($…$ math, tables, <details> for answers).
+// A lesson with the real numbers of its pixels, as terminal text, as
+// Markdown ($…$ math, tables, <details> for answers), or as HTML for the web
+// page (every text escaped, TeX in <span class="math"> for KaTeX, each step a
+// <section data-step>, its answers in <details> after it).
 #pragma once
 
 #include <functional>
@@ -14,7 +16,7 @@
 
 namespace promyk {
 
-enum class LessonFormat { text, markdown };
+enum class LessonFormat { text, markdown, html };
 
 struct LessonView {
     const Lesson& lesson;

@@ -100,3 +100,6 @@ if(NOT PROMYK_SANITIZE)
            COMMAND ${PROMYK_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/cli/scene_schema_test.py $<TARGET_FILE:promyk>
                    ${PROJECT_SOURCE_DIR}/lessons/scenes/scene.schema.json ${promyk_scene_files})
 endif()
+promyk_cli_test(lesson_html ARGS lesson program --lang pl --format html EXIT 0
+                STDOUT "^<header class=.lesson-head.>.<h1>Lekcja: .*<section class=.lesson-step. data-step=.1. .*<th scope=.col.>piksel \\(0, 0\\)</th>.*<details class=.answer. data-step=.[0-9]+.><summary>Odpowiedź</summary>")
+promyk_cli_test(lesson_html_worksheet ARGS lesson sphere --worksheet --format html --lang en EXIT 2 STDERR "--worksheet has no HTML form yet")

@@ -32,3 +32,13 @@ if(NOT PROMYK_SANITIZE AND PROMYK_WEB_PAGE_BUILT)
                    "${PROMYK_NPM_MODULES}" "${PROJECT_SOURCE_DIR}/lessons" "${CMAKE_CURRENT_BINARY_DIR}/web/edit")
   set_tests_properties(web.edit PROPERTIES TIMEOUT 600)
 endif()
+
+# The lessons section (tests/web/lessons_test.mjs, issue 17): a lesson with
+# a chosen pixel shows `promyk lesson --format markdown`'s numbers; a hostile
+# scene name stays text; step mode, reveals, the print stylesheet.
+if(NOT PROMYK_SANITIZE AND PROMYK_WEB_PAGE_BUILT)
+  add_test(NAME web.lessons
+           COMMAND "${PROMYK_NODE}" "${CMAKE_CURRENT_SOURCE_DIR}/web/lessons_test.mjs" $<TARGET_FILE:promyk>
+                   "${PROMYK_NPM_MODULES}" "${PROJECT_SOURCE_DIR}/lessons" "${CMAKE_CURRENT_BINARY_DIR}/web/lessons")
+  set_tests_properties(web.lessons PROPERTIES TIMEOUT 600)
+endif()

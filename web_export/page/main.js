@@ -10,6 +10,7 @@ import { View3D } from './view3d.js';
 import { RenderPool } from './render_pool.js';
 import { SceneEditor, modelOf, sceneText, maxW } from './scene_editor.js';
 import { timed, measureSince } from './timing.js';
+import { Lessons } from './lessons.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -86,6 +87,11 @@ async function start() {
   const derivation = new Derivation($('steps'), $('outcome'));
   const view3d = new View3D($('view3d'), $('view-labels'), $('view-list'));
   view3d.setScene(opened.scene_content);
+  const lessons = new Lessons($('lessons-panel'), {
+    tracer,
+    pixel: () => state.pixel,
+    scene: () => ({ hash: opened.scene_hash, name: opened.scene, w: scene.w }),
+  });
   const editor = new SceneEditor($('scene-fields'), { onChange: () => sceneEdited() });
   // The image shown: which scene, w and settings it was rendered with.
   const imageKey = (text, w, real, formula, spp) => JSON.stringify([text, w, real, formula, spp]);
@@ -444,6 +450,7 @@ async function start() {
 
   // The views that depend on the state only (cheap): redrawn on any change.
   function redraw() {
+    lessons.refresh();
     image.selected = state.pixel;
     image.atlas = state.atlas;
     image.draw();
@@ -512,6 +519,7 @@ async function start() {
     else showSceneErrors();
     drawCommand();
     redrawTrace();
+    lessons.setLanguage(state.lang);
   }
 
   function describeScene() {
@@ -590,6 +598,8 @@ async function start() {
     // The focused image and 3D view take the arrows themselves (and stop
     // them); Home and End still walk the steps there.
     if (focus && /^(INPUT|SELECT|TEXTAREA)$/.test(focus.tagName)) return;
+    // In the lessons section the arrows walk the lesson's steps (lessons.js).
+    if (focus && focus.closest && focus.closest('#lessons-panel')) return;
     if (event.altKey || event.ctrlKey || event.metaKey) return;
     const keys = { ArrowLeft: () => step(state.step - 1), ArrowRight: () => step(state.step + 1), Home: () => step(0), End: () => step(Infinity) };
     if (!keys[event.key]) return;

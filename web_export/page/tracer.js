@@ -80,5 +80,8 @@ export function makeTracer(M) {
       checked(callText('promyk_legend', [lang]));
     },
     messages: (lang) => checked(callText('promyk_messages', [lang])),
+    // The lessons of a language, and one lesson run by the C++ lesson runner as HTML.
+    lessons: (lang) => checked(callText('promyk_lessons', [lang])),
+    lesson: (name, options) => checked(callText('promyk_lesson', [name, JSON.stringify(options)])),
   };
 }

@@ -16,6 +16,8 @@
 #include <nlohmann/json.hpp>
 
 #include "image/map_colours.hpp"
+#include "lesson/lesson_library.hpp"
+#include "lesson/lesson_run.hpp"
 #include "render/kernel.hpp"
 #include "render/maps.hpp"
 #include "render/trace_pixel.hpp"
@@ -59,6 +61,7 @@ struct RowKernel {
 struct State {
     std::string answer;  // the last result, owned here
     std::optional<Scene> scene;
+    std::string scene_file;  // the name promyk_open_scene was given, for lessons' "::: scene FILE"
     int w = 0;
     std::optional<TraceFile> traces;
     RowKernel rows;                    // made for `scene`; reset when another opens
@@ -373,6 +376,32 @@ json make_view(PixelTrace trace, const View& view) {
     return out;
 }
 
+// ---- lessons -----------------------------------------------------------------
+
+// The pixels argument: [[i, j], ...], each inside a pane of w.
+std::vector<LessonPixel> pixels_of(const nlohmann::json& j, int w) {
+    std::vector<LessonPixel> pixels;
+    if (!j.contains("pixels")) return pixels;
+    const nlohmann::json& list = j.at("pixels");
+    const auto bad = [] { return UsageError(ui_message("wasm_bad_argument", {{"name", "lesson.pixels"}, {"problem", "not [[i, j], ...]"}})); };
+    if (!list.is_array()) throw bad();
+    for (const nlohmann::json& p : list) {
+        if (!p.is_array() || p.size() != 2 || !p[0].is_number_integer() || !p[1].is_number_integer()) throw bad();
+        const int i = p[0].get<int>(), jj = p[1].get<int>();
+        if (i < 0 || jj < 0 || i >= w || jj >= w)
+            throw UsageError(ui_message(
+                "wasm_bad_pixel", {{"i", std::to_string(i)}, {"j", std::to_string(jj)}, {"w", std::to_string(w)}}));
+        pixels.push_back({i, jj});
+    }
+    return pixels;
+}
+
+// A file name without its folders ("lessons/scenes/x.json" -> "x.json").
+std::string base_name(const std::string& path) {
+    const std::size_t slash = path.find_last_of("/\\");
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
 }  // namespace
 
 extern "C" {
@@ -400,6 +429,7 @@ PROMYK_EXPORT const char* promyk_open_scene(const char* scene_json, const char* 
         out["scene_content"] = json::parse(scene_to_json(scene, SceneDefaults::written));
         state().rows = RowKernel{};  // made for the scene it replaces
         state().scene = std::move(scene);
+        state().scene_file = scene_file && *scene_file ? scene_file : "";
         state().w = w;
         return out.dump();
     });
@@ -599,6 +629,82 @@ PROMYK_EXPORT const char* promyk_messages(const char* lang) {
             branches[b.branch] = language == Language::pl ? b.pl : b.en;
         return json{{"lang", std::string(language_code(language))}, {"messages", messages},
                     {"vocabulary", vocabulary}, {"branches", branches}}
+            .dump();
+    });
+}
+
+PROMYK_EXPORT const char* promyk_lessons(const char* lang) {
+    return answer([&] {
+        const Language language = language_of(lang ? lang : "en");
+        set_ui_language(language);
+        const LessonLibrary library;
+        std::vector<LessonProblem> problems;
+        json lessons = json::array();
+        for (const Lesson& lesson : library.lessons(problems)) {
+            if (lesson.language != language) continue;
+            const Scene scene = library.scene(lesson.header.scene);
+            json pixels = json::array();
+            for (const LessonPixel& p : lesson.header.pixels) pixels.push_back({p.i, p.j});
+            lessons.push_back({{"name", lesson.header.name}, {"title", lesson.header.title},
+                               {"summary", lesson.header.summary}, {"scene", lesson.header.scene},
+                               {"scene_name", scene.name}, {"scene_hash", scene_hash(scene)},
+                               {"w", lesson.header.w}, {"pixels", pixels}, {"effect", lesson.header.effect},
+                               {"steps", lesson.steps.size()}});
+        }
+        return json{{"lang", std::string(language_code(language))}, {"lessons", lessons}}.dump();
+    });
+}
+
+PROMYK_EXPORT const char* promyk_lesson(const char* name, const char* options_json) {
+    return answer([&] {
+        const nlohmann::json j = object_argument(options_json, "lesson");
+        const Language language = language_of(string_field(j, "lang", "en", "lesson"));
+        set_ui_language(language);
+        const std::string where = string_field(j, "scene", "own", "lesson");
+        if (where != "own" && where != "open")
+            throw UsageError(ui_message("wasm_bad_argument", {{"name", "lesson.scene"}, {"problem", where}}));
+        const LessonLibrary library;
+        const std::string wanted = name ? name : "";
+        const std::optional<Lesson> found = library.find(wanted, language);
+        if (!found) throw UsageError(ui_message("wasm_bad_argument", {{"name", "lesson"}, {"problem", wanted}}));
+        const Lesson& lesson = *found;
+        require_runnable(lesson);
+        const Scene own = library.scene(lesson.header.scene);
+        // "open": the page's scene at the page's w, the lesson's own when it is
+        // the same scene (by hash), else another scene as `lesson --scene FILE`.
+        const bool open = where == "open";
+        const Scene& scene = open ? open_scene() : own;
+        LessonRunOptions options;
+        options.w = open ? state().w : lesson.header.w;
+        options.own_scene = !open || scene_hash(scene) == scene_hash(own);
+        options.scene_file = options.own_scene ? lesson.header.scene : base_name(state().scene_file);
+        options.pixels = pixels_of(j, options.w);
+        if (options.pixels.empty())
+            for (const LessonPixel& pixel : lesson.header.pixels) {
+                if (pixel.i >= options.w || pixel.j >= options.w)
+                    throw UsageError(ui_message("lesson_pixel_outside", {{"i", std::to_string(pixel.i)},
+                                                                         {"j", std::to_string(pixel.j)},
+                                                                         {"w", std::to_string(options.w)}}));
+                options.pixels.push_back(pixel);
+            }
+        options.digits = lesson.header.digits;
+        if (j.contains("digits")) {
+            if (!j.at("digits").is_number_integer() || j.at("digits").get<int>() < 0 || j.at("digits").get<int>() > 40)
+                throw UsageError(ui_message("wasm_bad_argument", {{"name", "lesson.digits"}, {"problem", "not 0 ... 40"}}));
+            options.digits = j.at("digits").get<int>();
+        }
+        options.real = lesson_real(lesson);
+        options.formula = lesson_formula(lesson);
+        if (options.real == RealType::long_double) throw UsageError(ui_message("wasm_no_long_double"));
+        options.spp = lesson.header.spp;
+        options.format = LessonFormat::html;
+        LessonRun run(lesson, scene, options);
+        json pixels = json::array();
+        for (const LessonPixel& p : options.pixels) pixels.push_back({p.i, p.j});
+        return json{{"name", lesson.header.name}, {"lang", std::string(language_code(language))},
+                    {"title", lesson.header.title}, {"scene", scene.name}, {"scene_file", options.scene_file},
+                    {"own_scene", options.own_scene}, {"w", options.w}, {"pixels", pixels},
+                    {"steps", lesson.steps.size()}, {"html", run.document()}}
             .dump();
     });
 }
