@@ -5,10 +5,12 @@
 #include "render/article_row_lanes.hpp"
 #include "render/article_row_isa.hpp"
 
-namespace promyk::lanes::avx512 {
+namespace promyk::lanes {
+inline namespace avx512 {  // inline, as lanes.hpp opened it in this file
 
 RowCounts draw_article_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out) {
     return draw_row<Double8>(row, x_E, w, out);
 }
 
-}  // namespace promyk::lanes::avx512
+}  // namespace avx512
+}  // namespace promyk::lanes

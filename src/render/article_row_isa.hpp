@@ -15,11 +15,20 @@ template <class Real>
 struct ArticleRow;
 
 // Row `row` into out[0 .. w); x_E[j] = pane_x(j, w) for the whole pane.
+// (In a set's own file lanes.hpp has opened its namespace as inline; naming
+// it here without `inline` is allowed and keeps it inline, but clang warns.)
+#if defined(__clang__)
+#pragma clang diagnostic push
+#pragma clang diagnostic ignored "-Winline-namespace-reopened-noninline"
+#endif
 namespace avx2 {
 RowCounts draw_article_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out);
 }
 namespace avx512 {
 RowCounts draw_article_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out);
 }
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
 
 }  // namespace promyk::lanes
