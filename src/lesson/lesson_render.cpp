@@ -409,6 +409,15 @@ std::string text_part(const LessonView& view, const LessonPart& part, const Pixe
     return "";
 }
 
+// A value table's row label in TeX (Markdown's and HTML's tables): the
+// vocabulary's formula for the key, else its symbol, else the key itself.
+std::string row_math(const LessonView& view, const std::string& key) {
+    const VocabularyEntry* entry = view.vocabulary.find(path_key(key));
+    if (entry == nullptr) return split_settings(key).first;
+    std::string math = row_formula(view, key, *entry, true);
+    return math.empty() ? entry->latex : math;
+}
+
 // --- Markdown -------------------------------------------------------------
 
 std::string markdown_values(const LessonView& view, const LessonPart& part) {
@@ -419,12 +428,7 @@ std::string markdown_values(const LessonView& view, const LessonPart& part) {
     for (std::size_t c = 0; c < view.traces.size(); ++c) out += "---|";
     out += "\n";
     for (const std::string& key : expanded_keys(view, part.keys)) {
-        const VocabularyEntry* entry = view.vocabulary.find(path_key(key));
-        std::string math = split_settings(key).first;
-        if (entry != nullptr) {
-            math = row_formula(view, key, *entry, true);
-            if (math.empty()) math = entry->latex;
-        }
+        std::string math = row_math(view, key);
         // A | would end the table's cell: LaTeX's \vert draws the same bar.
         for (std::size_t bar = math.find('|'); bar != std::string::npos; bar = math.find('|', bar))
             math.replace(bar, 1, "\\vert ");
@@ -472,12 +476,7 @@ std::string html_values(const LessonView& view, const LessonPart& part) {
         out += "<th scope=\"col\">" + html_escape(pixel_label(view, trace)) + "</th>";
     out += "</tr></thead>\n<tbody>\n";
     for (const std::string& key : expanded_keys(view, part.keys)) {
-        const VocabularyEntry* entry = view.vocabulary.find(path_key(key));
-        std::string math = split_settings(key).first;
-        if (entry != nullptr) {
-            math = row_formula(view, key, *entry, true);
-            if (math.empty()) math = entry->latex;
-        }
+        std::string math = row_math(view, key);
         out += "<tr><th scope=\"row\">" + html_math(math) + html_escape(group_suffix(view, key)) + "</th>";
         for (const PixelTrace& trace : view.traces) {
             const std::optional<LessonNumber> number = lesson_number(view, trace, key);
