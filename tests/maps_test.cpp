@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <png.h>
+#include <unistd.h>
 
 #include <fmt/format.h>
 
@@ -12,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <fstream>
 #include <optional>
 #include <set>
 #include <utility>
@@ -424,4 +426,29 @@ TEST_CASE("the digits-lost map colours each pixel by the most digits its trace l
             CHECK(hex(image.at(i, j)) == hex(most > 0 ? scale(most) : none_lost_colour().rgb));
         }
     }
+}
+
+namespace {
+// This process's resident memory in bytes, from /proc/self/statm.
+long long resident_bytes() {
+    std::ifstream statm("/proc/self/statm");
+    long long pages = 0, resident = 0;
+    statm >> pages >> resident;
+    return resident * static_cast<long long>(sysconf(_SC_PAGESIZE));
+}
+}  // namespace
+
+TEST_CASE("A deferred error map touches no memory before its rows are computed", "[maps][interrupt]") {
+    // w 4096 keeps 128 MB of values; zero-filling them up front took most of
+    // a second in which SIGINT went unseen (hostile run). Each pixel is
+    // written by its row, so making the map must not make those pages resident.
+    const int w = 4096;
+    const long long before = resident_bytes();
+    REQUIRE(before > 0);
+    const std::unique_ptr<MapKernel> map =
+        make_map_kernel(MapKind::error, article_scene(), RealType::double_, Formula::article, 1, w);
+    REQUIRE(map->deferred());
+    const long long grown = resident_bytes() - before;
+    INFO("resident memory grew by " << grown << " bytes");
+    CHECK(grown < 32LL * 1024 * 1024);
 }

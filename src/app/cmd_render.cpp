@@ -38,6 +38,7 @@
 #include "trace/messages.hpp"
 #include "trace/number_text.hpp"
 #include "util/errors.hpp"
+#include "util/interrupt.hpp"
 #include "util/printable.hpp"
 #include "util/wrap.hpp"
 #include "util/output_file.hpp"
@@ -435,6 +436,7 @@ int run_render(const RenderOptions& options) {
         image = open_image();
         std::vector<std::uint8_t> row(static_cast<std::size_t>(options.w) * 3);
         for (int i = 0; i < options.w; ++i) {
+            throw_if_interrupted();  // colouring and compressing w rows takes seconds at w 4096
             map->replay_row(options.w, i, row.data());
             image->write_rows(row.data(), 1);
         }

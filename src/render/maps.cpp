@@ -156,7 +156,12 @@ public:
     ScalarMap(std::unique_ptr<Kernel> kernel, int w, std::optional<ColourScale> scale, const LegendColour& zero,
               bool compares)
         : MapOf(std::move(kernel), w), scale_(scale), zero_(zero), compares_(compares), w_(w) {
-        if (!scale_) stored_.resize(static_cast<std::size_t>(w) * static_cast<std::size_t>(w));
+        // Not zero-filled: at w 4096 writing 128 MB of zeros up front took most of a
+        // second in which a signal went unseen; every pixel is written by its row.
+        if (!scale_) {
+            stored_size_ = static_cast<std::size_t>(w) * static_cast<std::size_t>(w);
+            stored_.reset(new double[stored_size_]);
+        }
     }
 
     RowCounts row(int w, int i, std::uint8_t* out) const override {
@@ -180,12 +185,13 @@ public:
         return counts;
     }
 
-    bool deferred() const override { return stored_.size() > 0; }
+    bool deferred() const override { return stored_size_ > 0; }
     const ColourScale* colour_scale() const override { return scale_ ? &*scale_ : nullptr; }
 
     void settle() override {
         double smallest = 0, largest = 0;
-        for (const double v : stored_) {
+        for (std::size_t k = 0; k < stored_size_; ++k) {
+            const double v = stored_[k];
             if (!(v > 0)) continue;
             if (smallest == 0 || v < smallest) smallest = v;
             largest = std::max(largest, v);
@@ -304,7 +310,8 @@ private:
     const LegendColour& zero_;
     bool compares_;
     int w_;
-    mutable std::vector<double> stored_;  // deferred: one a pixel, each row written by one thread
+    std::unique_ptr<double[]> stored_;  // deferred: one a pixel, each row written by one thread
+    std::size_t stored_size_ = 0;
 };
 
 // |I - I_ref|, the largest over r, g, b, against the same pixel in quad with
