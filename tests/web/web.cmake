@@ -42,3 +42,14 @@ if(NOT PROMYK_SANITIZE AND PROMYK_WEB_PAGE_BUILT)
                    "${PROMYK_NPM_MODULES}" "${PROJECT_SOURCE_DIR}/lessons" "${CMAKE_CURRENT_BINARY_DIR}/web/lessons")
   set_tests_properties(web.lessons PROPERTIES TIMEOUT 600)
 endif()
+
+# Touch (tests/web/touch_test.mjs, issue 17): at 1024 × 768 with touch, a
+# tap selects a pixel, steps the derivation and a lesson, edits a field; one
+# finger turns the 3D view and two pinch it; a phone still shows the image
+# and the derivation.
+if(NOT PROMYK_SANITIZE AND PROMYK_WEB_PAGE_BUILT)
+  add_test(NAME web.touch
+           COMMAND "${PROMYK_NODE}" "${CMAKE_CURRENT_SOURCE_DIR}/web/touch_test.mjs" $<TARGET_FILE:promyk>
+                   "${PROMYK_NPM_MODULES}" "${PROJECT_SOURCE_DIR}/lessons" "${CMAKE_CURRENT_BINARY_DIR}/web/touch")
+  set_tests_properties(web.touch PROPERTIES TIMEOUT 600)
+endif()

@@ -47,17 +47,40 @@ export class View3D {
   }
 
   bindControls() {
-    let drag = null;
+    // Pointers down on the canvas (mouse, pen or fingers): one turns the view,
+    // two pinch it nearer or farther (a tablet has no wheel). The canvas's
+    // touch-action: none keeps the browser from scrolling the page instead.
+    const down = new Map(); // pointerId -> {x, y}
+    let spread = 0; // the two fingers' distance at the last move
+    const distance = () => {
+      const [a, b] = [...down.values()];
+      return Math.hypot(a.x - b.x, a.y - b.y);
+    };
     this.canvas.addEventListener('pointerdown', (event) => {
-      drag = { x: event.clientX, y: event.clientY };
+      down.set(event.pointerId, { x: event.clientX, y: event.clientY });
       this.canvas.setPointerCapture(event.pointerId);
+      if (down.size === 2) spread = distance();
     });
     this.canvas.addEventListener('pointermove', (event) => {
-      if (!drag) return;
-      this.turn((event.clientX - drag.x) * -0.01, (event.clientY - drag.y) * -0.01);
-      drag = { x: event.clientX, y: event.clientY };
+      const last = down.get(event.pointerId);
+      if (!last) return;
+      const now = { x: event.clientX, y: event.clientY };
+      down.set(event.pointerId, now);
+      if (down.size === 1) {
+        this.turn((now.x - last.x) * -0.01, (now.y - last.y) * -0.01);
+      } else if (down.size === 2) {
+        const apart = distance();
+        // Fingers moving apart bring the view nearer, as on a map.
+        if (spread > 0 && apart > 0) this.zoom(spread / apart);
+        spread = apart;
+      }
     });
-    this.canvas.addEventListener('pointerup', () => (drag = null));
+    const up = (event) => {
+      down.delete(event.pointerId);
+      spread = down.size === 2 ? distance() : 0;
+    };
+    this.canvas.addEventListener('pointerup', up);
+    this.canvas.addEventListener('pointercancel', up);
     this.canvas.addEventListener('wheel', (event) => {
       event.preventDefault();
       this.zoom(event.deltaY > 0 ? 1.1 : 1 / 1.1);
