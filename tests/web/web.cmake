@@ -53,3 +53,12 @@ if(NOT PROMYK_SANITIZE AND PROMYK_WEB_PAGE_BUILT)
                    "${PROMYK_NPM_MODULES}" "${PROJECT_SOURCE_DIR}/lessons" "${CMAKE_CURRENT_BINARY_DIR}/web/touch")
   set_tests_properties(web.touch PROPERTIES TIMEOUT 600)
 endif()
+
+# A browser without WebGL (tests/web/no_webgl_test.mjs): the page opens
+# without the 3D view, says why, and lists what it would draw in words.
+if(NOT PROMYK_SANITIZE AND PROMYK_WEB_PAGE_BUILT)
+  add_test(NAME web.no_webgl
+           COMMAND "${PROMYK_NODE}" "${CMAKE_CURRENT_SOURCE_DIR}/web/no_webgl_test.mjs" $<TARGET_FILE:promyk>
+                   "${PROMYK_NPM_MODULES}" "${PROJECT_SOURCE_DIR}/lessons" "${CMAKE_CURRENT_BINARY_DIR}/web/no_webgl")
+  set_tests_properties(web.no_webgl PROPERTIES TIMEOUT 300)
+endif()

@@ -492,7 +492,7 @@ async function start() {
       'formula-label': 'page_formula', 'spp-label': 'page_spp', 'compare-label': 'page_compare',
       'full-digits-label': 'page_full_digits', 'step-first': 'page_first', 'step-prev': 'page_prev',
       'step-next': 'page_next', 'step-last': 'page_last', 'keys-hint': 'page_keys_hint', 'view-heading': 'page_view3d',
-      'view-hint': 'page_view3d_hint', 'view-list-title': 'page_view_list_title', notices: 'page_notices',
+      'view-hint': view3d.available ? 'page_view3d_hint' : 'page_view3d_no_webgl', 'view-list-title': 'page_view_list_title', notices: 'page_notices',
       'scene-heading': 'edit_heading', 'scene-intro': 'edit_intro', 'scene-copy': 'edit_copy',
       'scene-download': 'edit_download', 'scene-reset': 'edit_reset', 'scene-invalid': 'edit_invalid',
     };

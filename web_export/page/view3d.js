@@ -28,8 +28,25 @@ export class View3D {
     this.canvas = canvas;
     this.labels = labels;
     this.list = list; // what is drawn, in words (and for a reader without the canvas)
-    this.renderer = new WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
-    this.renderer.setClearColor(0xf4f4f0);
+    // A browser without WebGL (switched off, or no graphics driver: Firefox
+    // headless here) still gets the rest of the page and the list of what the
+    // view would draw, in words; the canvas is hidden (available: false).
+    // Asked of a scratch canvas first: three.js reports a failure on the
+    // console before it throws, and the page's own canvas keeps its options.
+    const webgl2 = document.createElement('canvas').getContext('webgl2');
+    try {
+      if (!webgl2) throw new Error('no WebGL 2');
+      this.renderer = new WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+      this.renderer.setClearColor(0xf4f4f0);
+    } catch {
+      this.renderer = null;
+    }
+    this.available = this.renderer !== null;
+    if (!this.available) {
+      canvas.hidden = true;
+      canvas.parentElement.hidden = true; // the frame and its labels
+      canvas.removeAttribute('tabindex');
+    }
     this.scene = new Scene();
     this.scene.add(new AmbientLight(0xffffff, 1.2));
     const sun = new DirectionalLight(0xffffff, 1.5);
@@ -370,7 +387,7 @@ export class View3D {
     if (!this.frame) return;
     cancelAnimationFrame(this.frame);
     this.frame = 0;
-    if (!this.canvas.isConnected || this.canvas.getClientRects().length === 0) return;
+    if (!this.available || !this.canvas.isConnected || this.canvas.getClientRects().length === 0) return;
     const width = this.canvas.clientWidth || 400;
     const height = this.canvas.clientHeight || 300;
     this.renderer.setPixelRatio(window.devicePixelRatio || 1);
