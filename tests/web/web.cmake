@@ -62,3 +62,13 @@ if(NOT PROMYK_SANITIZE AND PROMYK_WEB_PAGE_BUILT)
                    "${PROMYK_NPM_MODULES}" "${PROJECT_SOURCE_DIR}/lessons" "${CMAKE_CURRENT_BINARY_DIR}/web/no_webgl")
   set_tests_properties(web.no_webgl PROPERTIES TIMEOUT 300)
 endif()
+
+# The keyboard (tests/web/keyboard_test.mjs, issue 17): Tab reaches every
+# control a reader can see, each with a visible focus ring; Enter, Space and
+# the arrows work them.
+if(NOT PROMYK_SANITIZE AND PROMYK_WEB_PAGE_BUILT)
+  add_test(NAME web.keyboard
+           COMMAND "${PROMYK_NODE}" "${CMAKE_CURRENT_SOURCE_DIR}/web/keyboard_test.mjs" $<TARGET_FILE:promyk>
+                   "${PROMYK_NPM_MODULES}" "${PROJECT_SOURCE_DIR}/lessons" "${CMAKE_CURRENT_BINARY_DIR}/web/keyboard")
+  set_tests_properties(web.keyboard PROPERTIES TIMEOUT 600)
+endif()
