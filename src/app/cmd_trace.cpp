@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "app/commands.hpp"
 #include "app/common_options.hpp"
 #include "app/trace_limit.hpp"
+#include "render/scene_report.hpp"
 #include "render/trace_pixel.hpp"
 #include "trace/messages.hpp"
 #include "trace/trace_compare.hpp"
@@ -21,6 +23,7 @@
 #include "util/errors.hpp"
 #include "util/printable.hpp"
 #include "util/text.hpp"
+#include "util/wrap.hpp"
 #include "util/standard_output.hpp"
 
 namespace promyk::app {
@@ -69,6 +72,17 @@ int run_trace(const TraceOptions& options) {
     const cli::Pixel pixel = cli::parse_pixel(options.pixel, "--pixel", options.w);
     const Scene scene = cli::load_scene_option(options.scene_file);
     const Language language = ui_language();
+    // A scene too small for float's unit vectors: the reason beside a float
+    // trace whose K̂ comes out short (double and wider compute it right).
+    bool float_traced = options.real == RealType::float_;
+    if (!options.compare.empty()) {
+        const std::vector<RealType> types = compared_types(options.compare);
+        float_traced = std::find(types.begin(), types.end(), RealType::float_) != types.end();
+    }
+    if (float_traced)
+        if (const std::optional<std::string> warning = float_range_warning(scene))
+            fmt::print(stderr, "{}\n",
+                       wrap_text("promyk: " + printable(ui_message("scene_warning", {{"text", *warning}})), 4));
     // The trace's size, estimated from the scene before anything is traced.
     TraceCost cost;
     cost.scene = &scene;

@@ -208,7 +208,7 @@ void add_geometry_warnings(const Scene& scene, SceneReport& report) {
 // The smallest size of a number other than 0 among the positions and
 // lengths (as the loader checks them against min_scene_magnitude), with its
 // JSON pointer; below min_float_magnitude float's unit vectors come out short.
-void add_float_range_warning(const Scene& scene, SceneReport& report) {
+std::optional<std::string> float_range_warning_of(const Scene& scene) {
     double smallest = scene.z_E;
     std::string where = "/z_E";
     const auto consider = [&](double x, const std::string& pointer) {
@@ -228,10 +228,14 @@ void add_float_range_warning(const Scene& scene, SceneReport& report) {
     }
     for (std::size_t k = 0; k < scene.planes.size(); ++k) consider_point(scene.planes[k].Q, "/planes/" + index(k) + "/Q");
     for (std::size_t l = 0; l < scene.lights.size(); ++l) consider_point(scene.lights[l].L, "/lights/" + index(l) + "/L");
-    if (std::fabs(smallest) < scene_detail::min_float_magnitude)
-        report.warnings.push_back(warning("scene_warn_float_small", {{"value", fmt::format("{}", smallest)},
-                                                                     {"where", where},
-                                                                     {"limit", fmt::format("{}", scene_detail::min_float_magnitude)}}));
+    if (!(std::fabs(smallest) < scene_detail::min_float_magnitude)) return std::nullopt;
+    return warning("scene_warn_float_small", {{"value", fmt::format("{}", smallest)},
+                                              {"where", where},
+                                              {"limit", fmt::format("{}", scene_detail::min_float_magnitude)}});
+}
+
+void add_float_range_warning(const Scene& scene, SceneReport& report) {
+    if (std::optional<std::string> text = float_range_warning_of(scene)) report.warnings.push_back(std::move(*text));
 }
 
 void add_probe_warnings(const Scene& scene, int probe_w, SceneReport& report) {
@@ -271,5 +275,7 @@ SceneReport report_scene(const Scene& scene, int probe_w) {
     add_probe_warnings(scene, probe_w, report);
     return report;
 }
+
+std::optional<std::string> float_range_warning(const Scene& scene) { return float_range_warning_of(scene); }
 
 }  // namespace promyk

@@ -3,6 +3,7 @@
 // about scenes that are legal but surprising.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,5 +27,10 @@ struct SceneReport {
 // surface faces, non-finite numbers) come from a `probe_w` × `probe_w` pane
 // that scene_report.cpp samples with its own small ray-object code.
 SceneReport report_scene(const Scene& scene, int probe_w = 64);
+
+// The report's warning that a number of the scene is too small for float's
+// unit vectors (under 1e-12, legal in double), or nothing: what `trace --real
+// float` says beside a trace whose K̂ or V̂ come out short.
+std::optional<std::string> float_range_warning(const Scene& scene);
 
 }  // namespace promyk

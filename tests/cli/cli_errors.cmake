@@ -88,6 +88,15 @@ promyk_cli_test(render_light_inside_warns ARGS render --scene ${scenes}/light_in
                 FILES i.png STDOUT "^$" STDERR "promyk: warning: light 0 is inside sphere 0: no point of the sphere's outside faces it")
 promyk_cli_test(render_light_inside_warns_pl ARGS render --lang pl --scene ${scenes}/light_inside.json --w 8 -o i.png EXIT 0
                 STDOUT "^$" STDERR "promyk: ostrzeżenie: światło 0 jest wewnątrz kuli 0")
+# A scene legal in double but too small for float's unit vectors: a float
+# trace (or a comparison with float) says why beside it; a double one is quiet.
+promyk_cli_test(trace_float_tiny_warns ARGS trace --scene ${scenes}/tiny_for_float.json --pixel 4,4 --real float EXIT 0
+                STDOUT "numbers: float, formula: article" STDERR "^promyk: warning: the smallest number other than 0 in the scene is 1e-20 \\(/lights/0/L/1\\): in float")
+promyk_cli_test(trace_float_tiny_compare_warns ARGS trace --scene ${scenes}/tiny_for_float.json --pixel 4,4 --compare float,quad
+                EXIT 0 STDERR "in float \\(--real float\\) the squares of lengths this small")
+promyk_cli_test(trace_float_tiny_pl ARGS trace --lang pl --scene ${scenes}/tiny_for_float.json --pixel 4,4 --real float EXIT 0
+                STDERR "^promyk: ostrzeżenie: ")
+promyk_cli_test(trace_double_tiny_quiet ARGS trace --scene ${scenes}/tiny_for_float.json --pixel 4,4 EXIT 0 STDERR "^$")
 promyk_cli_test(render_no_warning ARGS render --scene ${PROJECT_SOURCE_DIR}/lessons/scenes/everything.json --w 8 -o i.png
                 EXIT 0)
 set_tests_properties(cli.render_no_warning PROPERTIES FAIL_REGULAR_EXPRESSION "warning")
