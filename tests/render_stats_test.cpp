@@ -43,7 +43,10 @@ TEST_CASE("render counts pixels by branch, rays and sphere tests", "[render-stat
             CHECK(stats.count(Branch::non_finite) == 0);
             CHECK(stats.first_non_finite_i == -1);
             CHECK(stats.primary_rays == static_cast<long long>(e.w) * e.w);
-            CHECK(stats.sphere_tests == static_cast<long long>(e.w) * e.w);
+            // Each pixel is tested, or skipped as proven background (only misses are).
+            CHECK(stats.sphere_tests + stats.skipped == static_cast<long long>(e.w) * e.w);
+            CHECK(stats.skipped > 0);
+            CHECK(stats.skipped <= e.miss);
             CHECK(stats.rows_computed == e.w);
             CHECK(sink.rows == e.w);
         }

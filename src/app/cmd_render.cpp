@@ -298,6 +298,7 @@ void print_stats(const RenderStats& stats, const Scene& scene, int spp) {
                                           {"shadow", std::to_string(stats.shadow_rays)}}));
     line(ui_message("render_stats_tests",
                     {{"spheres", std::to_string(stats.sphere_tests)}, {"planes", std::to_string(stats.plane_tests)}}));
+    if (stats.skipped > 0) line(ui_message("render_stats_skipped", {{"count", std::to_string(stats.skipped)}}));
     line(ui_message("render_stats_pixels", {{"miss", std::to_string(stats.count(Branch::miss))},
                                             {"dark", std::to_string(stats.count(Branch::dark))},
                                             {"lit", std::to_string(stats.count(Branch::lit))},

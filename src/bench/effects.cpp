@@ -97,7 +97,8 @@ int run_effects_bench(const EffectsOptions& options) {
                      {ui_message("bench_col_x_article")},
                      {ui_message("bench_col_shadow_rays")},
                      {ui_message("bench_col_sphere_tests")},
-                     {ui_message("bench_col_plane_tests")}});
+                     {ui_message("bench_col_plane_tests")},
+                     {ui_message("bench_col_skipped")}});
     std::vector<std::string> problems;
     for (std::size_t k = 0; k < scenes.size(); ++k) {
         const Timing& t = timings[k];
@@ -107,7 +108,8 @@ int run_effects_bench(const EffectsOptions& options) {
                        t.timed && article.timed ? fixed(t.median_seconds_per_unit / article.median_seconds_per_unit, 2) : "-",
                        fixed(static_cast<double>(s.shadow_rays) / pixels, 3),
                        fixed(static_cast<double>(s.sphere_tests) / pixels, 3),
-                       fixed(static_cast<double>(s.plane_tests) / pixels, 3)});
+                       fixed(static_cast<double>(s.plane_tests) / pixels, 3),
+                       fixed(static_cast<double>(s.skipped) / pixels, 3)});
     }
     print_standard_output("{}", table.text());
     if (!problems.empty()) print_standard_output("\n");

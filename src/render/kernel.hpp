@@ -27,6 +27,7 @@ struct RowCounts {
     long long shadow_rays = 0;
     long long sphere_tests = 0;
     long long plane_tests = 0;
+    int skipped = 0;  // pixels drawn as background without a test (render/silhouette.hpp)
 };
 
 class Kernel {

@@ -137,6 +137,7 @@ void count(const Band& band, int w, int spp, RenderStats& stats) {
         stats.shadow_rays += row.shadow_rays;
         stats.sphere_tests += row.sphere_tests;
         stats.plane_tests += row.plane_tests;
+        stats.skipped += row.skipped;
         if (row.first_non_finite_j >= 0 && stats.first_non_finite_i < 0) {
             stats.first_non_finite_i = band.first_row + k;
             stats.first_non_finite_j = row.first_non_finite_j;

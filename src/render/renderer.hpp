@@ -32,6 +32,7 @@ struct RenderStats {
     long long shadow_rays = 0;    // one per light a hit faces, when the scene asks for shadows
     long long sphere_tests = 0;   // ray-sphere intersection tests (primary and shadow rays)
     long long plane_tests = 0;    // ray-plane intersection tests
+    long long skipped = 0;        // pixels proven background without a test (render/silhouette.hpp)
     long long branches[branch_count] = {};  // pixels per Branch (a pixel's is its centre sample's)
     long long disagreeing = 0;  // pixels whose samples took different branches (spp > 1)
     int first_non_finite_i = -1, first_non_finite_j = -1;  // in row order; -1 if none

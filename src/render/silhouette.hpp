@@ -1,0 +1,127 @@
+// Background skipping for the article's scene: where a row of the pane
+// meets the sphere's silhouette, so that the pixels outside it are drawn as
+// background without computing them. A pixel is skipped only when it is
+// proven that the kernel's own Δ/4 (render/article_lanes.hpp: C·C − |E|²·
+// (|S|² − r²), rounded as it rounds) is negative there: skipping never
+// changes a pixel (tests/silhouette_test.cpp: every pixel against the
+// kernel, on tangent scenes too).
+//
+// Along a row (y_E, z_E fixed) the exact Δ/4 is a quadratic in x_E,
+//   Δ(x) = (x_S·x + c0)² − (x² + k)·m,   c0 = y_E y_S + z_E z_S, k = y_E² + z_E², m = |S|² − r²,
+// whose x² coefficient r² − y_S² − z_S² is negative when the sphere does not
+// cover the eye's line of sight along x (the article's scene: 1.21 − 10.24).
+// Then Δ rises to its vertex x_v and falls after it, and a pixel j with
+// Δ̂(x_j) + 2e < 0, e the bound on the kernel's rounding error over the row,
+// and the slope Δ'(x_j) proven to point away from the others (so that they
+// are farther down the same side of the vertex), proves them misses too:
+//   Δ̂(x) ≤ Δ(x) + e ≤ Δ(x_j) + e ≤ Δ̂(x_j) + 2e < 0.
+// The row's roots say where to look; a pixel two columns outside each root
+// is checked (and, if that fails, a few farther out); otherwise nothing is
+// skipped on that side.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "render/article_lanes.hpp"
+
+namespace promyk {
+
+// The columns [lo, hi) that are computed; every other column of the row is
+// a proven miss (lo may equal hi: the whole row is background).
+struct RowSpan {
+    int lo = 0, hi = 0;
+};
+
+namespace silhouette_detail {
+
+// Δ̂ at x as the kernel computes it (the same products and sums, in the
+// same order); any evaluation of this shape is within row_error of Δ.
+inline double delta_hat(const lanes::ArticleRow<double>& row, double x) {
+    const double EE = (x * x + row.yy) + row.zz;
+    const double C = (x * row.world.S.x + row.ySy) + row.zSz;
+    return C * C - EE * row.SS_rr;
+}
+
+// A bound on |Δ̂(x) − Δ(x)| for |x| ≤ 1. Each of C, |E|² and |S|² − r² is
+// a short sum of rounded products (at most 5 roundings: γ5 of the sum of
+// the terms' sizes), and Δ̂ two products and a difference of those, so
+// |Δ̂ − Δ| ≤ γ12·(A² + |E|²·B) with A = |x x_S| + |y_E y_S| + |z_E z_S| and
+// B = |S|² + r². 64 units of roundoff instead of 12 cover the bound's own
+// rounding with room to spare; the last term covers underflow.
+inline double row_error(const lanes::ArticleRow<double>& row) {
+    const double u = std::numeric_limits<double>::epsilon() / 2;
+    const double A = std::fabs(row.world.S.x) + std::fabs(row.ySy) + std::fabs(row.zSz);
+    const double EE = (1 + row.yy) + row.zz;
+    const double B = row.SS + row.world.r * row.world.r;
+    return 64 * u * (A * A + EE * B) + 1e-290;
+}
+
+}  // namespace silhouette_detail
+
+// The columns of a w-pixel row (x_E[j] = pane_x(j, w)) that may be hit; the
+// whole row when nothing can be proven (a sphere around the line of sight,
+// numbers near the ends of double's range).
+inline RowSpan row_hit_span(const lanes::ArticleRow<double>& row, const double* x_E, int w) {
+    using namespace silhouette_detail;
+    const RowSpan all{0, w};
+    const double xS = row.world.S.x;
+    // The quadratic's coefficients, exactly enough to find where to look.
+    const double a = row.world.r * row.world.r - (row.world.S.y * row.world.S.y + row.world.S.z * row.world.S.z);
+    const double scale = row.world.r * row.world.r + row.world.S.y * row.world.S.y + row.world.S.z * row.world.S.z;
+    if (!(a < -1e-6 * scale)) return all;  // not surely concave (or not finite)
+    const double c0 = row.ySy + row.zSz;
+    const double k = row.yy + row.zz;
+    const double b = 2 * xS * c0;
+    const double c = c0 * c0 - k * row.SS_rr;
+    const double x_v = -b / (2 * a);
+    const double e = row_error(row);
+    if (!std::isfinite(x_v) || !std::isfinite(e) || !std::isfinite(c)) return all;
+    // Where Δ = 0 (a root pair, or the vertex when the row misses the sphere).
+    double x1 = x_v, x2 = x_v;
+    const double disc = b * b - 4 * a * c;
+    if (disc > 0) {
+        const double root = std::sqrt(disc);
+        x1 = (-b + root) / (2 * a);  // a < 0: the smaller root
+        x2 = (-b - root) / (2 * a);
+    }
+    if (!std::isfinite(x1) || !std::isfinite(x2)) return all;
+    // Column of x (rounded down), clamped to [-1, w] before any conversion.
+    const auto column = [&](double x) {
+        const double j = std::floor(((x + 1) * w - 1) / 2);
+        return static_cast<int>(std::max(-1.0, std::min(static_cast<double>(w), j)));
+    };
+    // Which side of the vertex x lies on, proven: the slope Δ'(x) = 2a·x + b
+    // against its rounding error (a, b: sums of at most 3 and 4 rounded
+    // terms), with room to spare. x_v above only says where to look.
+    const double u = std::numeric_limits<double>::epsilon() / 2;
+    const double b_size = 2 * std::fabs(xS) * (std::fabs(row.ySy) + std::fabs(row.zSz));
+    const auto slope_sign = [&](double x) {
+        const double slope = 2 * a * x + b;
+        const double error = 64 * u * (2 * std::fabs(x) * scale + b_size) + 1e-290;
+        return slope > error ? 1 : slope < -error ? -1 : 0;
+    };
+    // Left of the vertex: the first column that proves itself and all before it.
+    RowSpan span = all;
+    for (int step = 2; step <= 32; step *= 4) {
+        const int j = std::min(column(x1) - step, w - 1);
+        if (j < 0) break;
+        if (slope_sign(x_E[j]) > 0 && delta_hat(row, x_E[j]) + 2 * e < 0) {
+            span.lo = j + 1;
+            break;
+        }
+    }
+    for (int step = 2; step <= 32; step *= 4) {
+        const int j = std::max(column(x2) + 1 + step, 0);
+        if (j > w - 1) break;
+        if (slope_sign(x_E[j]) < 0 && delta_hat(row, x_E[j]) + 2 * e < 0) {
+            span.hi = j;
+            break;
+        }
+    }
+    if (span.hi < span.lo) span.hi = span.lo;  // both sides proven: an empty row
+    return span;
+}
+
+}  // namespace promyk
