@@ -106,6 +106,9 @@ export class WorksheetPanel {
       if (!right && mark.verdict !== 'blank') input.setAttribute('aria-invalid', 'true');
     }
     this.other.replaceChildren(...other.map((text) => el('li', { textContent: text })));
+    // Lines of the file that are no blank's (none from the page's own form, as a rule).
+    if (other.length) this.other.setAttribute('aria-label', t('worksheet_page_other'));
+    else this.other.removeAttribute('aria-label');
     this.result.textContent = checked.summary;
     this.result.dataset.allRight = String(checked.all_right);
   }
