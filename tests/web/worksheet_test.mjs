@@ -8,7 +8,7 @@
 // reopens the lesson at its pixel, step and mode; axe-core finds no serious
 // or critical violation with a lesson in step mode and with a worksheet
 // checked; every control on the walk shows its focus. Both languages.
-// Leaves WORKDIR/worksheet_LANG.png to look at.
+// Leaves WORKDIR/worksheet_LANG.png and worksheet_print_LANG.png (print media) to look at.
 import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync, rmSync } from 'node:fs';
 import { join } from 'node:path';
@@ -165,6 +165,17 @@ for (const lang of ['en', 'pl']) {
   const summary = await page.textContent('#worksheet-result');
   await page.locator('#lessons-panel').screenshot({ path: join(work, `worksheet_${lang}.png`) });
   assert.deepEqual(await axeViolations(page), [], `axe-core, a checked worksheet (${lang})`);
+  // Printed, the worksheet keeps its fields (what was typed) without the page's buttons and marks.
+  await page.emulateMedia({ media: 'print' });
+  const printed = await page.evaluate(() => ({
+    bar: getComputedStyle(document.getElementById('worksheet-bar')).display,
+    controls: getComputedStyle(document.getElementById('lesson-controls')).display,
+    fields: [...document.querySelectorAll('#lesson-body input.blank-field')].filter((i) => getComputedStyle(i).display !== 'none').length,
+    marks: [...document.querySelectorAll('#lesson-body .mark')].filter((m) => getComputedStyle(m).display !== 'none').length,
+  }));
+  assert.deepEqual(printed, { bar: 'none', controls: 'none', fields: blanks.length, marks: 0 }, 'the printed worksheet');
+  await page.screenshot({ path: join(work, `worksheet_print_${lang}.png`), fullPage: true });
+  await page.emulateMedia({ media: 'screen' });
 
   // "Save answers" (Space) downloads the file; the CLI checks it with the same marks.
   await tabTo(page, '#worksheet-save');
