@@ -175,7 +175,15 @@ for (const lang of ['en', 'pl']) {
   }));
   assert.deepEqual(printed, { bar: 'none', controls: 'none', fields: blanks.length, marks: 0 }, 'the printed worksheet');
   await page.screenshot({ path: join(work, `worksheet_print_${lang}.png`), fullPage: true });
+  // The answer key shows only when the key is printed, with every blank's value.
+  const keyShown = () => page.$eval('#lesson-body .worksheet-key', (k) => getComputedStyle(k).display !== 'none');
+  assert.equal(await keyShown(), false, 'the printed worksheet shows its answer key');
+  await page.evaluate(() => { document.body.dataset.printing = 'key'; });
+  assert.equal(await keyShown(), true, 'the printed answer key lacks the key');
+  assert.equal(await page.$$eval('#lesson-body .worksheet-key li', (l) => l.length), blanks.length);
+  await page.evaluate(() => delete document.body.dataset.printing);
   await page.emulateMedia({ media: 'screen' });
+  assert.equal(await keyShown(), false, 'the answer key shows on the screen');
 
   // "Save answers" (Space) downloads the file; the CLI checks it with the same marks.
   await tabTo(page, '#worksheet-save');

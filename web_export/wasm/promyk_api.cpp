@@ -709,12 +709,14 @@ std::unique_ptr<LessonCall> lesson_call(const char* name, const char* options_js
         return call;
     }
     // The worksheet as `promyk lesson NAME --worksheet --format html` prints
-    // it: the blanks are fields, the answers left out, the answer file's form at the end.
+    // it with --key: the blanks are fields, the answers left out, the answer
+    // file's form at the end, then the answer key (the page shows it only
+    // when a teacher prints the key, as it shows a lesson's answers).
     LessonView& view = call->run->view();
     call->worksheet = std::make_unique<Worksheet>(view);
     call->html = render_lesson_title(view) + call->worksheet->intro();
     for (std::size_t k = 0; k < lesson.steps.size(); ++k) call->html += "\n" + call->worksheet->fields(render_step(view, k));
-    call->html += call->worksheet->answer_template();
+    call->html += call->worksheet->answer_template() + call->worksheet->answer_key();
     return call;
 }
 
