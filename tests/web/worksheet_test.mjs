@@ -202,6 +202,13 @@ for (const lang of ['en', 'pl']) {
   assert.ok(report.includes(squeezed(summary)), `the summary: ${summary}`);
   assert.ok((await page.textContent('#worksheet-result')).includes('--answers'), 'the saved note names the command');
 
+  // Shown again (the lesson's mode and back), the worksheet keeps what was typed.
+  await page.locator('#lesson-mode-lesson').check();
+  await page.waitForFunction(() => document.getElementById('lesson-body').dataset.mode === 'lesson');
+  await page.locator('#lesson-mode-worksheet').check();
+  await page.waitForFunction(() => document.getElementById('lesson-body').dataset.mode === 'worksheet');
+  for (const [n, value] of typed) assert.equal(await page.inputValue(`#blank-${n}`), value, `blank ${n} lost its answer`);
+
   // The worksheet mode is in the URL too.
   hash = await page.evaluate(() => location.hash);
   assert.match(hash, /[#&]lw=1(&|$)/);

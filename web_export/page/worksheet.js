@@ -16,6 +16,9 @@ export class WorksheetPanel {
     this.body = null;
     this.shown = null; // promyk_lesson's worksheet answer
     this.options = null;
+    // What was typed, by lesson and pixels: kept while the lesson is shown
+    // again (another mode, step mode, language) in this page.
+    this.kept = new Map();
     this.hint = el('p', { id: 'worksheet-hint', className: 'note' });
     this.check = el('button', { type: 'button', id: 'worksheet-check' });
     this.save = el('button', { type: 'button', id: 'worksheet-save' });
@@ -45,14 +48,26 @@ export class WorksheetPanel {
     this.other.replaceChildren();
     if (!shown) return;
     this.setWords();
-    for (const input of body.querySelectorAll('input.blank-field'))
+    const place = `${shown.name}|${JSON.stringify(shown.pixels)}|${shown.w}|${shown.scene}`;
+    if (!this.kept.has(place)) this.kept.set(place, {});
+    const kept = this.kept.get(place);
+    const mirror = (input) => {
+      for (const copy of body.querySelectorAll(`.blank-copy[data-blank="${input.dataset.blank}"]`)) {
+        if (copy.dataset.empty === undefined) copy.dataset.empty = copy.textContent;
+        copy.textContent = input.value.trim() ? `${input.value.trim()} (${input.dataset.blank})` : copy.dataset.empty;
+      }
+    };
+    for (const input of body.querySelectorAll('input.blank-field')) {
+      if (kept[input.dataset.blank]) {
+        input.value = kept[input.dataset.blank];
+        mirror(input);
+      }
       input.addEventListener('input', () => {
+        kept[input.dataset.blank] = input.value;
         this.unmark(input.dataset.blank);
-        for (const copy of body.querySelectorAll(`.blank-copy[data-blank="${input.dataset.blank}"]`)) {
-          if (copy.dataset.empty === undefined) copy.dataset.empty = copy.textContent;
-          copy.textContent = input.value.trim() ? `${input.value.trim()} (${input.dataset.blank})` : copy.dataset.empty;
-        }
+        mirror(input);
       });
+    }
   }
 
   // What the pupil typed: {blank number: text}.
