@@ -8,7 +8,7 @@
 # sets OUT to the absolute paths: the portable core (scene reader, kernels'
 # non-generated parts, trace writer and reader, number formatter, messages,
 # vocabulary, the lesson runner the page shows lessons with), and with NATIVE
-# also what only the command line needs (worksheets and answers, image files,
+# also what only the command line needs (`promyk diff`, image files,
 # output files, the x87 long double, benchmarks are
 # listed by src/CMakeLists.txt itself).
 include_guard(GLOBAL)
@@ -54,6 +54,11 @@ set(PROMYK_PORTABLE_SOURCES
   lesson/lesson_render.cpp
   lesson/lesson_run.cpp
   lesson/lesson_html.cpp
+  # Worksheets and the answer checker: the page's worksheet checks with them.
+  lesson/worksheet.cpp
+  lesson/answers_read.cpp
+  lesson/answers_judge.cpp
+  lesson/answers_run.cpp
   util/system_error_text.cpp
   util/atomic_file.cpp
 )
@@ -64,9 +69,6 @@ set(PROMYK_NATIVE_CORE_SOURCES
   image/map_legend.cpp
   render/scene_report.cpp
   render/trace_size.cpp
-  lesson/worksheet.cpp
-  lesson/answers_read.cpp
-  lesson/answers_judge.cpp
   lesson/trace_diff.cpp
   util/output_file.cpp
   util/standard_output.cpp

@@ -24,6 +24,7 @@
 #include "app/common_options.hpp"
 #include "app/trace_limit.hpp"
 #include "lesson/answers.hpp"
+#include "lesson/answers_run.hpp"
 #include "lesson/lesson_check.hpp"
 #include "lesson/lesson_library.hpp"
 #include "lesson/lesson_render.hpp"
@@ -169,48 +170,10 @@ std::vector<std::string> lesson_names(const LessonLibrary& library, Language lan
 
 // --answers FILE: the student's numbers against the traces; exit 1 when any is wrong.
 int run_answers(const LessonOptions& options, LessonRun& run) {
-    LessonView& view = run.view();
-    const Kernel& kernel = run.kernel();
-    const TraceHeader& header = run.header();
     const std::string shown = options.answers == "-" ? "(stdin)" : options.answers;
-    const LessonPixel first{view.traces.front().header.i, view.traces.front().header.j};
-    // A bad line makes that answer unreadable, the rest are checked; a fraction is a number.
-    AnswerLimits limits;
-    limits.w = view.w;
-    limits.scene_hash = header.scene_hash;
-    limits.settings = true;
-    limits.forgiving = true;
-    limits.keys = lesson_keys(view.lesson, view.vocabulary);
-    const std::vector<PixelAnswers> answers = read_answers(cli::read_input_file(options.answers, "--answers reads", max_answer_bytes, "--answers"), shown,
-                                                           view.vocabulary, view.lesson.language, first, limits).pixels;
-    // A heading may name a pixel the lesson did not choose: it is traced too.
-    std::set<std::pair<int, int>> traced;
-    for (const PixelTrace& trace : view.traces) traced.emplace(trace.header.i, trace.header.j);
-    for (const PixelAnswers& pixel : answers)
-        if (traced.emplace(pixel.pixel.i, pixel.pixel.j).second)
-            view.traces.push_back(kernel.trace(header, pixel.pixel.i, pixel.pixel.j));
-    // Every pixel in every setting the answers or the lesson name (delta@float = …).
-    std::vector<std::string> qualifiers;
-    for (const PixelAnswers& pixel : answers)
-        for (const Answer& answer : pixel.answers)
-            if (answer.unreadable.empty()) qualifiers.push_back(split_settings(answer.key).second);
-    for (const SettingsUse& use : settings_used(view.lesson)) qualifiers.push_back(use.settings);
-    view.others.clear();
-    run.trace_settings(qualifiers);
-    std::vector<AnswerCheck> checks = check_answers(answers, view.traces, view.others);
-    // A fraction or a number with more digits than the type holds, wrong against the computed value
-    // alone, is judged against the exact value: the same pixel and formula in quad, traced only for these.
-    std::vector<std::string> exact;
-    std::set<std::pair<int, int>> exact_pixels;
-    for (const AnswerCheck& check : checks)
-        if (check.needs_exact) {
-            exact.push_back(exact_settings(split_settings(check.answer.key).second));
-            exact_pixels.emplace(check.pixel.i, check.pixel.j);
-        }
-    if (!exact.empty()) {
-        run.trace_settings(exact, &exact_pixels);
-        checks = check_answers(answers, view.traces, view.others);
-    }
+    const std::vector<AnswerCheck> checks = check_lesson_answers(
+        run, cli::read_input_file(options.answers, "--answers reads", max_answer_bytes, "--answers"), shown);
+    const LessonView& view = run.view();
     print(wrap_lines(message(view.lesson.language, "answers_heading",
                              {{"file", shown}, {"lesson", view.lesson.header.name}, {"scene", view.scene_name},
                               {"w", std::to_string(view.w)}, {"pane", pane_phrase(view.w)}}) +
@@ -239,7 +202,6 @@ int run_lesson(const LessonOptions& options) {
         throw UsageError(ui_message("lesson_unknown", {{"name", options.name}, {"hint", hint.empty() ? "." : hint}, {"names", names}}));
     }
     const Lesson& lesson = *found;
-    if (options.worksheet && options.format == "html") throw UsageError(ui_message("lesson_worksheet_no_html"));
     require_runnable(lesson);
     const Scene scene = options.scene_file.empty() ? library.scene(lesson.header.scene) : load_scene_file(options.scene_file);
     LessonRunOptions run_options;
@@ -296,7 +258,8 @@ int run_lesson(const LessonOptions& options) {
     // Back a step: the loop's ++k then shows step k − 1 (step 0 again from step 0; unsigned wrap-around).
     const auto back = [](std::size_t k) { return (k == 0 ? std::size_t(0) : k - 1) - 1; };
     for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
-        print("\n" + render_step(view, k));
+        // A worksheet's HTML: its blanks become fields (worksheet.hpp).
+        print("\n" + (worksheet ? worksheet->fields(render_step(view, k)) : render_step(view, k)));
         const std::string answers = worksheet ? "" : render_answers(view, k);
         if (!answers.empty()) {
             if (options.step) {

@@ -166,6 +166,16 @@ std::vector<AnswerCheck> check_answers(const std::vector<PixelAnswers>& answers,
 std::string answers_report(const std::vector<AnswerCheck>& checks, const std::vector<PixelTrace>& traces,
                            const Vocabulary& vocabulary, Language language, const std::vector<PixelTrace>& others = {});
 
+// One answer's mark as the report words it (without its indent and
+// wrapping): the message id ("answers_right", "answers_wrong_way", ...) and
+// its text in `language`. `trace` is the trace of the answer's pixel.
+struct AnswerMark {
+    std::string id;
+    std::string text;
+};
+AnswerMark answer_mark(const AnswerCheck& check, const PixelTrace* trace, const Vocabulary& vocabulary, Language language,
+                       const std::vector<PixelTrace>& others = {});
+
 // True when nothing checked is wrong (blank answers do not count).
 bool all_right(const std::vector<AnswerCheck>& checks);
 

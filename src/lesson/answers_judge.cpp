@@ -306,6 +306,64 @@ bool all_right(const std::vector<AnswerCheck>& checks) {
                        [](const AnswerCheck& c) { return is_right(c.verdict) || c.verdict == Verdict::blank; });
 }
 
+AnswerMark answer_mark(const AnswerCheck& check, const PixelTrace* trace, const Vocabulary& vocabulary, Language language,
+                       const std::vector<PixelTrace>& others) {
+    const std::string pixel = message(language, "pixel_label", {{"i", std::to_string(check.pixel.i)}, {"j", std::to_string(check.pixel.j)}});
+    AnswerMark mark;
+    if (check.verdict == Verdict::unreadable) {
+        // Where it stands and what it says, since its key may be unknown.
+        const Answer& answer = check.answer;
+        const auto [path, settings] = split_settings(answer.key);
+        const std::string where =
+            answer.pointer.empty() ? message(language, "answers_line", {{"line", std::to_string(answer.line)}}) : answer.pointer;
+        const std::string text =
+            answer.key.empty() ? answer.text : qualified_path(path, answer.component, settings) + " = " + answer.text;
+        mark.id = "answers_unreadable";
+        mark.text = message(language, mark.id, {{"where", where}, {"text", text}, {"reason", answer.unreadable}});
+        return mark;
+    }
+    const std::optional<LessonNumber> number = trace ? lesson_number(*trace, check.answer.key, others) : std::nullopt;
+    const std::string kind =
+        kind_of(vocabulary, check.answer, number ? std::optional<StepValue>(number->value) : std::nullopt);
+    MessageArgs args = {{"symbol", symbol_of(vocabulary, check.answer, language)}, {"typed", check.answer.text}, {"pixel", pixel}};
+    switch (check.verdict) {
+        case Verdict::right:
+            mark.id = "answers_right";
+            break;
+        case Verdict::right_more_digits:
+        case Verdict::right_nearer:
+            mark.id = check.verdict == Verdict::right_more_digits ? "answers_right_more_digits" : "answers_right_nearer";
+            args.emplace_back("real", message(language, "answers_real_" + (number ? number->real : std::string("double"))));
+            break;
+        case Verdict::unreadable:
+            break;
+        case Verdict::blank:
+            mark.id = "answers_blank";
+            break;
+        case Verdict::not_reached:
+            mark.id = "answers_not_reached";
+            break;
+        case Verdict::wrong_shape:
+            mark.id = kind == "scalar" ? "answers_shape_one" : "answers_shape_three";
+            break;
+        case Verdict::wrong:
+        case Verdict::wrong_way: {
+            mark.id = !check.answer.over.empty()      ? "answers_wrong_fraction"
+                      : check.verdict == Verdict::wrong ? "answers_wrong"
+                                                        : "answers_wrong_way";
+            const LessonNumber exact = component_of(*number, check.answer.component);
+            const bool finite = std::all_of(check.expected.begin(), check.expected.end(),
+                                            [](const TypedNumber& n) { return !n.digits.empty(); });
+            const std::string exact_text = lesson_number_text(exact, kind, language);
+            args.emplace_back("expected", finite ? numbers_text(check.expected, kind, language) : exact_text);
+            args.emplace_back("exact", exact_text);
+            break;
+        }
+    }
+    mark.text = message(language, mark.id, args);
+    return mark;
+}
+
 std::string answers_report(const std::vector<AnswerCheck>& checks, const std::vector<PixelTrace>& traces,
                            const Vocabulary& vocabulary, Language language, const std::vector<PixelTrace>& others) {
     std::string out;
@@ -323,67 +381,15 @@ std::string answers_report(const std::vector<AnswerCheck>& checks, const std::ve
                             {"branch", branch_named(vocabulary, trace->branch, effect_set(*trace), language)}}) +
                    "\n";
         }
-        if (check.verdict == Verdict::unreadable) {
-            // Where it stands and what it says, since its key may be unknown.
-            const Answer& answer = check.answer;
-            const auto [path, settings] = split_settings(answer.key);
-            const std::string where =
-                answer.pointer.empty() ? message(language, "answers_line", {{"line", std::to_string(answer.line)}}) : answer.pointer;
-            const std::string text =
-                answer.key.empty() ? answer.text : qualified_path(path, answer.component, settings) + " = " + answer.text;
-            out += "  " + wrapped(message(language, "answers_unreadable", {{"where", where}, {"text", text}, {"reason", answer.unreadable}}),
-                                  2, 4) + "\n";
-            ++unreadable;
-            continue;
-        }
-        const std::optional<LessonNumber> number = lesson_number(*trace, check.answer.key, others);
-        const std::string kind =
-            kind_of(vocabulary, check.answer, number ? std::optional<StepValue>(number->value) : std::nullopt);
-        MessageArgs args = {{"symbol", symbol_of(vocabulary, check.answer, language)}, {"typed", check.answer.text}, {"pixel", pixel}};
-        std::string id;
-        switch (check.verdict) {
-            case Verdict::right:
-                id = "answers_right";
-                ++right;
-                break;
-            case Verdict::right_more_digits:
-            case Verdict::right_nearer:
-                id = check.verdict == Verdict::right_more_digits ? "answers_right_more_digits" : "answers_right_nearer";
-                args.emplace_back("real", message(language, "answers_real_" + (number ? number->real : std::string("double"))));
-                ++right;
-                break;
-            case Verdict::unreadable:
-                break;
-            case Verdict::blank:
-                id = "answers_blank";
-                ++blank;
-                break;
-            case Verdict::not_reached:
-                id = "answers_not_reached";
-                ++wrong;
-                break;
-            case Verdict::wrong_shape:
-                id = kind == "scalar" ? "answers_shape_one" : "answers_shape_three";
-                ++wrong;
-                break;
-            case Verdict::wrong:
-            case Verdict::wrong_way: {
-                id = !check.answer.over.empty()              ? "answers_wrong_fraction"
-                     : check.verdict == Verdict::wrong ? "answers_wrong"
-                                                       : "answers_wrong_way";
-                ++wrong;
-                const LessonNumber exact = component_of(*number, check.answer.component);
-                const bool finite = std::all_of(check.expected.begin(), check.expected.end(),
-                                                [](const TypedNumber& n) { return !n.digits.empty(); });
-                const std::string exact_text = lesson_number_text(exact, kind, language);
-                args.emplace_back("expected", finite ? numbers_text(check.expected, kind, language) : exact_text);
-                args.emplace_back("exact", exact_text);
-                break;
-            }
-        }
+        const AnswerMark mark = answer_mark(check, trace, vocabulary, language, others);
+        if (check.verdict == Verdict::unreadable) ++unreadable;
+        else if (check.verdict == Verdict::blank) ++blank;
+        else if (is_right(check.verdict)) ++right;
+        else ++wrong;
         // The older verdicts' lines are kept as they were; the new ones fit 80 columns.
-        const bool wrap = id == "answers_right_more_digits" || id == "answers_right_nearer" || id == "answers_wrong_fraction";
-        out += "  " + (wrap ? wrapped(message(language, id, args), 2, 4) : message(language, id, args)) + "\n";
+        const bool wrap = mark.id == "answers_unreadable" || mark.id == "answers_right_more_digits" ||
+                          mark.id == "answers_right_nearer" || mark.id == "answers_wrong_fraction";
+        out += "  " + (wrap ? wrapped(mark.text, 2, 4) : mark.text) + "\n";
     }
     out += "\n" + message(language, "answers_summary",
                           {{"right", std::to_string(right)}, {"count", std::to_string(right + wrong + unreadable)},

@@ -44,6 +44,22 @@ public:
     // The answer key: every blank shown so far with its value.
     std::string answer_key() const;
 
+    // The answer file's lines alone (what answer_template() shows under its
+    // heading, without the indent): a [i,j] heading per pixel, then
+    // "key = VALUE  # (N) symbol" per blank in derivation order, VALUE the
+    // text `typed` holds for blank N (none: blank). What the web page saves
+    // and checks; `promyk lesson NAME --answers FILE` reads it.
+    std::string answer_lines(const std::map<int, std::string>& typed = {}) const;
+
+    // The command that checks the answer file, on one line.
+    std::string check_command() const;
+
+    // HTML (LessonFormat::html): a rendered step with its blanks' marks made
+    // fields, one <input> a blank with its <label> (the first place the
+    // blank shows; a later place shows its number alone); other formats
+    // unchanged.
+    std::string fields(const std::string& rendered);
+
     const std::vector<WorksheetBlank>& blanks() const { return blanks_; }
 
     // The blank's text: "..........(3)" for a number, "(......; ......; ......)(4)"
@@ -51,6 +67,8 @@ public:
     static std::string blank_text(int number, const std::string& kind, Language language);
 
 private:
+    std::string form_lines(const std::map<int, std::string>& typed, std::size_t indent) const;
+    std::string field(const WorksheetBlank& blank, bool first) const;
     std::string blank_for(const PixelTrace& trace, const std::string& key, char component);
 
     LessonView& view_;
@@ -58,6 +76,7 @@ private:
     // (i, j, key, component) -> the blank's index in blanks_: a lesson of
     // 10^5 pixels has 10^5 blanks, too many to search one by one.
     std::map<std::tuple<int, int, std::string, char>, std::size_t> index_;
+    std::vector<bool> has_field_;  // by blank: its <input> is out (HTML)
 };
 
 }  // namespace promyk

@@ -102,4 +102,9 @@ if(NOT PROMYK_SANITIZE)
 endif()
 promyk_cli_test(lesson_html ARGS lesson program --lang pl --format html EXIT 0
                 STDOUT "^<header class=.lesson-head.>.<h1>Lekcja: .*<section class=.lesson-step. data-step=.1. .*<th scope=.col.>piksel \\(0, 0\\)</th>.*<details class=.answer. data-step=.[0-9]+.><summary>Odpowiedź</summary>")
-promyk_cli_test(lesson_html_worksheet ARGS lesson sphere --worksheet --format html --lang en EXIT 2 STDERR "--worksheet has no HTML form yet")
+# A worksheet in HTML: a labelled field a blank, the answers left out, the answer file's form at the end.
+promyk_cli_test(lesson_html_worksheet ARGS lesson sphere --worksheet --format html --lang en EXIT 0
+                STDOUT "^<header class=\"lesson-head\">.*<section class=\"worksheet-intro\">.*--answers ANSWERS.txt.*<input type=\"text\" id=\"blank-6\" [^>]*data-key=\"EE\" data-i=\"3\" data-j=\"4\"[^>]*><label for=\"blank-6\"><span aria-hidden=\"true\">\\(6\\)</span><span class=\"sr-only\">blank 6: \\|E\\|², pixel \\(3, 4\\)</span></label>.*<section class=\"worksheet-form\">.*\\[3,4\\]\nE = +# \\(3\\)"
+                NOSTDOUT "<details|\\.\\.\\.\\.\\.\\.\\.\\.\\.\\.\\(6\\)</td>")
+promyk_cli_test(lesson_html_worksheet_key ARGS lesson sphere --worksheet --key --format html --lang pl EXIT 0
+                STDOUT "<label for=\"blank-1\"><span aria-hidden=\"true\">\\(1\\)</span><span class=\"sr-only\">miejsce 1: E, piksel \\(0, 0\\)</span>.*<section class=\"worksheet-key\">\n<h2>Klucz odpowiedzi \\(dla nauczyciela\\)</h2>\n<ul>\n<li>\\(1\\) piksel \\(0, 0\\): E = \\(−0,875; 0,875; 2\\)   \\[E\\]</li>")

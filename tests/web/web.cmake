@@ -72,3 +72,13 @@ if(NOT PROMYK_SANITIZE AND PROMYK_WEB_PAGE_BUILT)
                    "${PROMYK_NPM_MODULES}" "${PROJECT_SOURCE_DIR}/lessons" "${CMAKE_CURRENT_BINARY_DIR}/web/keyboard")
   set_tests_properties(web.keyboard PROPERTIES TIMEOUT 600)
 endif()
+
+# The worksheet in the page (tests/web/worksheet_test.mjs, issue 17): marks
+# equal `promyk lesson --answers` on the saved file; the URL reopens the
+# lesson at its pixel, step and mode; axe-core; a keyboard-only walk.
+if(NOT PROMYK_SANITIZE AND PROMYK_WEB_PAGE_BUILT)
+  add_test(NAME web.worksheet
+           COMMAND "${PROMYK_NODE}" "${CMAKE_CURRENT_SOURCE_DIR}/web/worksheet_test.mjs" $<TARGET_FILE:promyk>
+                   "${PROMYK_NPM_MODULES}" "${PROJECT_SOURCE_DIR}/lessons" "${CMAKE_CURRENT_BINARY_DIR}/web/worksheet")
+  set_tests_properties(web.worksheet PROPERTIES TIMEOUT 600)
+endif()

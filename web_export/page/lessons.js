@@ -5,14 +5,18 @@
 // and its answers' reveals at a time. The lesson runs on its own example
 // scene; "use this pixel" runs it on the page's scene at the page's w for
 // the selected pixel (on another scene than its own, as `promyk lesson NAME
-// --scene FILE` does: the runner says what that scene lacks).
+// --scene FILE` does: the runner says what that scene lacks). Worksheet
+// mode shows the runner's worksheet instead (worksheet.js). The lesson, its
+// pixel, its step and the mode are kept in the page's URL (state.js).
 import katex from 'katex';
 import { t } from './words.js';
+import { WorksheetPanel } from './worksheet.js';
 
 const katexOptions = { throwOnError: false, trust: false, strict: 'ignore', output: 'htmlAndMathml' };
 
 export class Lessons {
-  // page: { tracer, pixel() → [i, j] | null, scene() → {hash, name, w}, onShow() }
+  // page: { tracer, pixel() → [i, j] | null, scene() → {hash, name, w}, onShow(),
+  //        state (the page's, state.js: lesson, lessonPixel, lessonStep, worksheet), save() }
   constructor(root, page) {
     this.root = root;
     this.page = page;
@@ -34,16 +38,57 @@ export class Lessons {
     this.counter = $('lesson-step-counter');
     this.prev = $('lesson-prev');
     this.next = $('lesson-next');
-    this.select.addEventListener('change', () => this.open(this.select.value, null));
+    this.mode = 'lesson'; // or 'worksheet'
+    // Lesson or worksheet: a radio group (the arrows move between them).
+    const modes = document.createElement('fieldset');
+    modes.id = 'lesson-mode';
+    const legend = document.createElement('legend');
+    legend.id = 'lesson-mode-legend';
+    modes.append(legend);
+    this.modeInputs = {};
+    for (const mode of ['lesson', 'worksheet']) {
+      const label = document.createElement('label');
+      const input = document.createElement('input');
+      input.type = 'radio';
+      input.name = 'lesson-mode';
+      input.value = mode;
+      input.id = `lesson-mode-${mode}`;
+      const words = document.createElement('span');
+      words.id = `lesson-mode-${mode}-label`;
+      label.append(input, ' ', words);
+      modes.append(label);
+      this.modeInputs[mode] = input;
+      input.addEventListener('change', () => {
+        if (!input.checked) return;
+        this.mode = mode;
+        this.open(this.name, this.pixel, true);
+        this.remember();
+      });
+    }
+    $('lesson-controls').append(modes);
+    const bar = document.createElement('div');
+    bar.id = 'worksheet-bar';
+    bar.hidden = true;
+    this.body.after(bar); // after the fields: Tab goes from the last field to Check
+    this.worksheet = new WorksheetPanel(bar, this);
+    this.select.addEventListener('change', () => {
+      this.open(this.select.value, null);
+      this.remember();
+    });
     this.usePixel.addEventListener('click', () => {
       const pixel = this.page.pixel();
       if (pixel) this.open(this.name, pixel);
+      this.remember();
     });
-    this.ownPixels.addEventListener('click', () => this.open(this.name, null));
+    this.ownPixels.addEventListener('click', () => {
+      this.open(this.name, null);
+      this.remember();
+    });
     this.stepToggle.addEventListener('change', () => {
       this.stepMode = this.stepToggle.checked;
       this.step = 1;
       this.showStep();
+      this.remember();
     });
     this.prev.addEventListener('click', () => this.go(this.step - 1));
     this.next.addEventListener('click', () => this.go(this.step + 1));
@@ -67,7 +112,8 @@ export class Lessons {
       'lessons-heading': 'lessons_page_heading', 'lessons-intro': 'lessons_page_intro', 'lesson-select-label': 'lessons_page_choose',
       'lesson-own-pixels': 'lessons_page_own_pixels', 'lesson-step-mode-label': 'lessons_page_step_mode',
       'lesson-prev': 'lessons_page_prev', 'lesson-next': 'lessons_page_next', 'lesson-print': 'lessons_page_print',
-      'lesson-print-key': 'lessons_page_print_key',
+      'lesson-print-key': 'lessons_page_print_key', 'lesson-mode-legend': 'worksheet_page_mode',
+      'lesson-mode-lesson-label': 'worksheet_page_mode_lesson', 'lesson-mode-worksheet-label': 'worksheet_page_mode_worksheet',
     };
     for (const [id, word] of Object.entries(words)) this.root.querySelector(`#${id}`).textContent = t(word);
     this.list = this.page.tracer.lessons(lang).lessons;
@@ -77,9 +123,30 @@ export class Lessons {
       option.textContent = lesson.title;
       return option;
     }));
+    // The lesson, its pixel, step and mode as the page's state (a link) says.
+    const state = this.page.state;
+    if (state && state.lesson) {
+      this.name = state.lesson;
+      this.pixel = state.lessonPixel;
+      this.stepMode = state.lessonStep > 0;
+      this.step = state.lessonStep || 1;
+      this.mode = state.worksheet ? 'worksheet' : 'lesson';
+    }
     if (!this.list.some((lesson) => lesson.name === this.name)) this.name = this.list.length ? this.list[0].name : null;
     this.select.value = this.name || '';
-    this.open(this.name, this.pixel);
+    this.stepToggle.checked = this.stepMode;
+    this.open(this.name, this.pixel, true);
+  }
+
+  // The section's state into the page's (its URL): a link reopens it.
+  remember() {
+    const state = this.page.state;
+    if (!state) return;
+    state.lesson = this.name;
+    state.lessonPixel = this.pixel;
+    state.lessonStep = this.stepMode ? this.step : 0;
+    state.worksheet = this.mode === 'worksheet';
+    if (this.page.save) this.page.save();
   }
 
   // The selected pixel changed: "use this pixel" says whether there is one.
@@ -89,8 +156,9 @@ export class Lessons {
     this.usePixel.textContent = pixel ? `${t('lessons_page_use_pixel')} (${pixel[0]}, ${pixel[1]})` : t('lessons_page_use_pixel_none');
   }
 
-  // Runs lesson `name` on its own scene (pixel null) or on the page's scene for `pixel`.
-  open(name, pixel) {
+  // Runs lesson `name` on its own scene (pixel null) or on the page's scene
+  // for `pixel`, as a lesson or a worksheet; `keepStep` keeps the step.
+  open(name, pixel, keepStep = false) {
     this.refresh();
     if (!name) return;
     const lesson = this.list.find((l) => l.name === name);
@@ -99,13 +167,16 @@ export class Lessons {
     const changed = name !== this.name;
     this.name = name;
     this.pixel = pixel;
-    if (changed) this.step = 1;
+    if (changed && !keepStep) this.step = 1;
+    for (const [mode, input] of Object.entries(this.modeInputs)) input.checked = mode === this.mode;
+    const options = { lang: this.lang, digits: 4, scene: pixel ? 'open' : 'own' };
     try {
-      const options = { lang: this.lang, digits: 4, scene: pixel ? 'open' : 'own' };
       if (pixel) options.pixels = [pixel];
+      if (this.mode === 'worksheet') options.worksheet = true;
       this.shown = this.page.tracer.lesson(name, options);
     } catch (error) {
       this.shown = null;
+      this.worksheet.attach(this.body, null, null);
       this.body.replaceChildren();
       this.note.textContent = t('lessons_page_error', { text: error.message });
       return;
@@ -132,6 +203,8 @@ export class Lessons {
         math.textContent = tex;
       }
     }
+    this.body.dataset.mode = this.mode;
+    this.worksheet.attach(this.body, this.mode === 'worksheet' ? s : null, options);
     this.ownPixels.disabled = !pixel;
     this.showStep();
     if (this.page.onShow) this.page.onShow();
@@ -141,6 +214,7 @@ export class Lessons {
     if (!this.shown) return;
     this.step = Math.max(1, Math.min(step, this.shown.steps));
     this.showStep();
+    this.remember();
     const section = this.body.querySelector(`section[data-step="${this.step}"] h2`);
     if (section) {
       section.tabIndex = -1;

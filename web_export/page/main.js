@@ -91,6 +91,8 @@ async function start() {
     tracer,
     pixel: () => state.pixel,
     scene: () => ({ hash: opened.scene_hash, name: opened.scene, w: scene.w }),
+    state, // the lesson, its pixel, step and mode in the URL (state.js)
+    save: () => writeFragment(state),
   });
   const editor = new SceneEditor($('scene-fields'), { onChange: () => sceneEdited() });
   // The image shown: which scene, w and settings it was rendered with.

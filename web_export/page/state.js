@@ -19,6 +19,12 @@ export function defaultState(lang) {
     useFile: true,
     scene: null, // an edited scene's text (the scene panel), null: the exported one
     w: null, // the pane's size when not the exported one
+    // The lessons section (lessons.js): the lesson shown, the pixel it follows
+    // (null: its own), its step in step mode (0: not in step mode), worksheet mode.
+    lesson: null,
+    lessonPixel: null,
+    lessonStep: 0,
+    worksheet: false,
   };
 }
 
@@ -62,6 +68,15 @@ export function readFragment(state, hash, exportedW) {
   }
   if (params.get('full') === '1') state.full = true;
   if (params.get('file') === '0') state.useFile = false;
+  // The lessons section: l=NAME (the section checks it against its list),
+  // lp=I,J (the page's pixel it follows), ls=K (step mode at step K), lw=1.
+  const lesson = params.get('l');
+  state.lesson = lesson && /^[\w.-]{1,100}$/.test(lesson) ? lesson : null;
+  const lp = params.get('lp');
+  state.lessonPixel = lp && /^\d+,\d+$/.test(lp) ? lp.split(',').map(Number) : null;
+  const ls = params.get('ls');
+  state.lessonStep = ls && /^\d{1,6}$/.test(ls) ? Number(ls) : 0;
+  state.worksheet = params.get('lw') === '1';
   return state;
 }
 
@@ -80,6 +95,12 @@ export function writeFragment(state) {
   if (state.full) params.set('full', '1');
   if (!state.useFile) params.set('file', '0');
   if (state.w) params.set('w', String(state.w));
+  if (state.lesson) {
+    params.set('l', state.lesson);
+    if (state.lessonPixel) params.set('lp', state.lessonPixel.join(','));
+    if (state.lessonStep > 0) params.set('ls', String(state.lessonStep));
+    if (state.worksheet) params.set('lw', '1');
+  }
   if (state.scene !== null) params.set('scene', toBase64Url(state.scene));
   const hash = '#' + params.toString().replace(/%2C/g, ',');
   if (location.hash !== hash) history.replaceState(null, '', hash);

@@ -83,5 +83,9 @@ export function makeTracer(M) {
     // The lessons of a language, and one lesson run by the C++ lesson runner as HTML.
     lessons: (lang) => checked(callText('promyk_lessons', [lang])),
     lesson: (name, options) => checked(callText('promyk_lesson', [name, JSON.stringify(options)])),
+    // A worksheet's answer file from the typed texts ({blank: text}), and a file checked (worksheet.js).
+    worksheetFile: (name, options, typed) =>
+      checked(callText('promyk_worksheet_file', [name, JSON.stringify(options), JSON.stringify(typed)])),
+    checkAnswers: (name, options, text) => checked(callText('promyk_check_answers', [name, JSON.stringify(options), text])),
   };
 }

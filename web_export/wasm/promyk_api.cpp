@@ -10,14 +10,18 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "image/map_colours.hpp"
+#include "lesson/answers.hpp"
+#include "lesson/answers_run.hpp"
 #include "lesson/lesson_library.hpp"
 #include "lesson/lesson_run.hpp"
+#include "lesson/worksheet.hpp"
 #include "render/kernel.hpp"
 #include "render/maps.hpp"
 #include "render/trace_pixel.hpp"
@@ -633,6 +637,119 @@ PROMYK_EXPORT const char* promyk_messages(const char* lang) {
     });
 }
 
+// --- lessons and worksheets (issue 17) ---------------------------------------
+}  // extern "C"
+
+namespace {
+
+// A lesson run as promyk_lesson, promyk_worksheet_file and promyk_check_answers
+// run it (API.md): the lesson and its scene live as long as the run.
+struct LessonCall {
+    Language language = Language::en;
+    std::optional<Lesson> lesson;
+    std::optional<Scene> own;
+    LessonRunOptions options;
+    std::unique_ptr<LessonRun> run;
+    std::unique_ptr<Worksheet> worksheet;  // with "worksheet": true
+    std::string html;                       // the lesson's HTML, or the worksheet's
+};
+
+std::unique_ptr<LessonCall> lesson_call(const char* name, const char* options_json, bool worksheet) {
+    auto call = std::make_unique<LessonCall>();
+    const nlohmann::json j = object_argument(options_json, "lesson");
+    const Language language = language_of(string_field(j, "lang", "en", "lesson"));
+    call->language = language;
+    set_ui_language(language);
+    const std::string where = string_field(j, "scene", "own", "lesson");
+    if (where != "own" && where != "open")
+        throw UsageError(ui_message("wasm_bad_argument", {{"name", "lesson.scene"}, {"problem", where}}));
+    if (j.contains("worksheet")) {
+        if (!j.at("worksheet").is_boolean())
+            throw UsageError(ui_message("wasm_bad_argument", {{"name", "lesson.worksheet"}, {"problem", "not true or false"}}));
+        worksheet = worksheet || j.at("worksheet").get<bool>();
+    }
+    const LessonLibrary library;
+    const std::string wanted = name ? name : "";
+    call->lesson = library.find(wanted, language);
+    if (!call->lesson) throw UsageError(ui_message("wasm_bad_argument", {{"name", "lesson"}, {"problem", wanted}}));
+    const Lesson& lesson = *call->lesson;
+    require_runnable(lesson);
+    call->own.emplace(library.scene(lesson.header.scene));
+    // "open": the page's scene at the page's w, the lesson's own when it is
+    // the same scene (by hash), else another scene as `lesson --scene FILE`.
+    const bool open = where == "open";
+    const Scene& scene = open ? open_scene() : *call->own;
+    LessonRunOptions& options = call->options;
+    options.w = open ? state().w : lesson.header.w;
+    options.own_scene = !open || scene_hash(scene) == scene_hash(*call->own);
+    options.scene_file = options.own_scene ? lesson.header.scene : base_name(state().scene_file);
+    options.pixels = pixels_of(j, options.w);
+    if (options.pixels.empty())
+        for (const LessonPixel& pixel : lesson.header.pixels) {
+            if (pixel.i >= options.w || pixel.j >= options.w)
+                throw UsageError(ui_message("lesson_pixel_outside", {{"i", std::to_string(pixel.i)},
+                                                                     {"j", std::to_string(pixel.j)},
+                                                                     {"w", std::to_string(options.w)}}));
+            options.pixels.push_back(pixel);
+        }
+    options.digits = lesson.header.digits;
+    if (j.contains("digits")) {
+        if (!j.at("digits").is_number_integer() || j.at("digits").get<int>() < 0 || j.at("digits").get<int>() > 40)
+            throw UsageError(ui_message("wasm_bad_argument", {{"name", "lesson.digits"}, {"problem", "not 0 ... 40"}}));
+        options.digits = j.at("digits").get<int>();
+    }
+    options.real = lesson_real(lesson);
+    options.formula = lesson_formula(lesson);
+    if (options.real == RealType::long_double) throw UsageError(ui_message("wasm_no_long_double"));
+    options.spp = lesson.header.spp;
+    options.format = LessonFormat::html;
+    call->run = std::make_unique<LessonRun>(lesson, scene, options);
+    if (!worksheet) {
+        call->html = call->run->document();
+        return call;
+    }
+    // The worksheet as `promyk lesson NAME --worksheet --format html` prints
+    // it with --key: the blanks are fields, the answers left out, the answer
+    // file's form at the end, then the answer key (the page shows it only
+    // when a teacher prints the key, as it shows a lesson's answers).
+    LessonView& view = call->run->view();
+    call->worksheet = std::make_unique<Worksheet>(view);
+    call->html = render_lesson_title(view) + call->worksheet->intro();
+    for (std::size_t k = 0; k < lesson.steps.size(); ++k) call->html += "\n" + call->worksheet->fields(render_step(view, k));
+    call->html += call->worksheet->answer_template() + call->worksheet->answer_key();
+    return call;
+}
+
+const char* verdict_name(Verdict verdict) {
+    switch (verdict) {
+        case Verdict::right: return "right";
+        case Verdict::right_more_digits: return "right_more_digits";
+        case Verdict::right_nearer: return "right_nearer";
+        case Verdict::wrong_way: return "wrong_way";
+        case Verdict::wrong: return "wrong";
+        case Verdict::not_reached: return "not_reached";
+        case Verdict::wrong_shape: return "wrong_shape";
+        case Verdict::blank: return "blank";
+        case Verdict::unreadable: return "unreadable";
+    }
+    return "wrong";
+}
+
+// The worksheet's blanks, as the page fills them in.
+json blanks_json(const Worksheet& worksheet) {
+    json blanks = json::array();
+    for (const WorksheetBlank& blank : worksheet.blanks()) {
+        const auto [path, settings] = split_settings(blank.key);
+        blanks.push_back({{"n", blank.number}, {"i", blank.i}, {"j", blank.j},
+                          {"key", qualified_path(path, blank.component, settings)}});
+    }
+    return blanks;
+}
+
+}  // namespace
+
+extern "C" {
+
 PROMYK_EXPORT const char* promyk_lessons(const char* lang) {
     return answer([&] {
         const Language language = language_of(lang ? lang : "en");
@@ -657,55 +774,74 @@ PROMYK_EXPORT const char* promyk_lessons(const char* lang) {
 
 PROMYK_EXPORT const char* promyk_lesson(const char* name, const char* options_json) {
     return answer([&] {
-        const nlohmann::json j = object_argument(options_json, "lesson");
-        const Language language = language_of(string_field(j, "lang", "en", "lesson"));
-        set_ui_language(language);
-        const std::string where = string_field(j, "scene", "own", "lesson");
-        if (where != "own" && where != "open")
-            throw UsageError(ui_message("wasm_bad_argument", {{"name", "lesson.scene"}, {"problem", where}}));
-        const LessonLibrary library;
-        const std::string wanted = name ? name : "";
-        const std::optional<Lesson> found = library.find(wanted, language);
-        if (!found) throw UsageError(ui_message("wasm_bad_argument", {{"name", "lesson"}, {"problem", wanted}}));
-        const Lesson& lesson = *found;
-        require_runnable(lesson);
-        const Scene own = library.scene(lesson.header.scene);
-        // "open": the page's scene at the page's w, the lesson's own when it is
-        // the same scene (by hash), else another scene as `lesson --scene FILE`.
-        const bool open = where == "open";
-        const Scene& scene = open ? open_scene() : own;
-        LessonRunOptions options;
-        options.w = open ? state().w : lesson.header.w;
-        options.own_scene = !open || scene_hash(scene) == scene_hash(own);
-        options.scene_file = options.own_scene ? lesson.header.scene : base_name(state().scene_file);
-        options.pixels = pixels_of(j, options.w);
-        if (options.pixels.empty())
-            for (const LessonPixel& pixel : lesson.header.pixels) {
-                if (pixel.i >= options.w || pixel.j >= options.w)
-                    throw UsageError(ui_message("lesson_pixel_outside", {{"i", std::to_string(pixel.i)},
-                                                                         {"j", std::to_string(pixel.j)},
-                                                                         {"w", std::to_string(options.w)}}));
-                options.pixels.push_back(pixel);
-            }
-        options.digits = lesson.header.digits;
-        if (j.contains("digits")) {
-            if (!j.at("digits").is_number_integer() || j.at("digits").get<int>() < 0 || j.at("digits").get<int>() > 40)
-                throw UsageError(ui_message("wasm_bad_argument", {{"name", "lesson.digits"}, {"problem", "not 0 ... 40"}}));
-            options.digits = j.at("digits").get<int>();
-        }
-        options.real = lesson_real(lesson);
-        options.formula = lesson_formula(lesson);
-        if (options.real == RealType::long_double) throw UsageError(ui_message("wasm_no_long_double"));
-        options.spp = lesson.header.spp;
-        options.format = LessonFormat::html;
-        LessonRun run(lesson, scene, options);
+        const std::unique_ptr<LessonCall> call = lesson_call(name, options_json, false);
+        const Lesson& lesson = *call->lesson;
+        const LessonRunOptions& options = call->options;
         json pixels = json::array();
         for (const LessonPixel& p : options.pixels) pixels.push_back({p.i, p.j});
-        return json{{"name", lesson.header.name}, {"lang", std::string(language_code(language))},
-                    {"title", lesson.header.title}, {"scene", scene.name}, {"scene_file", options.scene_file},
-                    {"own_scene", options.own_scene}, {"w", options.w}, {"pixels", pixels},
-                    {"steps", lesson.steps.size()}, {"html", run.document()}}
+        json out = {{"name", lesson.header.name}, {"lang", std::string(language_code(call->language))},
+                    {"title", lesson.header.title}, {"scene", call->run->view().scene_name},
+                    {"scene_file", options.scene_file}, {"own_scene", options.own_scene}, {"w", options.w},
+                    {"pixels", pixels}, {"steps", lesson.steps.size()}, {"html", call->html}};
+        if (call->worksheet) {
+            out["blanks"] = blanks_json(*call->worksheet);
+            out["command"] = call->worksheet->check_command();
+            out["file"] = message(call->language, "worksheet_file");
+        }
+        return out.dump();
+    });
+}
+
+PROMYK_EXPORT const char* promyk_worksheet_file(const char* name, const char* options_json, const char* typed_json) {
+    return answer([&] {
+        const std::unique_ptr<LessonCall> call = lesson_call(name, options_json, true);
+        const nlohmann::json typed = object_argument(typed_json, "typed");
+        std::map<int, std::string> values;
+        for (auto it = typed.begin(); it != typed.end(); ++it) {
+            const std::string& key = it.key();
+            if (key.empty() || key.size() > 9 || key.find_first_not_of("0123456789") != std::string::npos || !it.value().is_string())
+                throw UsageError(ui_message("wasm_bad_argument", {{"name", "typed." + key}, {"problem", "not a blank's text"}}));
+            values[std::stoi(key)] = it.value().get<std::string>();
+        }
+        const Worksheet& worksheet = *call->worksheet;
+        // A comment first: which command checks the file (the reader skips it).
+        const std::string text = "# " + worksheet.check_command() + "\n" + worksheet.answer_lines(values);
+        return json{{"file", message(call->language, "worksheet_file")}, {"command", worksheet.check_command()}, {"text", text}}
             .dump();
+    });
+}
+
+PROMYK_EXPORT const char* promyk_check_answers(const char* name, const char* options_json, const char* answers_text) {
+    return answer([&] {
+        const std::unique_ptr<LessonCall> call = lesson_call(name, options_json, true);
+        const std::string file = message(call->language, "worksheet_file");
+        const std::vector<AnswerCheck> checks = check_lesson_answers(*call->run, answers_text ? answers_text : "", file);
+        const LessonView& view = call->run->view();
+        // Each mark with its blank, by pixel and key.
+        std::map<std::tuple<int, int, std::string>, int> blank_of;
+        for (const WorksheetBlank& blank : call->worksheet->blanks()) {
+            const auto [path, settings] = split_settings(blank.key);
+            blank_of[{blank.i, blank.j, qualified_path(path, blank.component, settings)}] = blank.number;
+        }
+        std::map<std::pair<int, int>, const PixelTrace*> trace_of;
+        for (const PixelTrace& trace : view.traces) trace_of.emplace(std::make_pair(trace.header.i, trace.header.j), &trace);
+        json marks = json::array();
+        for (const AnswerCheck& check : checks) {
+            const auto [path, settings] = split_settings(check.answer.key);
+            const std::string key = check.answer.key.empty() ? "" : qualified_path(path, check.answer.component, settings);
+            const auto found = trace_of.find({check.pixel.i, check.pixel.j});
+            const AnswerMark mark = answer_mark(check, found == trace_of.end() ? nullptr : found->second, view.vocabulary,
+                                                call->language, view.others);
+            const auto blank = blank_of.find({check.pixel.i, check.pixel.j, key});
+            marks.push_back({{"i", check.pixel.i}, {"j", check.pixel.j}, {"key", key},
+                             {"blank", blank == blank_of.end() ? json(nullptr) : json(blank->second)},
+                             {"verdict", verdict_name(check.verdict)}, {"id", mark.id}, {"text", mark.text},
+                             {"line", check.answer.line}});
+        }
+        const std::string report = answers_report(checks, view.traces, view.vocabulary, call->language, view.others);
+        std::string summary = report.substr(0, report.size() - 1);
+        summary = summary.substr(summary.rfind('\n') + 1);
+        return json{{"marks", marks}, {"all_right", all_right(checks)}, {"summary", summary}, {"report", report}}.dump();
     });
 }
 
