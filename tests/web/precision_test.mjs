@@ -190,6 +190,16 @@ try {
   await page.waitForFunction(() => document.getElementById('lab-legend-title').textContent === 'stracone cyfry');
   await page.click('#lang-switch button[data-lang="en"]');
 
+  // --- a pane the page does not recompute: the note says why and gives the command ---
+  const large = exportPage('large.html', ['--w', '300']);
+  page = await open(large);
+  await page.selectOption('#lab-overlay', 'error');
+  await page.waitForFunction(() => document.getElementById('lab-status').textContent.includes('does not compute this map again'));
+  const note = await page.textContent('#lab-status');
+  assert.ok(note.includes('w = 300 at spp 1 is 90000 samples') && note.includes('--w 300') && note.includes('--map error'), note);
+  assert.equal(await page.evaluate(() => window.promykLab.overlay()), null);
+  assert.equal(await page.isVisible('#lab-legend'), false);
+
   // --- the far sphere: float with the article's formula loses it, geometric brings it back ---
   const far = join(lessons, 'scenes', 'far_sphere.json');
   const farPage = exportPage('far.html', ['--scene', far, '--w', '32']);
@@ -203,13 +213,16 @@ try {
   const background = (bytes) => bytes.every((v) => v === bytes[0]);
   const inDouble = await image();
   assert.ok(!background(inDouble), 'double, article: the sphere is there');
-  await rendered(page, () => page.click('#lab-far button[data-real="float"][data-formula="article"]'));
+  // With the settings' own controls, as the lesson says it...
+  await rendered(page, () => page.selectOption('#real', 'float'));
   const lost = await image();
   assert.ok(lost.equals(cliImage('float', 'article')), 'float, article: as promyk render');
   assert.ok(background(lost), 'float, article: the sphere vanishes');
   assert.equal(await page.inputValue('#real'), 'float');
   assert.equal(await page.inputValue('#formula'), 'article');
+  // ... and with the lab's buttons, which set the same controls.
   await rendered(page, () => page.click('#lab-far button[data-real="float"][data-formula="geometric"]'));
+  assert.equal(await page.inputValue('#formula'), 'geometric');
   const back = await image();
   assert.ok(back.equals(cliImage('float', 'geometric')), 'float, geometric: as promyk render');
   assert.ok(!background(back), 'float, geometric: the sphere is back');

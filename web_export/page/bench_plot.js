@@ -63,8 +63,8 @@ export function markText(row, { t, number }) {
 function plotScene(scene, rows, words) {
   const { t } = words;
   const width = 640, height = 400;
-  const left = 78, right = 20, top = 16, bottom = 64;
-  const strip = 34; // the strips beyond the axes: 0, infinite, untimed
+  const left = 70, right = 12, top = 12, bottom = 56;
+  const strip = 48; // the strips beyond the axes: 0, infinite, untimed (room for a decade's number beside)
   const x0 = left + strip, x1 = width - right - strip;
   const y0 = height - bottom - strip, y1 = top;
   const [xLow, xHigh] = decades(rows.map((r) => r.max_error));
@@ -88,22 +88,33 @@ function plotScene(scene, rows, words) {
   }
   plot.append(defs);
   const axes = svg('g', { class: 'lab-axes', 'aria-hidden': 'true' });
+  // The whole area, strips included, and the log axes' box inside it.
+  axes.append(svg('rect', { x: left, y: y1, width: width - right - left, height: height - bottom - y1, class: 'lab-strips' }));
   axes.append(svg('rect', { x: x0, y: y1, width: x1 - x0, height: y0 - y1, class: 'lab-frame' }));
+  // Every decade's grid line; its number only where the numbers do not
+  // crowd (every second, fifth... decade), the ends always.
+  const labelled = (low, high, room, each) => {
+    const step = [1, 2, 3, 5, 10, 20, 50].find((s) => ((high - low) / s) * each <= room) || 100;
+    return (k) => (k - low) % step === 0;
+  };
+  const xLabelled = labelled(xLow, xHigh, x1 - x0, 52);
+  const yLabelled = labelled(yLow, yHigh, y0 - y1, 18);
+  const below = height - bottom + 14; // the x numbers: under the untimed strip
   for (let k = xLow; k <= xHigh; ++k) {
     const at = x(10 ** k);
     axes.append(svg('line', { x1: at, x2: at, y1, y2: y0, class: 'lab-grid' }));
-    axes.append(svg('text', { x: at, y: y0 + 16, 'text-anchor': 'middle' }, decade(k)));
+    if (xLabelled(k)) axes.append(svg('text', { x: at, y: below, 'text-anchor': 'middle' }, decade(k)));
   }
   for (let k = yLow; k <= yHigh; ++k) {
     const at = y(10 ** k);
     axes.append(svg('line', { x1: x0, x2: x1, y1: at, y2: at, class: 'lab-grid' }));
-    axes.append(svg('text', { x: x0 - 6, y: at + 4, 'text-anchor': 'end' }, decade(k)));
+    if (yLabelled(k)) axes.append(svg('text', { x: left - 6, y: at + 4, 'text-anchor': 'end' }, decade(k)));
   }
   // The strips' names, where a mark in them sits.
-  axes.append(svg('text', { x: left + strip / 2, y: y0 + 16, 'text-anchor': 'middle' }, '0'));
-  axes.append(svg('text', { x: width - right - strip / 2, y: y0 + 16, 'text-anchor': 'middle' }, '∞'));
-  axes.append(svg('text', { x: x0 - 6, y: height - bottom - strip / 2 + 4, 'text-anchor': 'end' }, '—'));
-  axes.append(svg('text', { x: (x0 + x1) / 2, y: height - 26, 'text-anchor': 'middle', class: 'lab-axis-title' }, t('lab_bench_axis_x')));
+  axes.append(svg('text', { x: left + strip / 2, y: below, 'text-anchor': 'middle' }, '0'));
+  axes.append(svg('text', { x: width - right - strip / 2, y: below, 'text-anchor': 'middle' }, '∞'));
+  axes.append(svg('text', { x: left - 6, y: height - bottom - strip / 2 + 4, 'text-anchor': 'end' }, '—'));
+  axes.append(svg('text', { x: (x0 + x1) / 2, y: height - 24, 'text-anchor': 'middle', class: 'lab-axis-title' }, t('lab_bench_axis_x')));
   axes.append(svg('text', { x: (x0 + x1) / 2, y: height - 8, 'text-anchor': 'middle', class: 'lab-axis-note' },
     `0 = ${t('lab_bench_exact')} · ∞ = ${t('lab_bench_infinite')} · — = ${t('lab_bench_untimed')}`));
   const yTitle = svg('text', { x: 14, y: (y0 + y1) / 2, 'text-anchor': 'middle', class: 'lab-axis-title', transform: `rotate(-90 14 ${(y0 + y1) / 2})` }, t('lab_bench_axis_y'));

@@ -111,7 +111,10 @@ async function start() {
       state.formula = formula;
       settingsChanged();
     },
-    command: (kind) => `promyk render --scene ${scene.edited ? editedFile : exported.file || 'SCENE'} --w ${scene.w} --real ${state.real} --formula ${state.formula} --spp ${state.spp} --map ${kind} --legend -o ${kind}.png`,
+    command: (kind) => {
+      const file = scene.edited ? editedFile : exported.file; // '': the built-in scene
+      return `promyk render${file ? ` --scene ${file}` : ''} --w ${scene.w} --real ${state.real} --formula ${state.formula} --spp ${state.spp} --map ${kind} --legend -o ${kind}.png`;
+    },
   });
   const labImage = () => {
     const [, , real, formula, spp] = JSON.parse(shownImage);

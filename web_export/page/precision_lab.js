@@ -75,7 +75,7 @@ export class PrecisionLab {
     const bar = element('div', { class: 'lab-bar' });
     bar.append(element('canvas', { id: 'lab-bar', width: '256', height: '14', role: 'img' }), element('div', { id: 'lab-ticks', class: 'lab-ticks' }));
     legend.append(bar, element('p', { id: 'lab-range' }), element('ul', { id: 'lab-swatches' }));
-    box.append(row, element('p', { id: 'lab-source', class: 'note' }), element('p', { id: 'lab-status', class: 'note', role: 'status' }), legend);
+    box.append(row, element('p', { id: 'lab-intro', class: 'note', hidden: '' }), element('p', { id: 'lab-source', class: 'note' }), element('p', { id: 'lab-status', class: 'note', role: 'status' }), legend);
     const far = element('div', { id: 'lab-far', hidden: '' });
     far.append(element('p', { id: 'lab-far-text', class: 'note' }));
     const tries = element('div', { class: 'row' });
@@ -115,6 +115,7 @@ export class PrecisionLab {
     }));
     this.select.value = this.kind;
     $('lab-fix-label').textContent = t('lab_fix_range');
+    $('lab-intro').textContent = t('lab_intro');
     $('lab-far-text').textContent = t('lab_far_sphere');
     for (const button of document.querySelectorAll('#lab-far button'))
       button.textContent = t('lab_try', { real: button.dataset.real, formula: button.dataset.formula });
@@ -144,6 +145,7 @@ export class PrecisionLab {
   async refresh() {
     const kind = this.kind;
     this.fixBox.disabled = kind !== 'error';
+    $('lab-intro').hidden = !kind;
     const current = this.current;
     if (!kind || !current) {
       this.hide(kind && !current ? t('lab_computing', { percent: 0 }) : '');
@@ -155,8 +157,11 @@ export class PrecisionLab {
       this.show(kind, current.key, cached.values, cached.source);
       return;
     }
-    if (current.w > this.maxW) {
-      this.hide(t('lab_too_large', { w: current.w, max: this.maxW, pixels: current.w * current.w, command: this.command(kind) }));
+    // The page computes maps of up to max_w² samples (w² · spp): at
+    // w = 256 a float error map takes about a second in four workers.
+    const samples = current.w * current.w * current.settings.spp;
+    if (samples > this.maxW * this.maxW) {
+      this.hide(t('lab_too_large', { w: current.w, spp: current.settings.spp, samples, max: this.maxW * this.maxW, command: this.command(kind) }));
       return;
     }
     const job = ++this.job;
