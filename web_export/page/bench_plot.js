@@ -103,7 +103,9 @@ function plotScene(scene, rows, words) {
   for (let k = xLow; k <= xHigh; ++k) {
     const at = x(10 ** k);
     axes.append(svg('line', { x1: at, x2: at, y1, y2: y0, class: 'lab-grid' }));
-    if (xLabelled(k)) axes.append(svg('text', { x: at, y: below, 'text-anchor': 'middle' }, decade(k)));
+    // The end numbers lean inwards, clear of the strips' 0 and ∞.
+    const anchor = k === xLow ? 'start' : k === xHigh ? 'end' : 'middle';
+    if (xLabelled(k)) axes.append(svg('text', { x: at, y: below, 'text-anchor': anchor }, decade(k)));
   }
   for (let k = yLow; k <= yHigh; ++k) {
     const at = y(10 ** k);
