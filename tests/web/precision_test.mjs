@@ -126,6 +126,9 @@ try {
   // The keyboard: a mark takes the focus and says its numbers.
   await page.focus('.lab-mark[data-row="5"]');
   assert.ok((await page.textContent('#lab-bench-readout')).includes(says(bench.results[5])[0]), 'a focused mark says its numbers');
+  assert.equal(bench.results[6].scene, bench.results[5].scene);
+  await page.keyboard.press('Tab'); // the next mark
+  assert.ok((await page.textContent('#lab-bench-readout')).includes(says(bench.results[6])[0]), 'Tab walks the marks');
   await page.locator('#lab-panel').screenshot({ path: join(work, 'lab_plot.png') });
 
   // --- the error overlay of the exported image: render --map error's pixels ---
@@ -181,6 +184,8 @@ try {
   const digits = await overlay(page, 'digits-lost', 'page');
   assert.ok(digits.rgb.equals(cliMap('digits-lost', { w, real: 'float' }).rgb), 'the digits-lost overlay is render --map digits-lost');
   assert.equal(await page.textContent('#lab-legend-title'), 'digits lost');
+  const digitsHover = / · digits-lost map: (.+)$/.exec(await hoverPixel(page, Math.floor(lit / w), lit % w, w));
+  assert.ok(digitsHover && (digitsHover[1] === 'none lost' || numberIn(digitsHover[1]) > 0), 'hovering says the digits lost');
 
   // axe-core with the lab open (an overlay, its legend, the plot).
   assert.deepEqual(await axeViolations(page), [], 'axe-core: serious or critical violations');
