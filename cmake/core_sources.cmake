@@ -34,6 +34,9 @@ set(PROMYK_PORTABLE_SOURCES
   render/isa.cpp
   render/maps.cpp
   image/map_colours.cpp
+  # The page's error and digits-lost overlays and their legends (issue 17).
+  image/map_legend.cpp
+  render/map_overlay.cpp
   trace/json_text.cpp
   trace/trace_json.cpp
   trace/trace_read.cpp
@@ -66,7 +69,6 @@ set(PROMYK_PORTABLE_SOURCES
 # The command line's core only (not needed by the page's C API).
 set(PROMYK_NATIVE_CORE_SOURCES
   render/pixel_selection.cpp
-  image/map_legend.cpp
   render/scene_report.cpp
   render/trace_size.cpp
   lesson/trace_diff.cpp

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -19,6 +20,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "app/accuracy_file.hpp"
 #include "app/cli_values.hpp"
 #include "app/trace_limit.hpp"
 #include "app/commands.hpp"
@@ -45,6 +47,12 @@ constexpr int max_export_w = 2048;
 // The largest trace file a page embeds: the browser holds it twice (the text
 // and the tracer's copy), and the page must stay small enough to e-mail.
 constexpr std::uintmax_t max_embedded_traces = std::uintmax_t{16} << 20;
+// The largest bench file (promyk bench accuracy --json is a few kB a scene).
+constexpr std::size_t max_bench_bytes = std::size_t{16} << 20;
+// The largest pane whose error and digits-lost maps the page gets: each is a
+// double a pixel (512 kB at 256), and the page recomputes them in its
+// workers when the scene or the settings change.
+constexpr int max_overlay_w = 256;
 
 struct ExportOptions {
     std::string scene_file;
@@ -52,6 +60,7 @@ struct ExportOptions {
     std::string traces_file;
     std::string output = "promyk.html";
     std::string max_trace_size;  // --max-trace-size; empty: the default limit
+    std::string bench_file;      // --bench: promyk bench accuracy --json's file
 };
 
 // 1.2 MB, 350 kB: SI units, as disk sizes are sold.
@@ -91,6 +100,24 @@ std::string branch_map_bytes(const Scene& scene, int w) {
             if (branch_colour(static_cast<BranchCategory>(c)).rgb == colour) categories[p] = static_cast<char>(c);
     }
     return categories;
+}
+
+// A scalar map's stored value of every pixel (render/maps.hpp,
+// map_stored_value), in row order, as little-endian doubles: the page
+// colours them with the same C++ (map_overlay, in its wasm) and hovers them.
+std::string map_values_bytes(MapKind kind, const Scene& scene, int w) {
+    const std::unique_ptr<MapKernel> map = make_map_kernel(kind, scene, RealType::double_, Formula::article, 1, w,
+                                                           std::pair<double, double>{1e-20, 1});
+    std::string bytes;
+    bytes.reserve(static_cast<std::size_t>(w) * static_cast<std::size_t>(w) * 8);
+    for (int i = 0; i < w; ++i)
+        for (int j = 0; j < w; ++j) {
+            const double value = map->pixel_value(w, i, j);
+            std::uint64_t bits;
+            std::memcpy(&bits, &value, sizeof bits);
+            for (int b = 0; b < 8; ++b) bytes += static_cast<char>((bits >> (8 * b)) & 0xFF);
+        }
+    return bytes;
 }
 
 // The trace file's text, refused when too large to embed (with its size and
@@ -171,7 +198,9 @@ int run_export(const ExportOptions& options) {
     const OutputTarget target = inspect_output(options.output);
     if (target.kind == OutputKind::standard_output && ::isatty(STDOUT_FILENO))
         throw UsageError(ui_message("export_stdout_terminal"));
-    require_outputs_not_inputs({{"-o", target}}, {{"--scene", options.scene_file}, {"--traces", options.traces_file}});
+    require_outputs_not_inputs({{"-o", target}}, {{"--scene", options.scene_file},
+                                                  {"--traces", options.traces_file},
+                                                  {"--bench", options.bench_file}});
 
     // The scene's own text goes into the page, so the page's tracer reads
     // exactly what --scene read here.
@@ -191,6 +220,11 @@ int run_export(const ExportOptions& options) {
         traces = read_traces(options.traces_file);
         check_traces(traces, options.traces_file, scene, options.w);
     }
+    // The bench results, checked before anything is computed (exit 3, nothing written).
+    nlohmann::json bench;
+    if (!options.bench_file.empty())
+        bench = read_accuracy_file(
+            cli::read_input_file(options.bench_file, "--bench reads", max_bench_bytes, "--bench"), options.bench_file);
 
     const int channels = image_channels(scene);
     RowsSink image(static_cast<std::size_t>(options.w) * static_cast<std::size_t>(channels));
@@ -211,7 +245,21 @@ int run_export(const ExportOptions& options) {
         {"branch_map", base64(branch_map_bytes(scene, options.w))},
         {"traces_file", options.traces_file},
         {"traces", base64(traces)},
+        // The precision lab: the error and digits-lost maps of the image's
+        // settings (null above max_overlay_w), and the bench results (null: none).
+        {"maps", nullptr},
+        {"bench_file", options.bench_file},
+        {"bench", bench},
     };
+    if (options.w <= max_overlay_w)
+        data["maps"] = {{"real", "double"},
+                        {"formula", "article"},
+                        {"spp", 1},
+                        {"max_w", max_overlay_w},
+                        {"error", base64(map_values_bytes(MapKind::error, scene, options.w))},
+                        {"digits_lost", base64(map_values_bytes(MapKind::digits_lost, scene, options.w))}};
+    else
+        data["maps"] = {{"max_w", max_overlay_w}};
     const std::size_t at = page.find(web_page_data_marker);
     OutputFile out(target);
     out.write(page.substr(0, at));
@@ -247,6 +295,12 @@ std::function<int()> setup_export(CLI::App& app) {
         ->type_name("FILE")
         ->check(non_empty())
         ->capture_default_str();
+    cmd->add_option("--bench", options->bench_file,
+                    "Embed the results of promyk bench accuracy --json FILE and plot them in the page: time\n"
+                    "(ratio to double/article) against error, one mark per real type x formula x spp, per scene.\n"
+                    "A file that is not such JSON is refused (exit 3) and nothing is written")
+        ->type_name("FILE")
+        ->check(non_empty());
     add_max_trace_size_option(*cmd, options->max_trace_size);
     cmd->footer(
         "The page opens from disk with no server and no network: it runs promyk's own tracer compiled to\n"

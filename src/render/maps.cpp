@@ -130,6 +130,10 @@ public:
         return sum_rows(rows(), std::move(names));
     }
 
+    double pixel_value(int w, int i, int j) const override {
+        return static_cast<double>(branch_category(kernel().notes(w, i, j)));
+    }
+
     std::string description() const override { return ui_message("map_description_branch"); }
     MapKind kind() const override { return MapKind::branch; }
 };
@@ -185,19 +189,12 @@ public:
         return counts;
     }
 
+    double pixel_value(int w, int i, int j) const override { return encode(value(w, i, j)); }
+
     bool deferred() const override { return stored_size_ > 0; }
     const ColourScale* colour_scale() const override { return scale_ ? &*scale_ : nullptr; }
 
-    void settle() override {
-        double smallest = 0, largest = 0;
-        for (std::size_t k = 0; k < stored_size_; ++k) {
-            const double v = stored_[k];
-            if (!(v > 0)) continue;
-            if (smallest == 0 || v < smallest) smallest = v;
-            largest = std::max(largest, v);
-        }
-        scale_ = smallest > 0 ? error_scale_of_run(smallest, largest) : fallback_error_scale();
-    }
+    void settle() override { scale_ = scalar_map_scale(kind(), RealType::double_, stored_.get(), stored_size_); }
 
     void replay_row(int w, int i, std::uint8_t* out) const override {
         RowTally& tally = row_tally(i);
@@ -229,11 +226,11 @@ private:
     static double encode(const ScalarPixel& pixel) {
         switch (pixel.kind) {
             case ScalarPixel::Kind::zero:
-                return 0;
+                return map_stored_value::zero;
             case ScalarPixel::Kind::branch_differs:
-                return -1;
+                return map_stored_value::branch_differs;
             case ScalarPixel::Kind::non_finite:
-                return -2;
+                return map_stored_value::non_finite;
             case ScalarPixel::Kind::value:
                 break;
         }
@@ -241,35 +238,34 @@ private:
     }
     static ScalarPixel decode(double stored) {
         ScalarPixel pixel;
-        pixel.kind = stored > 0    ? ScalarPixel::Kind::value
-                     : stored == 0 ? ScalarPixel::Kind::zero
-                     : stored == -1 ? ScalarPixel::Kind::branch_differs
-                                    : ScalarPixel::Kind::non_finite;
+        pixel.kind = stored > 0                                   ? ScalarPixel::Kind::value
+                     : stored == map_stored_value::zero           ? ScalarPixel::Kind::zero
+                     : stored == map_stored_value::branch_differs ? ScalarPixel::Kind::branch_differs
+                                                                  : ScalarPixel::Kind::non_finite;
         pixel.value = stored;
         return pixel;
     }
 
     void colour(const ScalarPixel& pixel, RowTally& tally, int j, std::uint8_t* out) const {
-        Rgb8 colour;
         int category;
         switch (pixel.kind) {
             case ScalarPixel::Kind::zero:
-                colour = zero_.rgb, category = 0;
+                category = 0;
                 break;
             case ScalarPixel::Kind::branch_differs:
-                colour = branch_differs_colour().rgb, category = category_count() - 2;
+                category = category_count() - 2;
                 break;
             case ScalarPixel::Kind::non_finite:
-                colour = non_finite_error_colour().rgb, category = category_count() - 1;
+                category = category_count() - 1;
                 break;
             case ScalarPixel::Kind::value:
             default:
-                colour = (*scale_)(pixel.value), category = 1 + bin(pixel.value);
+                category = 1 + bin(pixel.value);
                 if (pixel.value > tally.largest) tally.largest = pixel.value, tally.largest_j = j;
                 break;
         }
         tally.add(category, j);
-        put(out, j, colour);
+        put(out, j, scalar_map_colour(kind(), *scale_, encode(pixel)));
     }
 
     // Steps of the scale: decades on a log axis (the last one shorter when
@@ -401,6 +397,25 @@ BranchCategory branch_category(const PixelNotes& notes) {
             break;
     }
     return BranchCategory::miss;
+}
+
+Rgb8 scalar_map_colour(MapKind kind, const ColourScale& scale, double stored) {
+    if (stored > 0) return scale(stored);
+    if (stored == map_stored_value::zero) return kind == MapKind::error ? exact_colour().rgb : none_lost_colour().rgb;
+    if (stored == map_stored_value::branch_differs) return branch_differs_colour().rgb;
+    return non_finite_error_colour().rgb;
+}
+
+ColourScale scalar_map_scale(MapKind kind, RealType real, const double* stored, std::size_t count) {
+    if (kind != MapKind::error) return digits_lost_scale(real);
+    double smallest = 0, largest = 0;
+    for (std::size_t k = 0; k < count; ++k) {
+        const double v = stored[k];
+        if (!(v > 0)) continue;
+        if (smallest == 0 || v < smallest) smallest = v;
+        largest = std::max(largest, v);
+    }
+    return smallest > 0 ? error_scale_of_run(smallest, largest) : fallback_error_scale();
 }
 
 std::unique_ptr<MapKernel> make_map_kernel(MapKind kind, const Scene& scene, RealType real, Formula formula, int spp,

@@ -73,6 +73,10 @@ public:
     virtual bool deferred() const { return false; }
     virtual void settle() {}
     virtual void replay_row(int w, int i, std::uint8_t* out) const { (void)w, (void)i, (void)out; }
+    // One pixel's value as a scalar map keeps it (map_stored_value), computed
+    // anew: what export embeds and the page's hover reads. The branch map:
+    // the pixel's BranchCategory index.
+    virtual double pixel_value(int w, int i, int j) const = 0;
 
 protected:
     using Kernel::Kernel;
@@ -89,5 +93,21 @@ inline constexpr int max_w_for_run_range = 4096;
 std::unique_ptr<MapKernel> make_map_kernel(MapKind kind, const Scene& scene, RealType real, Formula formula,
                                            int spp, int w,
                                            std::optional<std::pair<double, double>> error_range = std::nullopt);
+
+// A scalar map's pixel as one double: the value (> 0), or one of the cases
+// with a colour of their own.
+namespace map_stored_value {
+inline constexpr double zero = 0;             // exact (error), none lost (digits-lost)
+inline constexpr double branch_differs = -1;  // error map only
+inline constexpr double non_finite = -2;
+}  // namespace map_stored_value
+
+// The colour `render --map` draws for a stored value of a scalar map (error
+// or digits-lost) on `scale`: one definition for the CLI, export and the page.
+Rgb8 scalar_map_colour(MapKind kind, const ColourScale& scale, double stored);
+// The scale a map's stored values make when no range is given: the error
+// map's run range (error_scale_of_run, or the fallback without a non-zero
+// finite error), the digits-lost map's type's scale (digits_lost_scale).
+ColourScale scalar_map_scale(MapKind kind, RealType real, const double* stored, std::size_t count);
 
 }  // namespace promyk

@@ -82,3 +82,20 @@ if(NOT PROMYK_SANITIZE AND PROMYK_WEB_PAGE_BUILT)
                    "${PROMYK_NPM_MODULES}" "${PROJECT_SOURCE_DIR}/lessons" "${CMAKE_CURRENT_BINARY_DIR}/web/worksheet")
   set_tests_properties(web.worksheet PROPERTIES TIMEOUT 600)
 endif()
+
+# The precision lab (issue 17): export --bench embeds and checks a bench file
+# (tests/cli/export_bench_test.sh); in the browser (tests/web/precision_test.mjs)
+# the bench plot, the error and digits-lost overlays against `render --map`,
+# the fixed range, the far sphere's type and formula, axe-core.
+if(PROMYK_WEB_PAGE_BUILT)
+  add_test(NAME cli.export_bench COMMAND "${CMAKE_CURRENT_SOURCE_DIR}/cli/export_bench_test.sh" $<TARGET_FILE:promyk>
+                                         "${CMAKE_CURRENT_BINARY_DIR}/cli/export_bench"
+                                         "${CMAKE_CURRENT_SOURCE_DIR}/web/data/accuracy_w8.json")
+endif()
+if(NOT PROMYK_SANITIZE AND PROMYK_WEB_PAGE_BUILT)
+  add_test(NAME web.precision
+           COMMAND "${PROMYK_NODE}" "${CMAKE_CURRENT_SOURCE_DIR}/web/precision_test.mjs" $<TARGET_FILE:promyk>
+                   "${PROMYK_NPM_MODULES}" "${PROJECT_SOURCE_DIR}/lessons" "${CMAKE_CURRENT_BINARY_DIR}/web/precision"
+                   "${CMAKE_CURRENT_SOURCE_DIR}/web/data/accuracy_w8.json")
+  set_tests_properties(web.precision PROPERTIES TIMEOUT 600)
+endif()

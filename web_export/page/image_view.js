@@ -77,6 +77,7 @@ export class ImageView {
     this.legend = [];
     this.traced = null; // Set of "i,j"
     this.atlas = false;
+    this.overlay = null; // the precision lab's map: a w × w bitmap, drawn over the image and the atlas
     this.selected = null;
     this.base = this.imageBitmap();
     canvas.addEventListener('click', (event) => {
@@ -143,6 +144,12 @@ export class ImageView {
     }
     ctx.putImageData(pixels, 0, 0);
     return bitmap;
+  }
+
+  // The precision lab's overlay: `rgb` (3 bytes a pixel, w × w, as
+  // `render --map` draws it), or null for none.
+  setOverlay(rgb) {
+    this.overlay = rgb ? this.makeBitmap((p) => rgb.subarray(3 * p, 3 * p + 3)) : null;
   }
 
   // The atlas's layers are made when the atlas is first shown (atlasParts).
@@ -287,6 +294,7 @@ export class ImageView {
     const z = this.zoom;
     // The atlas covers the image (the colours of render --map branch, exactly).
     if (this.atlas && this.legend.length) ctx.drawImage(this.atlasLayer(side), 0, 0);
+    if (this.overlay && this.overlay.width === this.w) ctx.drawImage(this.overlay, 0, 0, side, side);
     if (this.traced) {
       // A traced pixel of the trace file: a small magenta corner mark.
       ctx.fillStyle = '#CC79A7';

@@ -11,6 +11,7 @@ import { RenderPool } from './render_pool.js';
 import { SceneEditor, modelOf, sceneText, maxW } from './scene_editor.js';
 import { timed, measureSince } from './timing.js';
 import { Lessons } from './lessons.js';
+import { PrecisionLab } from './precision_lab.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -79,9 +80,10 @@ async function start() {
         return;
       }
       const category = legend.categories.find((c) => c.index === image.category(pixel[0], pixel[1]));
+      const overlay = lab.hoverText(pixel[0], pixel[1]); // the precision lab's map's value, if shown
       $('hover').textContent = t('page_hover', {
         i: pixel[0], j: pixel[1], value: image.grey(pixel[0], pixel[1]), branch: category ? category.name : '',
-      });
+      }) + (overlay ? ` · ${overlay}` : '');
     },
   });
   const derivation = new Derivation($('steps'), $('outcome'));
@@ -101,6 +103,25 @@ async function start() {
   let wantedImage = shownImage;
   let pool = null;
   let renders = 0;
+  // The precision lab: the error and digits-lost overlays, the bench plot.
+  const lab = new PrecisionLab({
+    M, data, image, exportedKey: shownImage,
+    pool: () => { startPool(); return pool; },
+    redraw: () => redraw(),
+    setSettings: (real, formula) => {
+      state.real = real;
+      state.formula = formula;
+      settingsChanged();
+    },
+    command: (kind) => {
+      const file = scene.edited ? editedFile : exported.file; // '': the built-in scene
+      return `promyk render${file ? ` --scene ${file}` : ''} --w ${scene.w} --real ${state.real} --formula ${state.formula} --spp ${state.spp} --map ${kind} --legend -o ${kind}.png`;
+    },
+  });
+  const labImage = () => {
+    const [, , real, formula, spp] = JSON.parse(shownImage);
+    lab.imageShown({ key: shownImage, text: scene.text, file: scene.file, w: scene.w, sceneName: opened.scene, settings: { real, formula, spp } });
+  };
 
   // --- the scene panel ---
 
@@ -226,8 +247,10 @@ async function start() {
       if (pool) pool.cancel(); // the image shown is wanted again: the render under way is not
       renderStatus();
       askFrame();
+      labImage();
       return;
     }
+    lab.imageWanted();
     const started = performance.now();
     const edited = editStarted ?? started;
     editStarted = null;
@@ -245,6 +268,7 @@ async function start() {
       shownImage = key;
       timed('show', () => {
         timed('show-image', () => image.setImage(result));
+        labImage(); // the overlay of this image (after it: the overlay has its w)
         drawAfterImage('legend', () => timed('legend', drawLegend)); // its counts: after the image
         timed('show-redraw', redraw);
       });
@@ -522,6 +546,7 @@ async function start() {
     drawCommand();
     redrawTrace();
     lessons.setLanguage(state.lang);
+    lab.setLanguage(state.lang);
   }
 
   function describeScene() {
@@ -664,6 +689,7 @@ async function start() {
   $('status').textContent = '';
   editor.set(modelOf(exportedContent), exported.w);
   applyLanguage();
+  labImage();
   openFragmentScene();
   renderImage();
   if (data.traces) openTraces(bytesOf(data.traces), data.traces_file);

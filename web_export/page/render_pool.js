@@ -48,6 +48,15 @@ function promykRenderWorker() {
           checked(M.ccall('promyk_open_scene', 'string', ['number', 'number', 'number'], [a, b, m.w]))));
         opened = m.sceneKey;
       }
+      if (m.mapKind) {
+        // A map's values (the precision lab): one double a pixel.
+        const v = withText(m.mapKind, (k) => withText(JSON.stringify(m.settings), (s) =>
+          checked(M.ccall('promyk_map_values', 'string', ['number', 'number', 'number', 'number'], [k, m.first, m.count, s]))));
+        const values = M.HEAPU8.slice(v.values, v.values + v.values_bytes);
+        const ms = performance.now() - started;
+        self.postMessage({ type: 'rows', job: m.job, first: m.first, count: m.count, values, ms }, [values.buffer]);
+        return;
+      }
       const r = withText(JSON.stringify(m.settings), (s) =>
         checked(M.ccall('promyk_render_rows', 'string', ['number', 'number', 'number'], [m.first, m.count, s])));
       const image = M.HEAPU8.slice(r.image, r.image + r.image_bytes);
@@ -64,8 +73,10 @@ function promykRenderWorker() {
 // Pixels per chunk: a double chunk takes milliseconds, a quad one (software
 // binary128, about 100 times slower) about as long, so a superseded render
 // is dropped quickly in every type.
-function chunkRows(w, settings) {
-  const budget = (settings.real === 'quad' ? 256 : 16384) / Math.max(1, settings.spp || 1);
+// A map's pixel (the precision lab) costs about a quad one: the error map's
+// reference is quad, the digits-lost map traces the pixel.
+function chunkRows(w, settings, mapKind) {
+  const budget = (settings.real === 'quad' || mapKind ? 256 : 16384) / Math.max(1, settings.spp || 1);
   return Math.max(1, Math.min(w, Math.floor(budget / w)));
 }
 
@@ -99,7 +110,10 @@ export class RenderPool {
   // branch category of each pixel), or to null when a later render
   // superseded it (tracerMs: the workers' time in the tracer, summed over
   // the chunks). onProgress(rowsDone, w) after each chunk.
-  async render({ scene, file, w, settings }, onProgress = () => {}) {
+  // With `mapKind` ("error" or "digits-lost": the precision lab) it computes
+  // that map's values instead and resolves to {w, values} (a Float64Array of
+  // w·w stored values, render/maps.hpp), superseding and superseded as a render.
+  async render({ scene, file, w, settings, mapKind = '' }, onProgress = () => {}) {
     const number = ++this.jobs;
     if (this.job) this.job.finish(null); // superseded
     // Once the workers are up, the chunks go out before this returns: the
@@ -110,11 +124,11 @@ export class RenderPool {
       if (number !== this.jobs) return null;
     }
     return new Promise((resolve, reject) => {
-      const rows = chunkRows(w, settings);
+      const rows = chunkRows(w, settings, mapKind);
       const chunks = [];
       for (let first = 0; first < w; first += rows) chunks.push([first, Math.min(rows, w - first)]);
       const job = {
-        number, scene, file, w, settings, chunks, done: 0, channels: 0, image: null,
+        number, scene, file, w, settings, mapKind, values: mapKind ? new Float64Array(w * w) : null, chunks, done: 0, channels: 0, image: null,
         map: new Uint8Array(w * w), sceneKey: `${number}`, tracerMs: 0,
         finish: (value, error) => {
           if (this.job === job) this.job = null;
@@ -142,7 +156,7 @@ export class RenderPool {
     slot.busy = true;
     slot.worker.postMessage({
       type: 'rows', job: job.number, sceneKey: job.sceneKey, scene: job.scene, file: job.file, w: job.w,
-      settings: job.settings, first, count,
+      settings: job.settings, mapKind: job.mapKind, first, count,
     });
   }
 
@@ -152,6 +166,12 @@ export class RenderPool {
     if (job && message.job === job.number) {
       if (message.type === 'error') {
         job.finish(null, new Error(message.message));
+      } else if (job.values) {
+        job.values.set(new Float64Array(message.values.buffer), message.first * job.w);
+        job.done += message.count;
+        job.tracerMs += message.ms;
+        job.onProgress(job.done, job.w);
+        if (job.done === job.w) job.finish({ w: job.w, values: job.values, tracerMs: job.tracerMs });
       } else {
         if (!job.image) {
           job.channels = message.channels;

@@ -23,6 +23,7 @@
 #include "lesson/lesson_run.hpp"
 #include "lesson/worksheet.hpp"
 #include "render/kernel.hpp"
+#include "render/map_overlay.hpp"
 #include "render/maps.hpp"
 #include "render/trace_pixel.hpp"
 #include "scene/scene_json.hpp"
@@ -842,6 +843,109 @@ PROMYK_EXPORT const char* promyk_check_answers(const char* name, const char* opt
         std::string summary = report.substr(0, report.size() - 1);
         summary = summary.substr(summary.rfind('\n') + 1);
         return json{{"marks", marks}, {"all_right", all_right(checks)}, {"summary", summary}, {"report", report}}.dump();
+    });
+}
+
+}  // extern "C"
+
+// ---- the precision lab (issue 17): the error and digits-lost overlays ----
+// (API.md, "The precision lab"). The map's values are computed by the render
+// workers, a share of the rows each, as export computes them natively
+// (MapKernel::pixel_value); the page's own instance colours the whole pane
+// and gives the legend (render/map_overlay.hpp), the same C++ as
+// `render --map`.
+
+namespace {
+
+MapKind lab_map_kind(const char* name) {
+    const std::optional<MapKind> kind = parse_map_name(name ? name : "");
+    if (!kind || *kind == MapKind::branch)
+        throw UsageError(ui_message("wasm_bad_argument", {{"name", "kind"}, {"problem", name ? name : ""}}));
+    return *kind;
+}
+
+struct LabState {
+    std::string key;                 // scene hash, w, kind, settings of `map`
+    std::unique_ptr<MapKernel> map;  // its values do not depend on the range given
+    std::vector<double> values;      // promyk_map_values' rows
+    std::vector<std::uint8_t> rgb;   // promyk_map_colour's pane
+};
+
+LabState& lab() {
+    static LabState s;
+    return s;
+}
+
+}  // namespace
+
+extern "C" {
+
+PROMYK_EXPORT const char* promyk_map_values(const char* kind_name, int first_row, int row_count,
+                                            const char* settings_json) {
+    return answer([&] {
+        const MapKind kind = lab_map_kind(kind_name);
+        const Scene& scene = open_scene();
+        const int w = state().w;
+        if (first_row < 0 || row_count < 1 || first_row >= w || row_count > w - first_row)
+            throw UsageError(ui_message("wasm_bad_argument", {{"name", "rows"},
+                                                             {"problem", std::to_string(first_row) + " + " +
+                                                                             std::to_string(row_count)}}));
+        const Settings settings = settings_of(settings_json);
+        const std::string key = scene_hash(scene) + "|" + std::to_string(w) + "|" + std::string(map_name(kind)) + "|" +
+                                std::string(real_type_name(settings.real)) + "|" +
+                                std::string(formula_name(settings.formula)) +
+                                "|" + std::to_string(settings.spp);
+        LabState& made = lab();
+        if (!made.map || made.key != key) {
+            made.map = make_map_kernel(kind, scene, settings.real, settings.formula, settings.spp, w,
+                                       std::pair<double, double>{1e-20, 1});
+            made.key = key;
+        }
+        made.values.assign(static_cast<std::size_t>(w) * static_cast<std::size_t>(row_count), 0);
+        for (int k = 0; k < row_count; ++k)
+            for (int j = 0; j < w; ++j)
+                made.values[static_cast<std::size_t>(k) * static_cast<std::size_t>(w) + static_cast<std::size_t>(j)] =
+                    made.map->pixel_value(w, first_row + k, j);
+        json out = {{"ok", true}, {"first_row", first_row}, {"rows", row_count}, {"w", w},
+                    {"values", reinterpret_cast<std::uintptr_t>(made.values.data())},
+                    {"values_bytes", made.values.size() * sizeof(double)}};
+        return out.dump();
+    });
+}
+
+PROMYK_EXPORT const char* promyk_map_colour(const char* kind_name, const char* settings_json, const double* values,
+                                            int count, const char* options_json) {
+    return answer([&] {
+        const MapKind kind = lab_map_kind(kind_name);
+        const Settings settings = settings_of(settings_json);
+        if (count < 0 || (count > 0 && values == nullptr))
+            throw UsageError(ui_message("wasm_bad_argument", {{"name", "count"}, {"problem", std::to_string(count)}}));
+        const nlohmann::json options = object_argument(options_json, "options");
+        const Language language = language_of(string_field(options, "lang", "en", "options"));
+        set_ui_language(language);
+        std::optional<std::pair<double, double>> range;
+        if (options.contains("range") && !options.at("range").is_null()) {
+            const nlohmann::json& r = options.at("range");
+            if (!r.is_array() || r.size() != 2 || !r[0].is_number() || !r[1].is_number() ||
+                !(r[0].get<double>() > 0) || !(r[1].get<double>() > r[0].get<double>()) ||
+                !std::isfinite(r[1].get<double>()))
+                throw UsageError(ui_message("wasm_bad_argument", {{"name", "options.range"}, {"problem", r.dump()}}));
+            range = std::pair<double, double>{r[0].get<double>(), r[1].get<double>()};
+        }
+        LabState& made = lab();
+        json out = map_overlay(kind, settings.real, values, static_cast<std::size_t>(count), range, language, made.rgb);
+        out["ok"] = true;
+        out["rgb"] = reinterpret_cast<std::uintptr_t>(made.rgb.data());
+        out["rgb_bytes"] = made.rgb.size();
+        return out.dump();
+    });
+}
+
+PROMYK_EXPORT const char* promyk_map_value_text(const char* kind_name, double stored, const char* lang) {
+    return answer([&] {
+        const MapKind kind = lab_map_kind(kind_name);
+        const Language language = language_of(lang ? lang : "en");
+        return json{{"text", map_value_text(kind, stored, language)}}.dump();
     });
 }
 
