@@ -142,7 +142,7 @@ TEST_CASE("an HTML worksheet has one labelled input a blank, well formed, in eve
     CHECK(inputs > 100);
 }
 
-TEST_CASE("a hostile lesson and scene in an HTML worksheet stay text; a blank in a formula leaves it", "[worksheet][html]") {
+TEST_CASE("a hostile lesson and scene in an HTML worksheet stay text, and a blank in a formula leaves it", "[worksheet][html]") {
     std::vector<LessonProblem> problems;
     const Lesson lesson = parse_lesson(hostile_lesson, "en/hostile.md", Language::en, problems);
     REQUIRE(problems.empty());

@@ -30,9 +30,13 @@ const controls = () => page.evaluate(() => {
   const selector = 'button, input, select, textarea, a[href], summary, [tabindex]:not([tabindex="-1"])';
   const name = (e) => e.id || e.getAttribute('aria-label') || (e.labels && e.labels[0] && e.labels[0].textContent.trim()) ||
     `${e.tagName.toLowerCase()}:${(e.textContent || e.name || '').trim().slice(0, 30)}`;
+  // A group of radio buttons is one stop of Tab (its checked button); the
+  // arrows move within it, checked below.
+  const radioStop = (e) => e.type !== 'radio' || e.checked ||
+    !document.querySelector(`input[type="radio"][name="${e.name}"]:checked`);
   return [...document.querySelectorAll(selector)]
     .filter((e) => !e.disabled && e.getClientRects().length > 0 && getComputedStyle(e).visibility !== 'hidden' &&
-      !e.closest('[hidden], [inert]') && e.tabIndex >= 0)
+      !e.closest('[hidden], [inert]') && e.tabIndex >= 0 && radioStop(e))
     .map((e, k) => {
       e.dataset.kbd = String(k);
       return name(e);
@@ -92,6 +96,18 @@ assert.deepEqual(noRing, [], `controls with no visible focus: ${noRing.join(', '
   const was = await pixel();
   await page.keyboard.press('ArrowRight');
   assert.notEqual(await pixel(), was, 'the arrow keys move the image\'s pixel');
+
+  // The arrows move within a group of radio buttons (the lesson's modes).
+  const radios = await page.$$eval('input[type="radio"]', (all) => all.filter((r) => r.getClientRects().length > 0).map((r) => r.name));
+  assert.ok(radios.length >= 2, 'a group of radio buttons on the page');
+  const group = radios[0];
+  const checked = () => page.$eval(`input[type="radio"][name="${group}"]:checked`, (r) => r.id || r.value);
+  await page.focus(`input[type="radio"][name="${group}"]:checked`);
+  const first = await checked();
+  await page.keyboard.press('ArrowRight');
+  assert.notEqual(await checked(), first, `the arrows move within the radio group ${group}`);
+  await page.keyboard.press('ArrowLeft');
+  assert.equal(await checked(), first);
 
   const slider = await page.$('#scene-panel input[type="range"]');
   assert.ok(slider, 'a slider in the scene panel');
