@@ -31,6 +31,7 @@ table=(
   "diff         7500   8192"
   "trace        5000  16384"
   "cli_values  30000     64"
+  "accuracy     4000  16384"
 )
 wanted=("$@")
 scale="${PROMYK_FUZZ_SCALE:-1}"
