@@ -6,6 +6,7 @@
 
 #include "trace/messages.hpp"
 #include "util/errors.hpp"
+#include "util/printable.hpp"
 
 namespace promyk::app {
 
@@ -70,6 +71,13 @@ json read_accuracy_file(const std::string& text, const std::string& path) {
         const std::size_t column = at - (start == std::string::npos || at == 0 ? 0 : start + 1) + 1;
         throw InputError(path, "", ui_message("bench_file_not_json", {{"line", std::to_string(line)},
                                                                       {"column", std::to_string(column)}}));
+    } catch (const json::out_of_range& e) {
+        // A number beyond double's range ("1e999"): the parser reports it
+        // apart from the syntax errors, quoting the number (found by fuzz_accuracy).
+        const std::string what = e.what();
+        const std::size_t open = what.find('\''), close = what.rfind('\'');
+        const std::string number = open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : "";
+        throw InputError(path, "", ui_message("bench_file_number_overflow", {{"number", printable(number)}}));
     }
     if (!file.is_object() || file.value("bench", json()) != "accuracy" || file.value("schema", json()) != 1)
         throw InputError(path, "", ui_message("bench_file_not_accuracy"));

@@ -91,6 +91,12 @@ if(PROMYK_WEB_PAGE_BUILT)
   add_test(NAME cli.export_bench COMMAND "${CMAKE_CURRENT_SOURCE_DIR}/cli/export_bench_test.sh" $<TARGET_FILE:promyk>
                                          "${CMAKE_CURRENT_BINARY_DIR}/cli/export_bench"
                                          "${CMAKE_CURRENT_SOURCE_DIR}/web/data/accuracy_w8.json")
+  # A number beyond double's range (fuzz_accuracy's finding: exit 70 before).
+  promyk_cli_test(export_bench_number_overflow ARGS export --bench ${CMAKE_CURRENT_SOURCE_DIR}/data/bench_number_overflow.json
+                  -o p.html EXIT 3 EMPTY
+                  STDERR "bench_number_overflow.json: the number 1e999 is too large for a double; promyk bench accuracy")
+  promyk_cli_test(export_bench_number_overflow_pl ARGS export --lang pl --bench ${CMAKE_CURRENT_SOURCE_DIR}/data/bench_number_overflow.json
+                  -o p.html EXIT 3 EMPTY STDERR "liczba 1e999 jest za duża dla typu double")
 endif()
 if(NOT PROMYK_SANITIZE AND PROMYK_WEB_PAGE_BUILT)
   add_test(NAME web.precision
