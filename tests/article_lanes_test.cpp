@@ -16,6 +16,7 @@
 
 #include "bench/article_literal.hpp"
 #include "hard_cases_support.hpp"
+#include "isa_forced.hpp"
 #include "render/article_row.hpp"
 #include "render/isa.hpp"
 #include "image/quantize.hpp"
@@ -175,11 +176,6 @@ std::vector<std::uint8_t> literal_grey(const ArticleWorld<double>& world, int w)
 }
 
 // Sets the path for a scope, and back to the one in use after.
-struct PathForced {
-    Isa before = article_isa();
-    explicit PathForced(Isa isa) { set_article_isa(isa); }
-    ~PathForced() { set_article_isa(before); }
-};
 
 }  // namespace
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "image/quantize.hpp"
+#include "isa_forced.hpp"
 #include "render/article_lanes.hpp"
 #include "render/article_row.hpp"
 #include "render/isa.hpp"
@@ -26,19 +27,13 @@ using namespace promyk;
 
 namespace {
 
-struct Forced {
-    Isa before = article_isa();
-    explicit Forced(Isa isa) { set_article_isa(isa); }
-    ~Forced() { set_article_isa(before); }
-};
-
 // Rows drawn against the traced path on every path; returns the pixels skipped.
 long long check_world(const ArticleWorld<double>& world, int w, int& mismatches) {
     NullRecorder none;
     std::vector<std::uint8_t> grey(static_cast<std::size_t>(w));
     long long skipped = 0;
     for (const Isa isa : supported_isas()) {
-        Forced forced(isa);
+        PathForced forced(isa);
         for (int i = 0; i < w; ++i) {
             const RowCounts drawn = render_row(world, w, i, grey.data());
             int misses = 0;

@@ -12,7 +12,7 @@
 // w = 256 with a pixel selected) to look at.
 import { spawnSync } from 'node:child_process';
 import { mkdirSync, rmSync, readFileSync, writeFileSync, statSync } from 'node:fs';
-import { startBrowser, runPromyk, exportPage as exportTo } from './harness.mjs';
+import { startBrowser, runPromyk, exportPage as exportTo, readNetpbm } from './harness.mjs';
 import { join } from 'node:path';
 import assert from 'node:assert/strict';
 
@@ -25,22 +25,6 @@ const everything = join(lessons, 'scenes', 'everything.json');
 const run = (args, cwd = work) => runPromyk(promyk, args, cwd);
 
 const exportPage = (name, args) => exportTo(promyk, work, name, args);
-
-// A binary PGM (P5) or PPM (P6) as {w, channels, bytes}.
-function readNetpbm(file) {
-  const data = readFileSync(file);
-  const header = [];
-  let at = 0;
-  while (header.length < 4) {
-    while (/\s/.test(String.fromCharCode(data[at]))) ++at;
-    let token = '';
-    while (!/\s/.test(String.fromCharCode(data[at]))) token += String.fromCharCode(data[at++]);
-    header.push(token);
-  }
-  ++at; // the one whitespace after maxval
-  const channels = header[0] === 'P6' ? 3 : 1;
-  return { w: Number(header[1]), channels, bytes: data.subarray(at) };
-}
 
 // bypassCSP: axe-core is injected as a script the page's CSP would refuse.
 const { browser, failures, open } = await startBrowser(modules, work, { acceptDownloads: true, bypassCSP: true });

@@ -4,6 +4,7 @@
 // but the page itself recorded as a failure; promyk run as the CLI user
 // would, in English.
 import { execFileSync } from 'node:child_process';
+import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
@@ -59,4 +60,41 @@ export function exportPage(promyk, work, name, args) {
   const file = join(work, name);
   runPromyk(promyk, ['export', '--lang', 'en', ...args, '-o', file], work);
   return file;
+}
+
+// A binary PGM (P5) or PPM (P6) as {w, channels, bytes}.
+export function readNetpbm(file) {
+  const data = readFileSync(file);
+  const header = [];
+  let at = 0;
+  while (header.length < 4) {
+    while (/\s/.test(String.fromCharCode(data[at]))) ++at;
+    let token = '';
+    while (!/\s/.test(String.fromCharCode(data[at]))) token += String.fromCharCode(data[at++]);
+    header.push(token);
+  }
+  ++at; // the one whitespace after maxval
+  const channels = header[0] === 'P6' ? 3 : 1;
+  return { w: Number(header[1]), channels, bytes: data.subarray(at) };
+}
+
+// A hash of the 3D canvas's pixels and how many differ from the background.
+export async function canvasPixels(page) {
+  return page.evaluate(() => {
+    window.promykPage.view3d(); // the drawing asked for (at most one a frame) done now
+    const gl = document.getElementById('view3d');
+    const copy = document.createElement('canvas');
+    copy.width = gl.width;
+    copy.height = gl.height;
+    const ctx = copy.getContext('2d');
+    ctx.drawImage(gl, 0, 0);
+    const data = ctx.getImageData(0, 0, copy.width, copy.height).data;
+    let drawn = 0;
+    let hash = 0;
+    for (let k = 0; k < data.length; k += 4) {
+      if (data[k] !== data[0] || data[k + 1] !== data[1] || data[k + 2] !== data[2]) ++drawn;
+      hash = (hash * 31 + data[k] + 7 * data[k + 1] + 13 * data[k + 2]) | 0;
+    }
+    return { drawn, hash, total: data.length / 4 };
+  });
 }

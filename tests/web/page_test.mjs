@@ -8,7 +8,7 @@
 // Leaves WORKDIR/page.png (a lit pixel at step D) to look at, and prints the
 // page's size, first paint and the time to trace one pixel (figures only).
 import { mkdirSync, rmSync, readFileSync, writeFileSync, statSync } from 'node:fs';
-import { startBrowser, runPromyk, exportPage as exportTo } from './harness.mjs';
+import { startBrowser, runPromyk, exportPage as exportTo, canvasPixels } from './harness.mjs';
 import { join } from 'node:path';
 import assert from 'node:assert/strict';
 
@@ -104,26 +104,6 @@ async function selected(page) {
   return fragment.get('p').split(',').map(Number);
 }
 
-// A hash of the 3D canvas's pixels and how many differ from the background.
-async function canvasPixels(page) {
-  return page.evaluate(() => {
-    window.promykPage.view3d(); // the drawing asked for (at most one a frame) done now
-    const gl = document.getElementById('view3d');
-    const copy = document.createElement('canvas');
-    copy.width = gl.width;
-    copy.height = gl.height;
-    const ctx = copy.getContext('2d');
-    ctx.drawImage(gl, 0, 0);
-    const data = ctx.getImageData(0, 0, copy.width, copy.height).data;
-    let drawn = 0;
-    let hash = 0;
-    for (let k = 0; k < data.length; k += 4) {
-      if (data[k] !== data[0] || data[k + 1] !== data[1] || data[k + 2] !== data[2]) ++drawn;
-      hash = (hash * 31 + data[k] + 7 * data[k + 1] + 13 * data[k + 2]) | 0;
-    }
-    return { drawn, hash, total: data.length / 4 };
-  });
-}
 
 // The image canvas at each zoom the page offers, smallest first: calls
 // `check(zoom)` at every one (the zoom buttons are disabled at the ends).

@@ -14,7 +14,7 @@ import { spawnSync } from 'node:child_process';
 import { mkdirSync, rmSync, readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import assert from 'node:assert/strict';
-import { startBrowser, runPromyk, exportPage as exportTo } from './harness.mjs';
+import { startBrowser, runPromyk, exportPage as exportTo, readNetpbm } from './harness.mjs';
 
 const [promyk, modules, lessons, work, benchJson] = process.argv.slice(2);
 
@@ -23,20 +23,6 @@ mkdirSync(work, { recursive: true });
 const run = (args) => runPromyk(promyk, args, work);
 const exportPage = (name, args) => exportTo(promyk, work, name, args);
 
-// A binary PPM (P6) or PGM (P5) as {w, channels, bytes}.
-function readNetpbm(file) {
-  const data = readFileSync(file);
-  const header = [];
-  let at = 0;
-  while (header.length < 4) {
-    while (/\s/.test(String.fromCharCode(data[at]))) ++at;
-    let token = '';
-    while (!/\s/.test(String.fromCharCode(data[at]))) token += String.fromCharCode(data[at++]);
-    header.push(token);
-  }
-  ++at;
-  return { w: Number(header[1]), channels: header[0] === 'P6' ? 3 : 1, bytes: data.subarray(at) };
-}
 
 // `promyk render --map KIND` of the scene: its RGB bytes.
 function cliMap(kind, { scene = null, w, real = 'double', formula = 'article', range = null }) {

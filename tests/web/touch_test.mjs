@@ -13,7 +13,7 @@
 import { mkdirSync, rmSync } from 'node:fs';
 import { join } from 'node:path';
 import assert from 'node:assert/strict';
-import { startBrowser, exportPage } from './harness.mjs';
+import { startBrowser, exportPage, canvasPixels } from './harness.mjs';
 
 const [promyk, modules, lessons, work] = process.argv.slice(2);
 rmSync(work, { recursive: true, force: true });
@@ -50,26 +50,7 @@ const line = (from, to, steps = 8) =>
 const hashParam = async (name) => new URLSearchParams((await page.evaluate(() => location.hash)).slice(1)).get(name);
 const scrolled = () => page.evaluate(() => [window.scrollX, window.scrollY]);
 
-// The 3D canvas: a hash of its pixels and how many differ from the background.
-async function view3dPixels() {
-  return page.evaluate(() => {
-    window.promykPage.view3d();
-    const gl = document.getElementById('view3d');
-    const copy = document.createElement('canvas');
-    copy.width = gl.width;
-    copy.height = gl.height;
-    const ctx = copy.getContext('2d');
-    ctx.drawImage(gl, 0, 0);
-    const data = ctx.getImageData(0, 0, copy.width, copy.height).data;
-    let drawn = 0;
-    let hash = 0;
-    for (let k = 0; k < data.length; k += 4) {
-      if (data[k] !== data[0] || data[k + 1] !== data[1] || data[k + 2] !== data[2]) ++drawn;
-      hash = (hash * 31 + data[k] + 7 * data[k + 1] + 13 * data[k + 2]) | 0;
-    }
-    return { drawn, hash };
-  });
-}
+const view3dPixels = () => canvasPixels(page);
 
 // --- Select a pixel with a tap ------------------------------------------
 {
