@@ -407,6 +407,15 @@ std::string base_name(const std::string& path) {
     return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
+// Rows first_row .. first_row + row_count - 1 of a w-row pane, or UsageError
+// (promyk_render_rows and promyk_map_values share a worker's share of rows).
+void require_rows(int first_row, int row_count, int w) {
+    if (first_row < 0 || row_count < 1 || first_row >= w || row_count > w - first_row)
+        throw UsageError(ui_message("wasm_bad_argument", {{"name", "rows"},
+                                                         {"problem", std::to_string(first_row) + " + " +
+                                                                         std::to_string(row_count)}}));
+}
+
 }  // namespace
 
 extern "C" {
@@ -458,10 +467,7 @@ PROMYK_EXPORT const char* promyk_render_rows(int first_row, int row_count, const
     return answer([&] {
         const Scene& scene = open_scene();
         const int w = state().w;
-        if (first_row < 0 || row_count < 1 || first_row >= w || row_count > w - first_row)
-            throw UsageError(ui_message("wasm_bad_argument", {{"name", "rows"},
-                                                             {"problem", std::to_string(first_row) + " + " +
-                                                                             std::to_string(row_count)}}));
+        require_rows(first_row, row_count, w);
         const Settings settings = settings_of(settings_json);
         RowKernel& made = state().rows;
         if (!made.kernel || made.real != settings.real || made.formula != settings.formula || made.spp != settings.spp)
@@ -886,10 +892,7 @@ PROMYK_EXPORT const char* promyk_map_values(const char* kind_name, int first_row
         const MapKind kind = lab_map_kind(kind_name);
         const Scene& scene = open_scene();
         const int w = state().w;
-        if (first_row < 0 || row_count < 1 || first_row >= w || row_count > w - first_row)
-            throw UsageError(ui_message("wasm_bad_argument", {{"name", "rows"},
-                                                             {"problem", std::to_string(first_row) + " + " +
-                                                                             std::to_string(row_count)}}));
+        require_rows(first_row, row_count, w);
         const Settings settings = settings_of(settings_json);
         const std::string key = scene_hash(scene) + "|" + std::to_string(w) + "|" + std::string(map_name(kind)) + "|" +
                                 std::string(real_type_name(settings.real)) + "|" +
