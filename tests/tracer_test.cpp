@@ -1,10 +1,13 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <type_traits>
 #include <vector>
 
@@ -327,8 +330,53 @@ struct FailingSink final : RenderSink {
 TEST_CASE("a sink failure stops the render and reaches the caller, whatever the thread count", "[render]") {
     for (const int threads : {1, 2, 4}) {
         FailingSink sink;
-        // w = 2048: bands of 512 rows, so the failure comes while helpers compute the next band.
+        // w = 2048: bands of 256 rows, so the failure comes while helpers draw the next bands.
         CHECK_THROWS_AS(render(article_scene(), {2048, threads}, PixelSelection{}, sink), OutputError);
         CHECK(sink.bands == 2);
     }
+}
+
+namespace {
+
+// A sink that takes its time over every band and notes the progress it is told.
+struct SlowSink final : RenderSink {
+    int w = 0;
+    std::vector<std::uint8_t> pixels;
+    std::string traces;
+    std::vector<int> progress_seen;
+    void image_rows(const std::uint8_t* rows, int count) override {
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        pixels.insert(pixels.end(), rows, rows + static_cast<std::size_t>(count) * w);
+    }
+    void trace_lines(std::string_view lines) override { traces += lines; }
+    void progress(int done, int) override { progress_seen.push_back(done); }
+};
+
+}  // namespace
+
+TEST_CASE("every band reaches the sink once and in order, however slow the sink and many the threads", "[render]") {
+    // w = 2048: 8 bands untraced, and bands of a few rows when tracing, so the
+    // ring of band buffers is reused many times while the sink sleeps.
+    const int w = 2048;
+    PixelSelection traced;
+    for (int i = 0; i < w; i += 97) traced.add_pixel(i, (i * 7) % w);
+    const std::vector<std::uint8_t> expected = literal_image(article_scene(), w);
+    std::string traces_one_thread;
+    for (const bool tracing : {false, true})
+        for (const int threads : {1, 2, 3, 8}) {
+            INFO("threads = " << threads << ", tracing = " << tracing);
+            SlowSink sink;
+            sink.w = w;
+            render(article_scene(), {w, threads}, tracing ? traced : PixelSelection{}, sink);
+            CHECK(sink.pixels == expected);
+            REQUIRE_FALSE(sink.progress_seen.empty());
+            CHECK(sink.progress_seen.back() == w);
+            CHECK(std::is_sorted(sink.progress_seen.begin(), sink.progress_seen.end(), std::less_equal<int>()));
+            CHECK(std::adjacent_find(sink.progress_seen.begin(), sink.progress_seen.end()) ==
+                  sink.progress_seen.end());  // strictly increasing: no band twice
+            if (!tracing) continue;
+            CHECK(sink.traces.size() > 0);
+            if (threads == 1) traces_one_thread = sink.traces;
+            else CHECK(sink.traces == traces_one_thread);
+        }
 }

@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <exception>
+#include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -38,96 +41,200 @@ void trace_row(const Kernel& kernel, const TraceHeader& header, const PixelSelec
     }
 }
 
-// Rows per band: enough pixels that thread start-up is noise, few enough
-// that the band's buffers stay small (traces are ~1 kB a pixel).
+// Rows per band: enough pixels that handing a band to the sink is rare,
+// few enough that the ring's buffers stay small (traces are ~1 kB a pixel).
 int band_rows(int w, int threads, bool tracing) {
-    const long budget = tracing ? (1L << 14) : (1L << 20);
+    const long budget = tracing ? (1L << 14) : (1L << 19);
     const long rows = std::max<long>(4L * threads, (budget + w - 1) / w);
     return static_cast<int>(std::min<long>(rows, w));
 }
 
-// One band of rows: its pixels and trace lines, and the counter from which
-// every thread takes its next row (one at a time, so threads stay balanced).
+// Bands in flight: the one being delivered and the next ones being drawn.
+constexpr int ring_size = 3;
+
+// One band of rows: its pixels, trace lines and counts, and how many of its
+// rows are drawn.
 struct Band {
     int first_row = 0;
     int count = 0;
     std::vector<std::uint8_t> pixels;
     std::vector<std::string> traces;
     std::vector<RowCounts> counts;
-    std::atomic<int> next_row{0};
+    std::atomic<int> rows_done{0};
 
     void start(int first, int rows_per_band, int w) {
-        // w: the pane's side; pixels hold w * channels bytes a row.
         first_row = first;
         count = std::min(rows_per_band, w - first);
-        next_row = 0;
+        rows_done = 0;
     }
-    bool last(int w) const { return first_row + count >= w; }
 };
 
-// Computes the rows of bands; the first failure (or a signal) stops every thread.
-class BandWork {
+// The rows of the pane, drawn by every thread from one counter (one row at a
+// time, so the threads stay evenly loaded) into a ring of bands, which the
+// calling thread hands to the sink in order. Threads live for the whole
+// render and never wait for each other at a band's end: a row waits only
+// when its band's buffer is still being delivered. The first failure (or a
+// signal) stops every thread.
+class RowPipeline {
 public:
-    BandWork(const Kernel& kernel, const TraceHeader& header, const PixelSelection& traced)
-        : kernel_(kernel), header_(header), traced_(traced) {}
-
-    void operator()(Band& band) noexcept {
-        const int w = header_.w;
-        try {
-            for (int k = band.next_row++; k < band.count && !stop_ && !interrupt_signal(); k = band.next_row++) {
-                const int i = band.first_row + k;
-                const std::size_t row_bytes = static_cast<std::size_t>(w) * kernel_.channels();
-                band.counts[k] = kernel_.row(w, i, &band.pixels[static_cast<std::size_t>(k) * row_bytes]);
-                if (traced_.row_has_any(i)) trace_row(kernel_, header_, traced_, i, band.traces[k]);
-                rows_done_.fetch_add(1, std::memory_order_relaxed);
-            }
-        } catch (...) {
-            if (!stop_.exchange(true)) failure_ = std::current_exception();
+    RowPipeline(const Kernel& kernel, const TraceHeader& header, const PixelSelection& traced, int rows_per_band)
+        : kernel_(kernel), header_(header), traced_(traced), rows_per_band_(rows_per_band) {
+        const int w = header.w;
+        bands_total_ = (w + rows_per_band - 1) / rows_per_band;
+        for (int b = 0; b < ring_size; ++b) {
+            Band& band = ring_[b];
+            band.pixels.resize(static_cast<std::size_t>(rows_per_band) * w * kernel.channels());
+            band.traces.resize(static_cast<std::size_t>(rows_per_band));
+            band.counts.resize(static_cast<std::size_t>(rows_per_band));
+            if (b < bands_total_) band.start(b * rows_per_band, rows_per_band, w);
         }
     }
 
-    void stop() { stop_ = true; }
+    int bands_total() const { return bands_total_; }
+    Band& band(int b) { return ring_[b % ring_size]; }
+
+    // A helper thread: draws rows until none is left or the work stops.
+    void help() noexcept {
+        try {
+            for (;;) {
+                const int i = next_row_.fetch_add(1);
+                if (i >= header_.w || stopped()) return;
+                if (!wait_for_band_buffer(i / rows_per_band_)) return;
+                draw(i);
+            }
+        } catch (...) {
+            fail();
+        }
+    }
+
+    // The calling thread: waits until band b is drawn, drawing rows itself
+    // meanwhile (only rows whose buffer is free: it is the one that frees
+    // them). Returns false if the work stopped.
+    bool wait_for_band(int b) {
+        Band& waited = band(b);
+        while (waited.rows_done.load(std::memory_order_acquire) < waited.count) {
+            if (stopped()) return false;
+            int i = next_row_.load();
+            const int free_rows = std::min(header_.w, (delivered_.load() + ring_size) * rows_per_band_);
+            if (i < free_rows && next_row_.compare_exchange_weak(i, i + 1)) {
+                try {
+                    draw(i);
+                } catch (...) {
+                    fail();
+                }
+                continue;
+            }
+            std::unique_lock<std::mutex> lock(mutex_);
+            band_drawn_.wait_for(lock, std::chrono::milliseconds(5), [&] {
+                return waited.rows_done.load(std::memory_order_acquire) >= waited.count || stop_.load();
+            });
+        }
+        return !stopped();
+    }
+
+    // After band b went to the sink: its buffer takes band b + ring_size.
+    void delivered(int b) {
+        const int reused = b + ring_size;
+        if (reused < bands_total_) band(b).start(reused * rows_per_band_, rows_per_band_, header_.w);
+        {
+            const std::lock_guard<std::mutex> lock(mutex_);
+            delivered_.store(b + 1);
+        }
+        buffer_free_.notify_all();
+    }
+
+    void stop() {
+        {
+            const std::lock_guard<std::mutex> lock(mutex_);
+            stop_ = true;
+        }
+        buffer_free_.notify_all();
+        band_drawn_.notify_all();
+    }
     long long rows_done() const { return rows_done_.load(std::memory_order_relaxed); }
 
-    // After the threads are joined: rethrows a failure, or Interrupted.
+    // Rethrows a failure, or Interrupted.
     void check() const {
-        if (failure_) std::rethrow_exception(failure_);
+        if (stop_.load()) {
+            const std::lock_guard<std::mutex> lock(mutex_);
+            if (failure_) std::rethrow_exception(failure_);
+        }
         throw_if_interrupted();
     }
 
 private:
+    bool stopped() const { return stop_.load(std::memory_order_relaxed) || interrupt_signal() != 0; }
+
+    // Waits until band b's buffer is free; false if the work stopped.
+    bool wait_for_band_buffer(int b) {
+        const auto free = [&] { return delivered_.load() + ring_size > b; };
+        while (!free()) {
+            if (stopped()) return false;
+            std::unique_lock<std::mutex> lock(mutex_);
+            // Timed: a signal sets a flag and notifies nobody.
+            buffer_free_.wait_for(lock, std::chrono::milliseconds(5), [&] { return free() || stop_.load(); });
+        }
+        return !stopped();
+    }
+
+    void draw(int i) {
+        const int w = header_.w;
+        Band& into = band(i / rows_per_band_);
+        const int k = i - into.first_row;
+        const std::size_t row_bytes = static_cast<std::size_t>(w) * kernel_.channels();
+        into.counts[k] = kernel_.row(w, i, &into.pixels[static_cast<std::size_t>(k) * row_bytes]);
+        if (traced_.row_has_any(i)) trace_row(kernel_, header_, traced_, i, into.traces[k]);
+        rows_done_.fetch_add(1, std::memory_order_relaxed);
+        // Read before the row is counted: once the band is complete, the
+        // calling thread may deliver it and start the buffer's next band.
+        const int count = into.count;
+        if (into.rows_done.fetch_add(1, std::memory_order_acq_rel) + 1 == count) {
+            { const std::lock_guard<std::mutex> lock(mutex_); }  // the waiter is waiting or sees the count
+            band_drawn_.notify_all();
+        }
+    }
+
+    void fail() noexcept {
+        {
+            const std::lock_guard<std::mutex> lock(mutex_);
+            if (!failure_) failure_ = std::current_exception();
+        }
+        stop();
+    }
+
     const Kernel& kernel_;
     const TraceHeader& header_;
     const PixelSelection& traced_;
+    const int rows_per_band_;
+    int bands_total_ = 0;
+    Band ring_[ring_size];
+    std::atomic<int> next_row_{0};
+    std::atomic<int> delivered_{0};  // bands handed to the sink
     std::atomic<bool> stop_{false};
     std::atomic<long long> rows_done_{0};
+    mutable std::mutex mutex_;
+    std::condition_variable band_drawn_, buffer_free_;
     std::exception_ptr failure_;
 };
 
-// Helper threads working on one band beside the calling thread. If the
-// caller leaves by an exception, the helpers are stopped and joined.
+// Helper threads drawing rows beside the calling thread. However the caller
+// leaves, the helpers are stopped and joined.
 class Helpers {
 public:
-    explicit Helpers(BandWork& work) : work_(work) {}
+    Helpers(RowPipeline& pipeline, int count) : pipeline_(pipeline) {
+        for (int t = 0; t < count; ++t) threads_.emplace_back([this] { pipeline_.help(); });
+    }
     ~Helpers() {
-        if (threads_.empty()) return;
-        work_.stop();
-        join();
-    }
-    void start(int count, Band& band) {
-        for (int t = 0; t < count; ++t) threads_.emplace_back([this, &band] { work_(band); });
-    }
-    void join() {
+        pipeline_.stop();
         for (std::thread& thread : threads_) thread.join();
-        threads_.clear();
     }
 
 private:
-    BandWork& work_;
+    RowPipeline& pipeline_;
     std::vector<std::thread> threads_;
 };
 
-// Adds a delivered band's counts; rows arrive in order, so the first
+// Adds a delivered band's counts; bands arrive in order, so the first
 // non-finite pixel found is the first in row order.
 void count(const Band& band, int w, int spp, RenderStats& stats) {
     for (int k = 0; k < band.count; ++k) {
@@ -148,9 +255,9 @@ void count(const Band& band, int w, int spp, RenderStats& stats) {
 
 // Writes rows_computed when render() leaves, by return or by exception.
 struct RowsComputed {
-    const BandWork& work;
+    const RowPipeline& pipeline;
     RenderStats& stats;
-    ~RowsComputed() { stats.rows_computed = work.rows_done(); }
+    ~RowsComputed() { stats.rows_computed = pipeline.rows_done(); }
 };
 
 void deliver(Band& band, int w, int spp, RenderSink& sink, RenderStats& stats) {
@@ -185,35 +292,18 @@ void render(const Kernel& kernel, const Scene& scene, const RenderSettings& sett
     TraceHeader header = trace_header(scene, w);
     header.spp = kernel.spp();
 
-    // Two bands: while the helpers compute one, the calling thread hands the
-    // other to the sink (PNG compression, trace writing), then joins them.
-    Band bands[2];
-    for (Band& band : bands) {
-        band.pixels.resize(static_cast<std::size_t>(rows_per_band) * w * kernel.channels());
-        band.traces.resize(static_cast<std::size_t>(rows_per_band));
-        band.counts.resize(static_cast<std::size_t>(rows_per_band));
-    }
-    BandWork work(kernel, header, traced);
-    const RowsComputed rows_computed{work, out_stats};
-    Helpers helpers(work);
-
-    bands[0].start(0, rows_per_band, w);
-    helpers.start(threads - 1, bands[0]);
-    work(bands[0]);
-    helpers.join();
-    for (int b = 0;; ++b) {
-        work.check();
-        Band& done = bands[b % 2];
-        Band& next = bands[(b + 1) % 2];
-        const bool more = !done.last(w);
-        if (more) {
-            next.start(done.first_row + done.count, rows_per_band, w);
-            helpers.start(threads - 1, next);
+    RowPipeline pipeline(kernel, header, traced, rows_per_band);
+    const RowsComputed rows_computed{pipeline, out_stats};
+    const Helpers helpers(pipeline, threads - 1);
+    for (int b = 0; b < pipeline.bands_total(); ++b) {
+        // The sink's work (PNG compression, trace writing) runs while the
+        // helpers draw the next bands.
+        if (!pipeline.wait_for_band(b)) {
+            pipeline.check();  // throws the failure, or Interrupted
+            break;
         }
-        deliver(done, w, kernel.spp(), sink, out_stats);
-        if (!more) break;
-        work(next);
-        helpers.join();
+        deliver(pipeline.band(b), w, kernel.spp(), sink, out_stats);
+        pipeline.delivered(b);
     }
 }
 

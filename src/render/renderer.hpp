@@ -1,6 +1,7 @@
-// Rendering the whole pane: rows are computed in bands by all threads (rows
-// handed out one at a time, so the threads stay evenly loaded), then passed
-// in order to a sink, band after band. Memory stays a band, not an image.
+// Rendering the whole pane: every thread draws rows from one counter (one
+// row at a time, so the threads stay evenly loaded) into a ring of band
+// buffers, which the calling thread passes to a sink in order while the
+// others draw on. Memory stays a few bands, not an image.
 #pragma once
 
 #include <cstdint>
