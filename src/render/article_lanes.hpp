@@ -1,5 +1,6 @@
-// The article's intensity (render/tracer.hpp's trace_ray with the article's
-// formula) for several pixels of a row at once: the same steps in the same
+// The article's intensity (render/tracer.hpp's trace_ray) for several pixels
+// of a row at once, with the sphere's formula as a policy (the article's,
+// stable or geometric: geometry/sphere_*.hpp): the same steps in the same
 // order, each lane rounding exactly as the one-pixel tracer does, with the
 // branches (miss, behind the eye, non-finite, dark) as masks. Rendering
 // only: the traced path, which records, is trace_ray; tests check that both
@@ -25,11 +26,12 @@ struct ArticleRow {
     Real yy, zz;      // y_E y_E, z_E z_E: the last two terms of |E|^2
     Real ySy, zSz;    // y_E y_S, z_E z_S: the last two terms of C
     Real SS;          // |S|^2
-    Real SS_rr;       // |S|^2 - r^2
+    Real rr;          // r^2
+    Real SS_rr;       // |S|^2 - r^2: the program's, and the other formulas' c_0
 
     ArticleRow(const ArticleWorld<Real>& w, Real y)
         : world(w), y_E(y), yy(y * y), zz(w.z_E * w.z_E), ySy(y * w.S.y), zSz(w.z_E * w.S.z),
-          SS(length_squared(w.S)), SS_rr(SS - w.r * w.r) {}
+          SS(length_squared(w.S)), rr(w.r * w.r), SS_rr(SS - rr) {}
 };
 
 // The templates below are compiled once per instruction set, each in its
@@ -37,32 +39,119 @@ struct ArticleRow {
 // builds one, and the wider sets read it.
 inline namespace PROMYK_LANES_ISA {
 
+// The article's formula (geometry/sphere_article.hpp and trace_ray's test
+// of a root behind the eye). Each formula is a type of this shape: made
+// from E's |E|^2 and C = E.S, it computes the discriminant and its misses;
+// then t() gives the root, adding the pixels whose root it rejects.
+template <class Lane>
+struct ArticleRoot {
+    using Real = typename LaneTraits<Lane>::Real;
+    using Mask = MaskOf<Lane>;
+    Lane EE, C, delta;
+    Mask miss;  // delta <= 0; -inf and NaN decide nothing and go on
+
+    PROMYK_LANES_INLINE ArticleRoot(const ArticleRow<Real>& row, Lane x_E, Lane EE_, Lane C_) : EE(EE_), C(C_) {
+        (void)x_E;
+        delta = C * C - EE * row.SS_rr;
+        miss = both(delta <= Real(0), delta >= std::numeric_limits<Real>::lowest());
+    }
+    // Compute the nearer root; a root behind the eye is a miss too.
+    PROMYK_LANES_INLINE Lane t(Mask& missed) const {
+        const Lane t = (C - lane_sqrt(delta)) / EE;
+        missed = either(missed, both(t <= Real(0), t >= std::numeric_limits<Real>::lowest()));
+        return t;
+    }
+};
+
+// The stable and geometric formulas' roots q / |E|^2 and c_0 / q, with
+// q = C + sign(C) root_term, and the engine's choice between them
+// (geometry/sphere_stable.hpp's cancellation_free_roots and sphere.hpp's
+// nearest_root_ahead): the nearer if > 0, else the farther if > 0, else a
+// miss (behind the eye); a root that is NaN or infinite is taken.
+template <class Lane, class Real = typename LaneTraits<Lane>::Real>
+PROMYK_LANES_INLINE Lane cancellation_free_root(Lane C, Lane root_term, Real c_0, Lane EE, MaskOf<Lane>& missed) {
+    using Mask = MaskOf<Lane>;
+    const Lane q = select(C >= Real(0), C + root_term, C - root_term);
+    const Lane t_q = q / EE;
+    const Lane t_c = c_0 / q;
+    const Mask finite_q = t_q * Real(0) == Real(0), finite_c = t_c * Real(0) == Real(0);
+    const Mask finite = both(finite_q, finite_c);
+    const Mask q_first = t_q < t_c;
+    const Lane near = select(finite, select(q_first, t_q, t_c), select(finite_q, t_c, t_q));
+    const Lane far = select(q_first, t_c, t_q);
+    const Mask take_near = either(lane_not(finite), lane_not(near <= Real(0)));
+    const Mask take_far = both(lane_not(take_near), far > Real(0));
+    missed = either(missed, lane_not(either(take_near, take_far)));  // behind the eye
+    return select(take_near, near, far);
+}
+
+// The stable formula (geometry/sphere_stable.hpp): the program's delta, the
+// roots without cancellation.
+template <class Lane>
+struct StableRoot {
+    using Real = typename LaneTraits<Lane>::Real;
+    using Mask = MaskOf<Lane>;
+    Lane EE, C, delta;
+    Real c_0;
+    Mask miss;
+
+    PROMYK_LANES_INLINE StableRoot(const ArticleRow<Real>& row, Lane x_E, Lane EE_, Lane C_)
+        : EE(EE_), C(C_), c_0(row.SS_rr) {
+        (void)x_E;
+        delta = C * C - EE * c_0;
+        miss = both(delta <= Real(0), delta >= std::numeric_limits<Real>::lowest());
+    }
+    PROMYK_LANES_INLINE Lane t(Mask& missed) const {
+        return cancellation_free_root(C, lane_sqrt(delta), c_0, EE, missed);
+    }
+};
+
+// The geometric formula (geometry/sphere_geometric.hpp): delta_g = r^2 -
+// |l|^2 from l = t_mid E - S, the ray's point nearest the centre.
+template <class Lane>
+struct GeometricRoot {
+    using Real = typename LaneTraits<Lane>::Real;
+    using Mask = MaskOf<Lane>;
+    Lane EE, C, delta_g;
+    Real c_0;
+    Mask miss;
+
+    PROMYK_LANES_INLINE GeometricRoot(const ArticleRow<Real>& row, Lane x_E, Lane EE_, Lane C_)
+        : EE(EE_), C(C_), c_0(row.SS_rr) {
+        const Vec3<Real>& S = row.world.S;
+        const Lane t_mid = C / EE;
+        const Lane l_x = t_mid * x_E - S.x, l_y = t_mid * row.y_E - S.y, l_z = t_mid * row.world.z_E - S.z;
+        const Lane ll = (l_x * l_x + l_y * l_y) + l_z * l_z;  // |l|^2
+        delta_g = row.rr - ll;
+        miss = both(delta_g <= Real(0), delta_g >= std::numeric_limits<Real>::lowest());
+    }
+    PROMYK_LANES_INLINE Lane t(Mask& missed) const {
+        return cancellation_free_root(C, lane_sqrt(EE * delta_g), c_0, EE, missed);
+    }
+};
+
 template <class Lane>
 struct LanePixel {
     Lane I_P;
     MaskOf<Lane> miss, dark, non_finite;  // lit: none of these
 };
 
-// Pixels E = (x_E, y_E, z_E), one a lane, of the row.
-template <class Lane, class Real = typename LaneTraits<Lane>::Real>
+// Pixels E = (x_E, y_E, z_E), one a lane, of the row, with the formula Root.
+template <template <class> class Root = ArticleRoot, class Lane, class Real = typename LaneTraits<Lane>::Real>
 PROMYK_LANES_INLINE LanePixel<Lane> article_lanes(const ArticleRow<Real>& row, Lane x_E) {
     const ArticleWorld<Real>& world = row.world;
     using Mask = MaskOf<Lane>;
-    constexpr Real lowest = std::numeric_limits<Real>::lowest();
     LanePixel<Lane> pixel;
     // Compute the quadratic's coefficients, named as in the program.
     const Lane EE = (x_E * x_E + row.yy) + row.zz;  // |E|^2
     const Lane C = (x_E * world.S.x + row.ySy) + row.zSz;
-    const Lane delta = C * C - EE * row.SS_rr;
-    // A miss: delta <= 0; -inf and NaN decide nothing and go on.
-    pixel.miss = both(delta <= Real(0), delta >= lowest);
+    const Root<Lane> root(row, x_E, EE, C);
+    pixel.miss = root.miss;
     pixel.I_P = splat<Lane>(world.background);
     pixel.dark = pixel.non_finite = Mask{};  // none yet
     if (all(pixel.miss)) return pixel;  // the background: nothing to shade
 
-    // Compute the nearer root; a root behind the eye is a miss too.
-    const Lane t = (C - lane_sqrt(delta)) / EE;
-    pixel.miss = either(pixel.miss, both(t <= Real(0), t >= lowest));
+    const Lane t = root.t(pixel.miss);
 
     // Compute P = tE, N = P - S, K = L - P.
     const Lane P_x = t * x_E, P_y = t * row.y_E, P_z = t * world.z_E;
@@ -76,9 +165,13 @@ PROMYK_LANES_INLINE LanePixel<Lane> article_lanes(const ArticleRow<Real>& row, L
     const Mask undecided = both(hit, lane_not((KK * Real(0) + D * Real(0)) == Real(0)));
     const Mask decided = both(hit, lane_not(undecided));
     pixel.dark = both(decided, D <= Real(0));
-    const Lane I_P = world.I * D / (world.r * lane_sqrt(KK));
-    // I D overflowing, or r sqrt(|K|^2) underflowing to 0: non-finite too.
     const Mask lit = both(decided, lane_not(pixel.dark));
+    // No lane lit (each a miss, dark or undecided: a fifth of the article's
+    // hits are dark): the light's square root and division would only be
+    // thrown away by the selects below.
+    Lane I_P = splat<Lane>(Real(0));
+    if (any(lit)) I_P = world.I * D / (world.r * lane_sqrt(KK));
+    // I D overflowing, or r sqrt(|K|^2) underflowing to 0: non-finite too.
     pixel.non_finite = either(undecided, both(lit, lane_not(I_P <= std::numeric_limits<Real>::max())));
 
     pixel.I_P = select(pixel.miss, pixel.I_P,

@@ -1,6 +1,7 @@
-// The article's rows: lanes at a time (article_chunk, for the tests) and as
-// rendering draws them (render_row: the path render/isa.hpp chose, or one
-// pixel at a time where there are no lanes, as in the wasm).
+// The article's rows, with the article's, stable or geometric formula: lanes
+// at a time (article_chunk, for the tests) and as rendering draws them
+// (render_row: the path render/isa.hpp chose, or one pixel at a time where
+// there are no lanes, as in the wasm, and for the fma formula).
 // Compiled with -fno-math-errno (src/CMakeLists.txt): a square root that need
 // not set errno becomes one sqrtpd for its lanes, with the same bits.
 #include "render/article_row.hpp"
@@ -34,7 +35,7 @@ void put_branches(const lanes::LanePixel<Lane>& pixel, int width, std::uint8_t* 
 
 // Columns j0 .. j0 + n - 1 of row i into I_P[0 .. n): whole vectors first,
 // then the last pixels one lane at a time, through the same template.
-template <class Vector, class Real>
+template <class Vector, template <class> class Root, class Real>
 ArticleRowCounts article_chunk(const ArticleWorld<Real>& world, int w, int i, int j0, int n, Real* I_P,
                                std::uint8_t* branches = nullptr) {
     constexpr int width = lanes::LaneTraits<Vector>::width;
@@ -49,7 +50,7 @@ ArticleRowCounts article_chunk(const ArticleWorld<Real>& world, int w, int i, in
         Vector x_E;
         for (int k = 0; k < width; ++k) x_E[k] = Real(2 * (j + k) + 1);
         x_E = x_E / Real(w) - Real(1);
-        const lanes::LanePixel<Vector> pixel = lanes::article_lanes(row, x_E);
+        const lanes::LanePixel<Vector> pixel = lanes::article_lanes<Root>(row, x_E);
         std::memcpy(I_P + (j - j0), &pixel.I_P, sizeof pixel.I_P);
         miss -= pixel.miss;
         dark -= pixel.dark;
@@ -62,7 +63,7 @@ ArticleRowCounts article_chunk(const ArticleWorld<Real>& world, int w, int i, in
         counts.non_finite += static_cast<int>(non_finite[k]);
     }
     for (; j < end; ++j) {
-        const lanes::LanePixel<Real> pixel = lanes::article_lanes(row, pane_x<Real>(j, w));
+        const lanes::LanePixel<Real> pixel = lanes::article_lanes<Root>(row, pane_x<Real>(j, w));
         I_P[j - j0] = pixel.I_P;
         counts.miss += pixel.miss;
         counts.dark += pixel.dark;
@@ -72,7 +73,6 @@ ArticleRowCounts article_chunk(const ArticleWorld<Real>& world, int w, int i, in
     return counts;
 }
 
-#if !defined(PROMYK_ISA_KERNELS)
 // to_byte (image/quantize.hpp) two pixels at a time, the same steps: clamp
 // to [0, 1] (NaN to 0), scale by 255, truncate, and round a half up. As a
 // loop of scalar to_byte, GCC makes the rounding a branch, mispredicted
@@ -100,38 +100,84 @@ void put_row_bytes(const double* I_P, int n, std::uint8_t* out) {
     for (; k < n; ++k) out[k] = to_byte(I_P[k]);
 }
 
-#endif
-
-template <class Real>
+template <template <class> class Root, class Real>
 PixelResult<Real> one_lane(const ArticleWorld<Real>& world, int w, int i, int j) {
     const lanes::LanePixel<Real> pixel =
-        lanes::article_lanes(lanes::ArticleRow<Real>(world, pane_y<Real>(i, w)), pane_x<Real>(j, w));
+        lanes::article_lanes<Root>(lanes::ArticleRow<Real>(world, pane_y<Real>(i, w)), pane_x<Real>(j, w));
     std::uint8_t branch;
     put_branches<Real, Real>(pixel, 1, &branch);
     return {pixel.I_P, static_cast<Branch>(branch)};
 }
 
+template <class Real>
+PixelResult<Real> one_lane(const ArticleWorld<Real>& world, int w, int i, int j, Formula formula) {
+    switch (formula) {
+        case Formula::stable:
+            return one_lane<lanes::StableRoot>(world, w, i, j);
+        case Formula::geometric:
+            return one_lane<lanes::GeometricRoot>(world, w, i, j);
+        default:
+            return one_lane<lanes::ArticleRoot>(world, w, i, j);
+    }
+}
+
+template <class Vector, class Real>
+ArticleRowCounts row_intensities(const ArticleWorld<Real>& world, int w, int i, Real* I_P, std::uint8_t* branches,
+                                 Formula formula) {
+    switch (formula) {
+        case Formula::stable:
+            return article_chunk<Vector, lanes::StableRoot>(world, w, i, 0, w, I_P, branches);
+        case Formula::geometric:
+            return article_chunk<Vector, lanes::GeometricRoot>(world, w, i, 0, w, I_P, branches);
+        default:
+            return article_chunk<Vector, lanes::ArticleRoot>(world, w, i, 0, w, I_P, branches);
+    }
+}
+
 }  // namespace
 
-PixelResult<double> article_pixel_one_lane(const ArticleWorld<double>& world, int w, int i, int j) {
-    return one_lane(world, w, i, j);
+bool has_lanes(Formula formula) { return formula != Formula::fma; }
+
+PixelResult<double> article_pixel_one_lane(const ArticleWorld<double>& world, int w, int i, int j, Formula formula) {
+    return one_lane(world, w, i, j, formula);
 }
-PixelResult<float> article_pixel_one_lane(const ArticleWorld<float>& world, int w, int i, int j) {
-    return one_lane(world, w, i, j);
+PixelResult<float> article_pixel_one_lane(const ArticleWorld<float>& world, int w, int i, int j, Formula formula) {
+    return one_lane(world, w, i, j, formula);
 }
 
 ArticleRowCounts article_row_intensities(const ArticleWorld<double>& world, int w, int i, double* I_P,
-                                         std::uint8_t* branches) {
-    return article_chunk<lanes::Double2>(world, w, i, 0, w, I_P, branches);
+                                         std::uint8_t* branches, Formula formula) {
+#if defined(PROMYK_ISA_KERNELS)
+    // The wider paths' own vectors (render/article_row_isa.hpp).
+    const Isa isa = article_isa();
+    if (isa != Isa::baseline) {
+        const lanes::ArticleRow<double> row(world, pane_y<double>(i, w));
+        std::vector<double> x_E(static_cast<std::size_t>(w));
+        for (int j = 0; j < w; ++j) x_E[static_cast<std::size_t>(j)] = pane_x<double>(j, w);
+        std::vector<std::uint8_t> taken(static_cast<std::size_t>(w));
+        if (isa == Isa::avx512)
+            lanes::avx512::article_row_intensities(row, x_E.data(), w, I_P, taken.data(), formula);
+        else
+            lanes::avx2::article_row_intensities(row, x_E.data(), w, I_P, taken.data(), formula);
+        ArticleRowCounts counts;
+        for (const std::uint8_t b : taken) {
+            counts.miss += b == static_cast<std::uint8_t>(Branch::miss);
+            counts.dark += b == static_cast<std::uint8_t>(Branch::dark);
+            counts.non_finite += b == static_cast<std::uint8_t>(Branch::non_finite);
+        }
+        if (branches) std::memcpy(branches, taken.data(), taken.size());
+        return counts;
+    }
+#endif
+    return row_intensities<lanes::Double2>(world, w, i, I_P, branches, formula);
 }
 
 ArticleRowCounts article_row_intensities(const ArticleWorld<float>& world, int w, int i, float* I_P,
-                                         std::uint8_t* branches) {
-    return article_chunk<lanes::Float4>(world, w, i, 0, w, I_P, branches);
+                                         std::uint8_t* branches, Formula formula) {
+    return row_intensities<lanes::Float4>(world, w, i, I_P, branches, formula);
 }
 
 namespace {
-
 #if defined(PROMYK_ISA_KERNELS)
 // x_E of every column of a w-pixel pane, the same for every row: computed
 // once per thread and pane, not a division per pixel.
@@ -143,36 +189,30 @@ const double* pane_columns(int w) {
     }
     return x_E.data();
 }
-#endif
 
-#if !defined(PROMYK_ISA_KERNELS)
-// A row one pixel at a time through trace_ray: where there is no lane path
-// (the wasm, processors other than x86-64).
-RowCounts one_pixel_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out);
-#endif
-
-}  // namespace
-
-RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out) {
-#if defined(PROMYK_ISA_KERNELS)
+// Row i in lanes with the formula, on the path render/isa.hpp chose.
+RowCounts lanes_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out, Formula formula) {
     const lanes::ArticleRow<double> row(world, pane_y<double>(i, w));
     const double* x_E = pane_columns(w);
     // Only the columns that may meet the sphere are computed; the others are
     // proven misses (render/silhouette.hpp) and get the background's grey.
-    const RowSpan span = row_hit_span(row, x_E, w);
+    // The proof is of the program's delta, which the stable formula computes
+    // too (the same operations on the same numbers, so the same bits). The
+    // geometric formula's delta_g has no such proof: it computes every column.
+    const RowSpan span = formula == Formula::geometric ? RowSpan{0, w} : row_hit_span(row, x_E, w);
     const int n = span.hi - span.lo;
     RowCounts counts;
     switch (article_isa()) {
         case Isa::avx512:
-            counts = lanes::avx512::draw_article_row(row, x_E + span.lo, n, out + span.lo);
+            counts = lanes::avx512::draw_article_row(row, x_E + span.lo, n, out + span.lo, formula);
             break;
         case Isa::avx2:
-            counts = lanes::avx2::draw_article_row(row, x_E + span.lo, n, out + span.lo);
+            counts = lanes::avx2::draw_article_row(row, x_E + span.lo, n, out + span.lo, formula);
             break;
         default:
             // SSE2's two lanes: 57 instructions a pixel against 68 one pixel
             // at a time (callgrind, w = 1024), and no slower measured.
-            counts = lanes::draw_row<lanes::Double2>(row, x_E + span.lo, n, out + span.lo);
+            counts = lanes::draw_row<lanes::Double2>(row, x_E + span.lo, n, out + span.lo, formula);
     }
     const std::uint8_t background = to_byte(world.background);
     std::memset(out, background, static_cast<std::size_t>(span.lo));
@@ -181,14 +221,13 @@ RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8
     counts.branches[static_cast<int>(Branch::miss)] += w - n;
     if (counts.first_non_finite_j >= 0) counts.first_non_finite_j += span.lo;
     return counts;
-#else
-    return one_pixel_row(world, w, i, out);
-#endif
 }
+#endif
 
-#if !defined(PROMYK_ISA_KERNELS)
-namespace {
-
+// A row one pixel at a time through trace_ray with the formula F: where
+// there is no lane path (the wasm, processors other than x86-64, and the fma
+// formula).
+template <class F>
 RowCounts one_pixel_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out) {
     // A local copy: stores through a uint8_t* may alias anything, so reading the
     // scene through a reference would reload it, and keep |S|^2 from being
@@ -208,7 +247,7 @@ RowCounts one_pixel_row(const ArticleWorld<double>& world, int w, int i, std::ui
     for (int j0 = 0; j0 < w; j0 += chunk) {
         const int n = std::min(chunk, w - j0);
         for (int k = 0; k < n; ++k) {
-            const PixelResult<double> pixel = trace_ray(local, {pane_x<double>(j0 + k, w), y_E, local.z_E}, none);
+            const PixelResult<double> pixel = trace_ray<F>(local, {pane_x<double>(j0 + k, w), y_E, local.z_E}, none);
             I_P[k] = pixel.I_P;
             miss += pixel.branch == Branch::miss;
             dark += pixel.branch == Branch::dark;
@@ -225,13 +264,33 @@ RowCounts one_pixel_row(const ArticleWorld<double>& world, int w, int i, std::ui
     // Rare: looked for only when the row has one, so the loop stays lean.
     if (counts.branches[static_cast<int>(Branch::non_finite)] != 0) {
         for (int j = 0; j < w && counts.first_non_finite_j < 0; ++j)
-            if (trace_ray(local, {pane_x<double>(j, w), y_E, local.z_E}, none).branch == Branch::non_finite)
+            if (trace_ray<F>(local, {pane_x<double>(j, w), y_E, local.z_E}, none).branch == Branch::non_finite)
                 counts.first_non_finite_j = j;
     }
     return counts;
 }
 
 }  // namespace
+
+RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out) {
+    return render_row(world, w, i, out, Formula::article);
+}
+
+RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out, Formula formula) {
+#if defined(PROMYK_ISA_KERNELS)
+    if (has_lanes(formula)) return lanes_row(world, w, i, out, formula);
 #endif
+    switch (formula) {
+        case Formula::stable:
+            return one_pixel_row<SphereFormula<Formula::stable>>(world, w, i, out);
+        case Formula::geometric:
+            return one_pixel_row<SphereFormula<Formula::geometric>>(world, w, i, out);
+        case Formula::fma:
+            return one_pixel_row<SphereFormula<Formula::fma>>(world, w, i, out);
+        case Formula::article:
+            break;
+    }
+    return one_pixel_row<SphereFormula<Formula::article>>(world, w, i, out);
+}
 
 }  // namespace promyk

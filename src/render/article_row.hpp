@@ -1,12 +1,13 @@
-// A row of the article's scene computed lanes at a time
-// (render/article_lanes.hpp), in double and in float; the tests compare it
-// with the traced path pixel by pixel. render_row (render/renderer.hpp, defined
-// in article_row.cpp) does not use it yet: on the baseline instruction set
-// it measured slower than the one-pixel loop.
+// Rows of the article's scene computed lanes at a time
+// (render/article_lanes.hpp) with the article's, the stable or the
+// geometric formula, in double and in float; the tests compare them with
+// the traced path pixel by pixel. render_row draws rows for rendering.
 #pragma once
 
 #include <cstdint>
 
+#include "geometry/formula.hpp"
+#include "render/kernel.hpp"
 #include "render/tracer.hpp"
 
 namespace promyk {
@@ -16,17 +17,32 @@ struct ArticleRowCounts {
     int miss = 0, dark = 0, non_finite = 0;
 };
 
+// Whether the formula has a lane kernel (article, stable, geometric; fma
+// needs fused multiply-adds and stays one pixel at a time).
+bool has_lanes(Formula formula);
+
+// Row i of a w-pixel pane of the article's scene into out[0 .. w), with the
+// sphere's formula: in lanes on the path render/isa.hpp chose (the wasm, and
+// fma: one pixel at a time through trace_ray). Each grey level is to_byte of
+// trace_ray's intensity, each branch trace_ray's. render/renderer.hpp's
+// render_row is this with the article's formula.
+RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out, Formula formula);
+
 // Row i's intensities into I_P[0 .. w), and, when `branches` is given, each
-// pixel's Branch as a byte. Bit for bit what trace_ray gives each pixel.
+// pixel's Branch as a byte. Bit for bit what trace_ray gives each pixel
+// (article, stable or geometric). In double, on the path render/isa.hpp
+// chose (2, 4 or 8 lanes), every column computed.
 ArticleRowCounts article_row_intensities(const ArticleWorld<double>& world, int w, int i, double* I_P,
-                                         std::uint8_t* branches = nullptr);
+                                         std::uint8_t* branches = nullptr, Formula formula = Formula::article);
 // The same in float (four floats a vector, two doubles in double).
 ArticleRowCounts article_row_intensities(const ArticleWorld<float>& world, int w, int i, float* I_P,
-                                         std::uint8_t* branches = nullptr);
+                                         std::uint8_t* branches = nullptr, Formula formula = Formula::article);
 
 // Pixel (i, j) through the same template with one lane, the instantiation
 // the row's last pixels take: for the tests.
-PixelResult<double> article_pixel_one_lane(const ArticleWorld<double>& world, int w, int i, int j);
-PixelResult<float> article_pixel_one_lane(const ArticleWorld<float>& world, int w, int i, int j);
+PixelResult<double> article_pixel_one_lane(const ArticleWorld<double>& world, int w, int i, int j,
+                                           Formula formula = Formula::article);
+PixelResult<float> article_pixel_one_lane(const ArticleWorld<float>& world, int w, int i, int j,
+                                          Formula formula = Formula::article);
 
 }  // namespace promyk

@@ -8,8 +8,14 @@
 namespace promyk::lanes {
 inline namespace avx2 {  // inline, as lanes.hpp opened it in this file
 
-RowCounts draw_article_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out) {
-    return draw_row<Double4>(row, x_E, w, out);
+RowCounts draw_article_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out,
+                           Formula formula) {
+    return draw_row<Double4>(row, x_E, w, out, formula);
+}
+
+void article_row_intensities(const ArticleRow<double>& row, const double* x_E, int w, double* I_P,
+                             std::uint8_t* branches, Formula formula) {
+    row_intensities<Double4>(row, x_E, w, I_P, branches, formula);
 }
 
 }  // namespace avx2

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 
+#include "geometry/formula.hpp"
 #include "render/kernel.hpp"
 
 namespace promyk::lanes {
@@ -14,7 +15,10 @@ namespace promyk::lanes {
 template <class Real>
 struct ArticleRow;
 
-// Row `row` into out[0 .. w); x_E[j] = pane_x(j, w) for the whole pane.
+// Row `row` into out[0 .. w) with the formula (article, stable or
+// geometric); x_E[j] = pane_x(j, w) for the whole pane.
+// article_row_intensities: the same row's intensities and branches (bytes of
+// Branch), for the tests.
 // (In a set's own file lanes.hpp has opened its namespace as inline; naming
 // it here without `inline` is allowed and keeps it inline, but clang warns.)
 #if defined(__clang__)
@@ -22,10 +26,16 @@ struct ArticleRow;
 #pragma clang diagnostic ignored "-Winline-namespace-reopened-noninline"
 #endif
 namespace avx2 {
-RowCounts draw_article_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out);
+RowCounts draw_article_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out,
+                           Formula formula);
+void article_row_intensities(const ArticleRow<double>& row, const double* x_E, int w, double* I_P,
+                             std::uint8_t* branches, Formula formula);
 }
 namespace avx512 {
-RowCounts draw_article_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out);
+RowCounts draw_article_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out,
+                           Formula formula);
+void article_row_intensities(const ArticleRow<double>& row, const double* x_E, int w, double* I_P,
+                             std::uint8_t* branches, Formula formula);
 }
 #if defined(__clang__)
 #pragma clang diagnostic pop

@@ -55,11 +55,12 @@ PROMYK_LANES_INLINE void put_grey_levels(Vector v, std::uint8_t* out, int n) {
     std::memcpy(out, &grey, static_cast<std::size_t>(n));
 }
 
-// Row `row` of a w-pixel pane into out[0 .. w): x_E[j] is pane_x(j, w),
-// given for the whole pane (columns share it; computing it here would cost
-// each pixel a division). The last vector is filled past w and only its
-// first pixels are kept.
-template <class Vector>
+// Row `row` of a w-pixel pane into out[0 .. w), with the sphere's formula
+// Root (render/article_lanes.hpp): x_E[j] is pane_x(j, w), given for the
+// whole pane (columns share it; computing it here would cost each pixel a
+// division). The last vector is filled past w and only its first pixels
+// are kept.
+template <class Vector, template <class> class Root = ArticleRoot>
 PROMYK_LANES_INLINE RowCounts draw_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out) {
     constexpr int width = LaneTraits<Vector>::width;
     using Mask = MaskOf<Vector>;
@@ -67,7 +68,7 @@ PROMYK_LANES_INLINE RowCounts draw_row(const ArticleRow<double>& row, const doub
     int first_non_finite_j = -1;
     // Pixels j .. j + n - 1 of the row, x their x_E (and, past n, filler).
     const auto draw = [&](int j, int n, Vector x, Mask kept) __attribute__((always_inline)) {
-        const LanePixel<Vector> pixel = article_lanes(row, x);
+        const LanePixel<Vector> pixel = article_lanes<Root>(row, x);
         put_grey_levels(pixel.I_P, out + j, n);
         miss -= pixel.miss & kept;
         dark -= pixel.dark & kept;
@@ -103,6 +104,57 @@ PROMYK_LANES_INLINE RowCounts draw_row(const ArticleRow<double>& row, const doub
     counts.branches[static_cast<int>(Branch::lit)] = w - missed - darks - non_finites;
     counts.first_non_finite_j = first_non_finite_j;
     return counts;
+}
+
+// Row `row`'s intensities into I_P[0 .. w) and each pixel's Branch into
+// branches[0 .. w), as draw_row computes them (for the tests: the bits
+// before the grey levels).
+template <class Vector, template <class> class Root>
+PROMYK_LANES_INLINE void row_intensities(const ArticleRow<double>& row, const double* x_E, int w, double* I_P,
+                                         std::uint8_t* branches) {
+    constexpr int width = LaneTraits<Vector>::width;
+    for (int j = 0; j < w; j += width) {
+        const int n = w - j < width ? w - j : width;
+        Vector x = splat<Vector>(x_E[j]);
+        for (int k = 0; k < n; ++k) x[k] = x_E[j + k];
+        const LanePixel<Vector> pixel = article_lanes<Root>(row, x);
+        for (int k = 0; k < n; ++k) {
+            I_P[j + k] = pixel.I_P[k];
+            const Branch branch = pixel.miss[k]         ? Branch::miss
+                                  : pixel.non_finite[k] ? Branch::non_finite
+                                  : pixel.dark[k]       ? Branch::dark
+                                                        : Branch::lit;
+            branches[j + k] = static_cast<std::uint8_t>(branch);
+        }
+    }
+}
+
+template <class Vector>
+PROMYK_LANES_INLINE void row_intensities(const ArticleRow<double>& row, const double* x_E, int w, double* I_P,
+                                         std::uint8_t* branches, Formula formula) {
+    switch (formula) {
+        case Formula::stable:
+            return row_intensities<Vector, StableRoot>(row, x_E, w, I_P, branches);
+        case Formula::geometric:
+            return row_intensities<Vector, GeometricRoot>(row, x_E, w, I_P, branches);
+        default:
+            return row_intensities<Vector, ArticleRoot>(row, x_E, w, I_P, branches);
+    }
+}
+
+// draw_row with the formula chosen at run time (once a row): the article's,
+// stable or geometric; fma has no lanes.
+template <class Vector>
+PROMYK_LANES_INLINE RowCounts draw_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out,
+                                       Formula formula) {
+    switch (formula) {
+        case Formula::stable:
+            return draw_row<Vector, StableRoot>(row, x_E, w, out);
+        case Formula::geometric:
+            return draw_row<Vector, GeometricRoot>(row, x_E, w, out);
+        default:
+            return draw_row<Vector, ArticleRoot>(row, x_E, w, out);
+    }
 }
 
 }  // namespace PROMYK_LANES_ISA

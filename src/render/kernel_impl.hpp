@@ -11,6 +11,7 @@
 #include <type_traits>
 
 #include "math/real.hpp"
+#include "render/article_row.hpp"
 #include "render/general_tracer.hpp"
 #include "render/kernel.hpp"
 #include "render/notes.hpp"
@@ -93,6 +94,9 @@ struct IgnoreSample {
 template <class Real, class F>
 class ArticleKernel final : public Kernel {
     static constexpr bool literal = std::is_same_v<Real, double> && F::id == Formula::article;
+    // Drawn in lanes (render/article_row.hpp): double with the article's,
+    // stable or geometric formula; float and fma a pixel at a time below.
+    static constexpr bool in_lanes = std::is_same_v<Real, double> && F::id != Formula::fma;
 
 public:
     ArticleKernel(const Stages& stages, const ArticleWorld<double>& world, int spp)
@@ -102,8 +106,8 @@ public:
     int channels() const override { return 1; }
     RowCounts row(int w, int i, std::uint8_t* out) const override {
         if (spp() > 1) return sampled_row(w, i, out);
-        if constexpr (literal) {
-            return render_row(world_, w, i, out);  // the tuned loop of the article's program
+        if constexpr (in_lanes) {
+            return render_row(world_, w, i, out, F::id);  // the tuned loop of the article's program
         } else {
             NullRecorder none;
             RowCounts counts;

@@ -10,6 +10,10 @@
 #include <cstdint>
 #include <type_traits>
 
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
+
 // Everything a kernel calls on lanes is inlined into the loop: the kernel
 // is too big for GCC to inline by itself, and a call costs the loop its
 // registers.
@@ -129,17 +133,36 @@ template <class Mask>
 PROMYK_LANES_INLINE Mask either(Mask a, Mask b) {
     return a | b;
 }
+// One bit a lane, set where the mask is: the lanes' sign bits in one
+// instruction where the set has it (a loop over the lanes extracts each one).
+template <class Mask>
+PROMYK_LANES_INLINE unsigned lane_bits(Mask m) {
+    constexpr int n = int(sizeof m / sizeof m[0]);
+#if defined(__SSE2__)
+    if constexpr (sizeof m == 16 && n == 2) return unsigned(_mm_movemask_pd(reinterpret_cast<__m128d>(m)));
+    if constexpr (sizeof m == 16 && n == 4) return unsigned(_mm_movemask_ps(reinterpret_cast<__m128>(m)));
+#endif
+#if defined(__AVX__)
+    if constexpr (sizeof m == 32 && n == 4) return unsigned(_mm256_movemask_pd(reinterpret_cast<__m256d>(m)));
+#endif
+#if defined(__AVX512F__)
+    if constexpr (sizeof m == 64 && n == 8) {
+        const __m512i v = reinterpret_cast<__m512i>(m);
+        return unsigned(_mm512_test_epi64_mask(v, v));
+    }
+#endif
+    unsigned bits = 0;
+    for (int k = 0; k < n; ++k) bits |= m[k] ? 1u << k : 0u;
+    return bits;
+}
 template <class Mask>
 PROMYK_LANES_INLINE bool any(Mask m) {
-    for (int k = 0; k < int(sizeof m / sizeof m[0]); ++k)
-        if (m[k]) return true;
-    return false;
+    return lane_bits(m) != 0;
 }
 template <class Mask>
 PROMYK_LANES_INLINE bool all(Mask m) {
-    for (int k = 0; k < int(sizeof m / sizeof m[0]); ++k)
-        if (!m[k]) return false;
-    return true;
+    constexpr int n = int(sizeof m / sizeof m[0]);
+    return lane_bits(m) == (1u << n) - 1;
 }
 template <class Mask>
 PROMYK_LANES_INLINE int count(Mask m) {
