@@ -39,6 +39,7 @@ set(PROMYK_PORTABLE_SOURCES
   render/map_overlay.cpp
   trace/json_text.cpp
   trace/trace_json.cpp
+  trace/trace_lines.cpp
   trace/trace_read.cpp
   trace/trace_text.cpp
   trace/trace_compare.cpp

@@ -1,7 +1,6 @@
 #include "bench/speed.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -30,15 +29,6 @@ namespace promyk::bench {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-template <class F>
-double seconds_of(F&& work) {
-    const auto start = Clock::now();
-    work();
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
 // Keeps the image in memory, row after row, for comparison.
 class MemorySink final : public RenderSink {
 public:
@@ -54,7 +44,19 @@ private:
     int w_;
 };
 
-// Writes trace lines to an anonymous temporary file and counts the bytes.
+// Counts the trace lines' bytes and keeps nothing: the traces' own cost,
+// with no file system in it.
+class TraceNullSink final : public RenderSink {
+public:
+    void image_rows(const std::uint8_t*, int) override {}
+    void trace_lines(std::string_view lines) override { bytes_ += lines.size(); }
+    std::size_t bytes() const { return bytes_; }
+
+private:
+    std::size_t bytes_ = 0;
+};
+
+// Writes trace lines to an anonymous temporary file (gone when closed).
 class TraceFileSink final : public RenderSink {
 public:
     TraceFileSink() : file_(std::tmpfile(), &std::fclose) {
@@ -64,16 +66,13 @@ public:
     void trace_lines(std::string_view lines) override {
         if (std::fwrite(lines.data(), 1, lines.size(), file_.get()) != lines.size())
             throw OutputError(ui_message("bench_temp_write"));
-        bytes_ += lines.size();
     }
     void finish() {
         if (std::fflush(file_.get()) != 0) throw OutputError(ui_message("bench_temp_write"));
     }
-    double bytes() const { return static_cast<double>(bytes_); }
 
 private:
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> file_;
-    std::size_t bytes_ = 0;
 };
 
 LiteralScene literal_scene(const ArticleWorld<double>& world) {
@@ -221,18 +220,38 @@ int run_speed_bench(const SpeedOptions& options) {
     print_standard_output("\n");
     flush_standard_output();
 
+    // Every pixel's trace, into a null sink and into a temporary file, side by
+    // side: what the traces cost, and what the file system adds.
     const int tw = options.trace_w;
-    TraceFileSink trace_sink;
-    const double t_traces = seconds_of([&] {
-        render(scene, {tw, threads}, PixelSelection::all(), trace_sink);
-        trace_sink.finish();
-    });
+    double trace_bytes = 0;  // one render's lines
+    const std::vector<TimedWork> trace_jobs = {
+        repeated([&] {
+            TraceNullSink sink;
+            render(scene, {tw, threads}, PixelSelection::all(), sink);
+            trace_bytes = static_cast<double>(sink.bytes());
+        }),
+        repeated([&] {
+            TraceFileSink sink;
+            render(scene, {tw, threads}, PixelSelection::all(), sink);
+            sink.finish();
+        }),
+    };
+    const std::vector<Timing> trace_timings = time_side_by_side(trace_jobs, policy);
     const double trace_pixels = static_cast<double>(tw) * tw;
-    line(ui_message("bench_speed_traces", {{"w", std::to_string(tw)},
-                                           {"threads", counted(threads, "bench_threads")},
-                                           {"pixels_per_second", fixed(trace_pixels / t_traces, 0)},
-                                           {"mb_per_second", fixed(trace_sink.bytes() / t_traces / 1e6, 1)},
-                                           {"bytes", fixed(trace_sink.bytes() / trace_pixels, 0)}}));
+    line(ui_message("bench_speed_traces", {{"w", std::to_string(tw)}, {"threads", counted(threads, "bench_threads")}}));
+    const char* trace_ids[2] = {"bench_speed_traces_null", "bench_speed_traces_file"};
+    for (std::size_t k = 0; k < trace_timings.size(); ++k) {
+        const Timing& t = trace_timings[k];
+        const auto per_second = [&t](double amount, int decimals) {
+            return t.timed ? fixed(amount / t.median_seconds_per_unit, decimals) : std::string("-");
+        };
+        std::string text = ui_message(trace_ids[k], {{"pixels_per_second", per_second(trace_pixels, 0)},
+                                                     {"mb_per_second", per_second(trace_bytes / 1e6, 1)}});
+        if (!t.timed) text += " (" + t.problem + ")";
+        line("  " + text);
+    }
+    line("  " + ui_message("bench_speed_traces_size",
+                           {{"bytes", fixed(trace_bytes / trace_pixels, 0)}}));
     return identical ? 0 : 1;
 }
 

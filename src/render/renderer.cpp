@@ -14,6 +14,7 @@
 
 #include "image/quantize.hpp"
 #include "render/trace_pixel.hpp"
+#include "trace/trace_lines.hpp"
 #include "util/interrupt.hpp"
 
 namespace promyk {
@@ -31,14 +32,13 @@ int resolve_threads(int threads) {
 
 namespace {
 
-// Appends the selected pixels of row i as JSON Lines.
+// Appends the selected pixels of row i as JSON Lines. The header's shared
+// text is written once a row (TraceLines), not once a pixel.
 void trace_row(const Kernel& kernel, const TraceHeader& header, const PixelSelection& traced, int i,
                std::string& out) {
-    for (int j = 0; j < header.w; ++j) {
-        if (!traced.contains(i, j)) continue;
-        append_trace_json(out, kernel.trace(header, i, j));
-        out += '\n';
-    }
+    const TraceLines lines(header);
+    for (int j = 0; j < header.w; ++j)
+        if (traced.contains(i, j)) lines.append(out, kernel.trace(lines.pixel_header(), i, j));
 }
 
 // Rows per band: enough pixels that handing a band to the sink is rare,
