@@ -67,8 +67,7 @@ PROMYK_LANES_INLINE RowCounts draw_row(const ArticleRow<double>& row, const doub
     Mask miss{}, dark{}, non_finite{};  // counted lane by lane: a mask is -1 where true
     int first_non_finite_j = -1;
     // Pixels j .. j + n - 1 of the row, x their x_E (and, past n, filler).
-    const auto draw = [&](int j, int n, Vector x, Mask kept) __attribute__((always_inline)) {
-        const LanePixel<Vector> pixel = article_lanes<Root>(row, x);
+    const auto take = [&](int j, int n, const LanePixel<Vector>& pixel, Mask kept) __attribute__((always_inline)) {
         put_grey_levels(pixel.I_P, out + j, n);
         miss -= pixel.miss & kept;
         dark -= pixel.dark & kept;
@@ -78,7 +77,21 @@ PROMYK_LANES_INLINE RowCounts draw_row(const ArticleRow<double>& row, const doub
             for (int k = width - 1; k >= 0; --k)
                 if (lane_of(now_non_finite, k)) first_non_finite_j = j + k;
     };
+    const auto draw = [&](int j, int n, Vector x, Mask kept) __attribute__((always_inline)) {
+        take(j, n, article_lanes<Root>(row, x), kept);
+    };
     int j = 0;
+    // Two vectors a step, computed before either is stored: two independent
+    // chains of square roots and divisions in flight at once.
+    for (; j + 2 * width <= w; j += 2 * width) {
+        Vector x0, x1;
+        std::memcpy(&x0, x_E + j, sizeof x0);
+        std::memcpy(&x1, x_E + j + width, sizeof x1);
+        const LanePixel<Vector> p0 = article_lanes<Root>(row, x0);
+        const LanePixel<Vector> p1 = article_lanes<Root>(row, x1);
+        take(j, width, p0, ~Mask{});
+        take(j + width, width, p1, ~Mask{});
+    }
     for (; j + width <= w; j += width) {
         Vector x;
         std::memcpy(&x, x_E + j, sizeof x);
