@@ -32,6 +32,7 @@ set(PROMYK_PORTABLE_SOURCES
   render/renderer.cpp
   render/article_row.cpp
   render/isa.cpp
+  render/skipping.cpp
   render/maps.cpp
   image/map_colours.cpp
   # The page's error and digits-lost overlays and their legends (issue 17).

@@ -17,6 +17,7 @@
 #include "render/isa.hpp"
 #include "render/renderer.hpp"
 #include "render/silhouette.hpp"
+#include "render/skipping.hpp"
 
 namespace promyk {
 
@@ -199,7 +200,8 @@ RowCounts lanes_row(const ArticleWorld<double>& world, int w, int i, std::uint8_
     // The proof is of the program's delta, which the stable formula computes
     // too (the same operations on the same numbers, so the same bits). The
     // geometric formula's delta_g has no such proof: it computes every column.
-    const RowSpan span = formula == Formula::geometric ? RowSpan{0, w} : row_hit_span(row, x_E, w);
+    const bool skip = background_skipping() && formula != Formula::geometric;
+    const RowSpan span = skip ? row_hit_span(row, x_E, w) : RowSpan{0, w};
     const int n = span.hi - span.lo;
     RowCounts counts;
     switch (article_isa()) {
