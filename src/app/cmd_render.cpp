@@ -4,6 +4,7 @@
 // directory, a missing folder, two outputs that are one file: nothing is
 // rendered and nothing is created), and the outputs are committed together
 // at the end, so a failed run leaves none of its new files.
+#include <algorithm>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -86,7 +87,7 @@ public:
     }
     void trace_lines(std::string_view lines) override {
         traces_->write(lines);
-        for (const char c : lines) lines_ += c == '\n';
+        lines_ += std::count(lines.begin(), lines.end(), '\n');  // vectorised, unlike a loop of +=
     }
     void progress(int rows_done, int rows_total) override { progress_.update(rows_done, rows_total); }
     std::int64_t trace_count() const { return lines_; }
