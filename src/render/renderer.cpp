@@ -124,10 +124,12 @@ public:
                 }
                 continue;
             }
-            std::unique_lock<std::mutex> lock(mutex_);
-            band_drawn_.wait_for(lock, std::chrono::milliseconds(5), [&] {
+            const auto drawn = [&] {
                 return waited.rows_done.load(std::memory_order_acquire) >= waited.count || stop_.load();
-            });
+            };
+            if (spin_until(drawn)) continue;
+            std::unique_lock<std::mutex> lock(mutex_);
+            band_drawn_.wait_for(lock, std::chrono::milliseconds(5), drawn);
         }
         return !stopped();
     }
@@ -163,6 +165,19 @@ public:
     }
 
 private:
+    // Waits a short while without sleeping: a wait here is usually shorter
+    // than waking a sleeping thread (on a virtual machine, an idle processor
+    // takes longer still). True if `ready` came true.
+    template <class Ready>
+    static bool spin_until(Ready&& ready) {
+        const auto until = std::chrono::steady_clock::now() + std::chrono::microseconds(200);
+        while (std::chrono::steady_clock::now() < until) {
+            if (ready()) return true;
+            std::this_thread::yield();
+        }
+        return ready();
+    }
+
     bool stopped() const { return stop_.load(std::memory_order_relaxed) || interrupt_signal() != 0; }
 
     // Waits until band b's buffer is free; false if the work stopped.
@@ -170,6 +185,7 @@ private:
         const auto free = [&] { return delivered_.load() + ring_size > b; };
         while (!free()) {
             if (stopped()) return false;
+            if (spin_until([&] { return free() || stop_.load(); })) continue;
             std::unique_lock<std::mutex> lock(mutex_);
             // Timed: a signal sets a flag and notifies nobody.
             buffer_free_.wait_for(lock, std::chrono::milliseconds(5), [&] { return free() || stop_.load(); });
