@@ -6,6 +6,7 @@
 // The output rules are render's: everything is checked before anything is
 // computed, a regular file is written completely or not at all, `-o -` is
 // refused on a terminal.
+#include <algorithm>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -63,11 +64,13 @@ struct ExportOptions {
     std::string bench_file;      // --bench: promyk bench accuracy --json's file
 };
 
-// 1.2 MB, 350 kB: SI units, as disk sizes are sold.
+// 1.2 MB, 350 kB: SI units, as disk sizes are sold; 1,2 MB in Polish.
 std::string size_text(double bytes) {
-    if (bytes < 1000) return fmt::format("{:.0f} B", bytes);
-    if (bytes < 1e6) return fmt::format("{:.0f} kB", bytes / 1e3);
-    return fmt::format("{:.1f} MB", bytes / 1e6);
+    std::string text = bytes < 1000  ? fmt::format("{:.0f} B", bytes)
+                       : bytes < 1e6 ? fmt::format("{:.0f} kB", bytes / 1e3)
+                                     : fmt::format("{:.1f} MB", bytes / 1e6);
+    if (ui_language() == Language::pl) std::replace(text.begin(), text.end(), '.', ',');
+    return text;
 }
 
 // Collects a render's rows: the image, or the branch map's colours.

@@ -64,7 +64,14 @@ refused "not a trace" "bad.jsonl: line 1: not a trace from promyk render --trace
 truncate -s 17M big.jsonl
 refused "too large" "big.jsonl: the trace file is 17.8 MB, and the page embeds at most 16.8 MB.*--trace-region" \
   --w 8 --traces big.jsonl
+"$promyk" --lang pl export --w 8 --traces big.jsonl 2>err.txt
+if j err.txt | grep -q "plik śladów ma 17,8 MB, a strona osadza najwyżej 16,8 MB"; then ok
+else bad "too large, in Polish: $(cat err.txt)"; fi
 rm -f big.jsonl
+# Polish sizes have a decimal comma.
+if "$promyk" --lang pl export --w 256 -o pl.html 2>err.txt &&
+   j err.txt | grep -qE "zapisano pl.html \(strona sceny article przy w = 256, [0-9]+,[0-9] MB\)"; then ok
+else bad "export's size in Polish: $(cat err.txt)"; fi
 "$promyk" --lang pl export --w 16 --scene s.json --traces t.jsonl -o out.html 2>err.txt
 if j err.txt | grep -q "ślady przy w = 8, a eksport jest przy --w 16"; then ok; else bad "Polish: $(cat err.txt)"; fi
 
