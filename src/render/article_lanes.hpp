@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <limits>
 
+#include "geometry/formula.hpp"
+
 #include "render/lanes.hpp"
 #include "render/pane.hpp"
 #include "render/tracer.hpp"
@@ -129,6 +131,26 @@ struct GeometricRoot {
         return cancellation_free_root(C, lane_sqrt(EE * delta_g), c_0, EE, missed);
     }
 };
+
+// Calls visit(RootOf<Root>{}) with the root step of `formula` (the article's,
+// stable or geometric; fma has no lanes): the one place a formula chosen at
+// run time becomes a template argument.
+template <template <class> class R>
+struct RootOf {
+    template <class Lane>
+    using Root = R<Lane>;
+};
+template <class Visit>
+PROMYK_LANES_INLINE decltype(auto) with_root(Formula formula, Visit&& visit) {
+    switch (formula) {
+        case Formula::stable:
+            return visit(RootOf<StableRoot>{});
+        case Formula::geometric:
+            return visit(RootOf<GeometricRoot>{});
+        default:
+            return visit(RootOf<ArticleRoot>{});
+    }
+}
 
 template <class Lane>
 struct LanePixel {

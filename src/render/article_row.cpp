@@ -112,27 +112,15 @@ PixelResult<Real> one_lane(const ArticleWorld<Real>& world, int w, int i, int j)
 
 template <class Real>
 PixelResult<Real> one_lane(const ArticleWorld<Real>& world, int w, int i, int j, Formula formula) {
-    switch (formula) {
-        case Formula::stable:
-            return one_lane<lanes::StableRoot>(world, w, i, j);
-        case Formula::geometric:
-            return one_lane<lanes::GeometricRoot>(world, w, i, j);
-        default:
-            return one_lane<lanes::ArticleRoot>(world, w, i, j);
-    }
+    return lanes::with_root(formula, [&](auto root) { return one_lane<decltype(root)::template Root>(world, w, i, j); });
 }
 
 template <class Vector, class Real>
 ArticleRowCounts row_intensities(const ArticleWorld<Real>& world, int w, int i, Real* I_P, std::uint8_t* branches,
                                  Formula formula) {
-    switch (formula) {
-        case Formula::stable:
-            return article_chunk<Vector, lanes::StableRoot>(world, w, i, 0, w, I_P, branches);
-        case Formula::geometric:
-            return article_chunk<Vector, lanes::GeometricRoot>(world, w, i, 0, w, I_P, branches);
-        default:
-            return article_chunk<Vector, lanes::ArticleRoot>(world, w, i, 0, w, I_P, branches);
-    }
+    return lanes::with_root(formula, [&](auto root) {
+        return article_chunk<Vector, decltype(root)::template Root>(world, w, i, 0, w, I_P, branches);
+    });
 }
 
 }  // namespace

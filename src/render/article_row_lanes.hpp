@@ -145,14 +145,9 @@ PROMYK_LANES_INLINE void row_intensities(const ArticleRow<double>& row, const do
 template <class Vector>
 PROMYK_LANES_INLINE void row_intensities(const ArticleRow<double>& row, const double* x_E, int w, double* I_P,
                                          std::uint8_t* branches, Formula formula) {
-    switch (formula) {
-        case Formula::stable:
-            return row_intensities<Vector, StableRoot>(row, x_E, w, I_P, branches);
-        case Formula::geometric:
-            return row_intensities<Vector, GeometricRoot>(row, x_E, w, I_P, branches);
-        default:
-            return row_intensities<Vector, ArticleRoot>(row, x_E, w, I_P, branches);
-    }
+    return with_root(formula, [&](auto root) {
+        return row_intensities<Vector, decltype(root)::template Root>(row, x_E, w, I_P, branches);
+    });
 }
 
 // draw_row with the formula chosen at run time (once a row): the article's,
@@ -160,14 +155,9 @@ PROMYK_LANES_INLINE void row_intensities(const ArticleRow<double>& row, const do
 template <class Vector>
 PROMYK_LANES_INLINE RowCounts draw_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out,
                                        Formula formula) {
-    switch (formula) {
-        case Formula::stable:
-            return draw_row<Vector, StableRoot>(row, x_E, w, out);
-        case Formula::geometric:
-            return draw_row<Vector, GeometricRoot>(row, x_E, w, out);
-        default:
-            return draw_row<Vector, ArticleRoot>(row, x_E, w, out);
-    }
+    return with_root(formula, [&](auto root) {
+        return draw_row<Vector, decltype(root)::template Root>(row, x_E, w, out);
+    });
 }
 
 }  // namespace PROMYK_LANES_ISA
