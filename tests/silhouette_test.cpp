@@ -3,7 +3,8 @@
 // centres (a tangent ray, Δ/4 = 0 up to rounding) and on spheres around the
 // line of sight (nothing can be proven there), every drawn row equals the
 // traced path pixel for pixel on every instruction-set path, and the
-// proven columns really are misses of the kernel.
+// proven columns really are misses of the kernel, with each formula that
+// skips (the article's and stable: the program's Δ/4; geometric: its delta_g).
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -13,6 +14,7 @@
 
 #include "image/quantize.hpp"
 #include "isa_forced.hpp"
+#include "math/real.hpp"
 #include "render/article_lanes.hpp"
 #include "render/article_row.hpp"
 #include "render/isa.hpp"
@@ -27,22 +29,38 @@ using namespace promyk;
 
 namespace {
 
-// Rows drawn against the traced path on every path; returns the pixels skipped.
-long long check_world(const ArticleWorld<double>& world, int w, int& mismatches) {
+constexpr Formula formulas[] = {Formula::article, Formula::stable, Formula::geometric};
+
+// The traced path's pixel with the formula.
+PixelResult<double> traced(const ArticleWorld<double>& world, Formula formula, const Vec3d& E) {
     NullRecorder none;
+    switch (formula) {
+        case Formula::stable:
+            return trace_ray<SphereFormula<Formula::stable>>(world, E, none);
+        case Formula::geometric:
+            return trace_ray<SphereFormula<Formula::geometric>>(world, E, none);
+        default:
+            return trace_ray<SphereFormula<Formula::article>>(world, E, none);
+    }
+}
+
+// Rows drawn against the traced path on every path, with every formula
+// that has lanes; returns the pixels skipped.
+long long check_world(const ArticleWorld<double>& world, int w, int& mismatches) {
     std::vector<std::uint8_t> grey(static_cast<std::size_t>(w));
     long long skipped = 0;
     for (const Isa isa : supported_isas()) {
-        PathForced forced(isa);
+      PathForced forced(isa);
+      for (const Formula formula : formulas) {
         for (int i = 0; i < w; ++i) {
-            const RowCounts drawn = render_row(world, w, i, grey.data());
+            const RowCounts drawn = render_row(world, w, i, grey.data(), formula);
             int misses = 0;
             for (int j = 0; j < w; ++j) {
-                const PixelResult<double> pixel = trace_ray(world, pane_point(i, j, w, world.z_E), none);
+                const PixelResult<double> pixel = traced(world, formula, pane_point(i, j, w, world.z_E));
                 misses += pixel.branch == Branch::miss;
                 if (grey[static_cast<std::size_t>(j)] != to_byte(pixel.I_P)) {
                     if (mismatches++ < 5)
-                        FAIL_CHECK(isa_name(isa) << ": pixel (" << i << ", " << j << ") drawn "
+                        FAIL_CHECK(isa_name(isa) << ", " << formula_name(formula) << ": pixel (" << i << ", " << j << ") drawn "
                                                  << int(grey[static_cast<std::size_t>(j)]) << ", traced "
                                                  << int(to_byte(pixel.I_P)));
                 }
@@ -51,6 +69,7 @@ long long check_world(const ArticleWorld<double>& world, int w, int& mismatches)
             if (drawn.sphere_tests + drawn.skipped != w) ++mismatches;
             skipped += drawn.skipped;
         }
+      }
     }
     return skipped;
 }
@@ -64,7 +83,7 @@ ArticleWorld<double> world_of(double x, double y, double z, double r, double z_E
 TEST_CASE("skipping: the proven columns are misses of the kernel's own delta", "[silhouette]") {
     std::mt19937_64 random(7);
     std::uniform_real_distribution<double> position(-3, 3), depth(2.5, 12), radius(0.05, 2.5);
-    int checked = 0, proven = 0;
+    long long checked = 0, proven = 0, proven_geometric = 0;
     for (int s = 0; s < 400; ++s) {
         const ArticleWorld<double> world = world_of(position(random), position(random), depth(random), radius(random));
         const int w = 16 + s % 97;
@@ -72,22 +91,32 @@ TEST_CASE("skipping: the proven columns are misses of the kernel's own delta", "
         for (int j = 0; j < w; ++j) x_E[static_cast<std::size_t>(j)] = pane_x<double>(j, w);
         for (int i = 0; i < w; ++i) {
             const lanes::ArticleRow<double> row(world, pane_y<double>(i, w));
-            const RowSpan span = row_hit_span(row, x_E.data(), w);
-            REQUIRE(0 <= span.lo);
-            REQUIRE(span.lo <= span.hi);
-            REQUIRE(span.hi <= w);
-            for (int j = 0; j < w; ++j) {
-                if (j >= span.lo && j < span.hi) continue;
-                ++proven;
-                const lanes::LanePixel<lanes::Double2> pixel = lanes::article_lanes(row, lanes::splat<lanes::Double2>(x_E[static_cast<std::size_t>(j)]));
-                if (!lanes::lane_of(pixel.miss, 0)) FAIL_CHECK("scene " << s << ", w " << w << ": pixel (" << i << ", " << j << ") skipped but hit");
-                ++checked;
+            for (const Formula formula : formulas) {
+                const RowSpan span = row_hit_span(row, x_E.data(), w, formula);
+                REQUIRE(0 <= span.lo);
+                REQUIRE(span.lo <= span.hi);
+                REQUIRE(span.hi <= w);
+                for (int j = 0; j < w; ++j) {
+                    if (j >= span.lo && j < span.hi) continue;
+                    ++proven;
+                    if (formula == Formula::geometric) ++proven_geometric;
+                    const bool miss = lanes::with_root(formula, [&](auto root) {
+                        const auto pixel = lanes::article_lanes<decltype(root)::template Root>(
+                            row, lanes::splat<lanes::Double2>(x_E[static_cast<std::size_t>(j)]));
+                        return lanes::lane_of(pixel.miss, 0);
+                    });
+                    if (!miss)
+                        FAIL_CHECK(formula_name(formula) << ", scene " << s << ", w " << w << ": pixel (" << i << ", "
+                                                         << j << ") skipped but hit");
+                    ++checked;
+                }
             }
         }
     }
-    INFO(proven << " pixels proven background");
+    INFO(proven << " pixels proven background, " << proven_geometric << " of them with the geometric formula");
     CHECK(checked == proven);
-    CHECK(proven > 100000);
+    CHECK(proven > 300000);
+    CHECK(proven_geometric > 100000);
 }
 
 TEST_CASE("skipping never changes a pixel: random spheres, tangent silhouettes, spheres around the line of sight",
@@ -115,6 +144,15 @@ TEST_CASE("skipping never changes a pixel: random spheres, tangent silhouettes, 
         for (const double nudge : {-1e-15, 0.0, 1e-15})
             skipped += check_world(world_of(x, y, z, std::sqrt(rr) * (1 + nudge)), w, mismatches);
     }
+    // Near the ends of double's range, where the bounds' own arithmetic and
+    // the geometric formula's squares of l could overflow or underflow: the
+    // article's scene scaled up and down, and a tiny z_E.
+    for (const double scale : {1e-160, 1e-120, 1e-60, 1e60, 1e120, 1e150, 1e153, 1e154}) {
+        INFO("scaled by " << scale);
+        skipped += check_world({2 * scale, {0.5 * scale, 0.25 * scale, 6 * scale}, 1.1 * scale, {1.5, 1, 1}, 1, 0.5},
+                               21, mismatches);
+    }
+    skipped += check_world(world_of(0.3, 0.2, 4, 0.9, 1e-200), 21, mismatches);
     // Around the line of sight along x (r² ≥ y_S² + z_S²): nothing is proven,
     // every pixel is computed.
     {
@@ -125,4 +163,58 @@ TEST_CASE("skipping never changes a pixel: random spheres, tangent silhouettes, 
     }
     CHECK(mismatches == 0);
     CHECK(skipped > 100000);
+}
+
+// The geometric formula's skipping rests on one bound: its computed delta_g
+// is within g = 64u(|S|² + r²) of the exact Δ/|E|² (render/silhouette.hpp).
+// Checked against quad on random spheres and rays, on rays that graze the
+// sphere (where delta_g is nearly 0 and cancels most) and on far spheres.
+TEST_CASE("skipping: the geometric formula's delta_g is within its bound of the exact one", "[silhouette]") {
+    std::mt19937_64 random(23);
+    std::uniform_real_distribution<double> unit(-1, 1), depth(1.5, 40), radius(0.01, 3), eye(0.2, 4);
+    double worst = 0;  // the largest |computed − exact| / g
+    int grazing = 0;
+    for (int s = 0; s < 200000; ++s) {
+        const double scale = s % 3 == 0 ? 1 : std::pow(10.0, unit(random) * 30);
+        const ArticleWorld<double> world = world_of(unit(random) * 3 * scale, unit(random) * 3 * scale,
+                                                    depth(random) * scale, radius(random) * scale, eye(random));
+        double x = unit(random), y = unit(random);
+        if (s % 2 == 0) {
+            // A ray grazing the sphere: y chosen so that the exact Δ is about 0.
+            const Vec3d S = world.S;
+            const double z = world.z_E;
+            // A direction at angle a = asin(r/|S|) from S: the sphere's rim.
+            const double len = std::sqrt(S.x * S.x + S.y * S.y + S.z * S.z);
+            const double sin_a = world.r / len;
+            if (!(sin_a < 1)) continue;
+            const double ux = unit(random), uy = unit(random);
+            // A random direction perpendicular to S, then the rim's direction
+            // S/|S| cos a + perp/|perp| sin a, through the pane at z_E.
+            const Vec3d perp{ux * S.z, uy * S.z, -(ux * S.x + uy * S.y)};
+            const double p_len = std::sqrt(perp.x * perp.x + perp.y * perp.y + perp.z * perp.z);
+            if (!(p_len > 0)) continue;
+            const double cos_a = std::sqrt(1 - sin_a * sin_a);
+            const Vec3d d{S.x / len * cos_a + perp.x / p_len * sin_a, S.y / len * cos_a + perp.y / p_len * sin_a,
+                          S.z / len * cos_a + perp.z / p_len * sin_a};
+            if (!(d.z > 0)) continue;
+            x = d.x / d.z * z, y = d.y / d.z * z;
+            ++grazing;
+        }
+        const lanes::ArticleRow<double> row(world, y);
+        const double EE = (x * x + row.yy) + row.zz;
+        const double C = (x * world.S.x + row.ySy) + row.zSz;
+        const lanes::GeometricRoot<double> root(row, x, EE, C);
+        const quad xq = x, yq = y, zq = world.z_E, Sx = world.S.x, Sy = world.S.y, Sz = world.S.z, rq = world.r;
+        const quad Cq = xq * Sx + yq * Sy + zq * Sz, EEq = xq * xq + yq * yq + zq * zq;
+        const quad exact = (Cq * Cq - EEq * (Sx * Sx + Sy * Sy + Sz * Sz - rq * rq)) / EEq;
+        const double g = silhouette_detail::geometric_error(row);
+        const double off = static_cast<double>(quad_math::fabs(static_cast<quad>(root.delta_g) - exact)) / g;
+        if (off > worst) worst = off;
+    }
+    INFO("largest error " << worst << " of the bound, " << grazing << " grazing rays");
+    CHECK(grazing > 50000);
+    CHECK(worst <= 1);
+    // Not a bound so loose that any error would pass: the worst case uses a
+    // few percent of it (64 units of roundoff against the dozen or so that occur).
+    CHECK(worst > 1.0 / 64);
 }

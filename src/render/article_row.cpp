@@ -186,10 +186,9 @@ RowCounts lanes_row(const ArticleWorld<double>& world, int w, int i, std::uint8_
     // Only the columns that may meet the sphere are computed; the others are
     // proven misses (render/silhouette.hpp) and get the background's grey.
     // The proof is of the program's delta, which the stable formula computes
-    // too (the same operations on the same numbers, so the same bits). The
-    // geometric formula's delta_g has no such proof: it computes every column.
-    const bool skip = background_skipping() && formula != Formula::geometric;
-    const RowSpan span = skip ? row_hit_span(row, x_E, w) : RowSpan{0, w};
+    // too (the same operations on the same numbers, so the same bits); the
+    // geometric formula's delta_g is proven with a margin for its own roundings.
+    const RowSpan span = background_skipping() ? row_hit_span(row, x_E, w, formula) : RowSpan{0, w};
     const int n = span.hi - span.lo;
     RowCounts counts;
     switch (article_isa()) {

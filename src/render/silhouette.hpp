@@ -18,12 +18,21 @@
 // The row's roots say where to look; a pixel two columns outside each root
 // is checked (and, if that fails, a few farther out); otherwise nothing is
 // skipped on that side.
+//
+// The geometric formula decides by its own delta_g = r² − |l|², l = t_mid E − S,
+// t_mid = C/|E|². Exactly, |l|² = |S|² − C²/|E|², so delta_g = Δ/|E|²; the
+// computed one is within g = 64u(|S|² + r²) of it (t_mid E is at most |S| long,
+// as C ≤ |E||S|, and |l| ≤ |S|: a few dozen roundings of numbers of that
+// size; tests/silhouette_test.cpp checks the bound against quad). So
+// Δ(x) < −|E|²_max·g proves delta_g < 0, a miss: the test above takes that
+// extra margin, |E|² being at most 1 + y_E² + z_E² on the pane.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "geometry/formula.hpp"
 #include "render/article_lanes.hpp"
 
 namespace promyk {
@@ -58,14 +67,36 @@ inline double row_error(const lanes::ArticleRow<double>& row) {
     return 64 * u * (A * A + EE * B) + 1e-290;
 }
 
+// The geometric formula's bound g on |computed delta_g − Δ/|E|²| (above).
+inline double geometric_error(const lanes::ArticleRow<double>& row) {
+    const double u = std::numeric_limits<double>::epsilon() / 2;
+    return 64 * u * (row.SS + row.rr) + 1e-290;
+}
+
+// The geometric formula's margin: |E|²_max·g, or NaN when the bound cannot
+// be trusted (the squares of l near overflow, or products so small that
+// underflow's absolute errors outgrow g).
+inline double geometric_margin(const lanes::ArticleRow<double>& row) {
+    const double u = std::numeric_limits<double>::epsilon() / 2;
+    const double B = row.SS + row.rr;
+    if (!(16 * B <= std::numeric_limits<double>::max()) ||
+        !(std::sqrt(row.SS) * std::fabs(row.world.z_E) >= 1e-250))
+        return std::numeric_limits<double>::quiet_NaN();
+    const double EE_max = ((1 + row.yy) + row.zz) * (1 + 8 * u);
+    return EE_max * geometric_error(row);
+}
+
 }  // namespace silhouette_detail
 
-// The columns of a w-pixel row (x_E[j] = pane_x(j, w)) that may be hit; the
-// whole row when nothing can be proven (a sphere around the line of sight,
-// numbers near the ends of double's range).
-inline RowSpan row_hit_span(const lanes::ArticleRow<double>& row, const double* x_E, int w) {
+// The columns of a w-pixel row (x_E[j] = pane_x(j, w)) that may be hit with
+// the formula (the article's and stable: the program's Δ/4; geometric:
+// delta_g); the whole row when nothing can be proven (a sphere around the
+// line of sight, numbers near the ends of double's range).
+inline RowSpan row_hit_span(const lanes::ArticleRow<double>& row, const double* x_E, int w,
+                            Formula formula = Formula::article) {
     using namespace silhouette_detail;
     const RowSpan all{0, w};
+    const double margin = formula == Formula::geometric ? geometric_margin(row) : 0.0;
     const double xS = row.world.S.x;
     // The quadratic's coefficients, exactly enough to find where to look.
     const double a = row.world.r * row.world.r - (row.world.S.y * row.world.S.y + row.world.S.z * row.world.S.z);
@@ -77,7 +108,7 @@ inline RowSpan row_hit_span(const lanes::ArticleRow<double>& row, const double* 
     const double c = c0 * c0 - k * row.SS_rr;
     const double x_v = -b / (2 * a);
     const double e = row_error(row);
-    if (!std::isfinite(x_v) || !std::isfinite(e) || !std::isfinite(c)) return all;
+    if (!std::isfinite(x_v) || !std::isfinite(e) || !std::isfinite(c) || !std::isfinite(margin)) return all;
     // Where Δ = 0 (a root pair, or the vertex when the row misses the sphere).
     double x1 = x_v, x2 = x_v;
     const double disc = b * b - 4 * a * c;
@@ -107,7 +138,7 @@ inline RowSpan row_hit_span(const lanes::ArticleRow<double>& row, const double* 
     for (int step = 2; step <= 32; step *= 4) {
         const int j = std::min(column(x1) - step, w - 1);
         if (j < 0) break;
-        if (slope_sign(x_E[j]) > 0 && delta_hat(row, x_E[j]) + 2 * e < 0) {
+        if (slope_sign(x_E[j]) > 0 && delta_hat(row, x_E[j]) + 2 * e + margin < 0) {
             span.lo = j + 1;
             break;
         }
@@ -115,7 +146,7 @@ inline RowSpan row_hit_span(const lanes::ArticleRow<double>& row, const double* 
     for (int step = 2; step <= 32; step *= 4) {
         const int j = std::max(column(x2) + 1 + step, 0);
         if (j > w - 1) break;
-        if (slope_sign(x_E[j]) < 0 && delta_hat(row, x_E[j]) + 2 * e < 0) {
+        if (slope_sign(x_E[j]) < 0 && delta_hat(row, x_E[j]) + 2 * e + margin < 0) {
             span.hi = j;
             break;
         }
