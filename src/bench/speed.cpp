@@ -16,10 +16,13 @@
 #include "bench/cpu_pinning.hpp"
 #include "bench/timing.hpp"
 #include "image/quantize.hpp"
+#include "render/article_row.hpp"
 #include "render/isa.hpp"
 #include "render/renderer.hpp"
 #include "render/skipping.hpp"
+#include "render/world.hpp"
 #include "trace/messages.hpp"
+#include "trace/number_text.hpp"
 #include "util/errors.hpp"
 #include "util/interrupt.hpp"
 #include "util/standard_output.hpp"
@@ -88,6 +91,41 @@ std::vector<std::uint8_t> to_bytes(const std::vector<double>& t) {
     return bytes;
 }
 
+// --real float beside double on one core: the time ratio, and how far its
+// intensities land from double's (untimed: every row of both, in lanes).
+void report_float(const ArticleWorld<double>& world, int w, const Timing& float_run, const Timing& double_run,
+                  const std::vector<std::uint8_t>& float_image, const std::vector<std::uint8_t>& double_image) {
+    const ArticleWorld<float> world_f{static_cast<float>(world.z_E), to_real<float>(world.S), static_cast<float>(world.r),
+                                      to_real<float>(world.L), static_cast<float>(world.I),
+                                      static_cast<float>(world.background)};
+    std::vector<double> I_d(static_cast<std::size_t>(w));
+    std::vector<float> I_f(static_cast<std::size_t>(w));
+    double largest = 0;
+    int at_i = 0, at_j = 0;
+    for (int i = 0; i < w; ++i) {
+        if ((i & 63) == 0) throw_if_interrupted();
+        article_row_intensities(world, w, i, I_d.data());
+        article_row_intensities(world_f, w, i, I_f.data());
+        for (int j = 0; j < w; ++j) {
+            const double d = std::fabs(static_cast<double>(I_f[static_cast<std::size_t>(j)]) - I_d[static_cast<std::size_t>(j)]);
+            if (d > largest) largest = d, at_i = i, at_j = j;
+        }
+    }
+    long long grey_differs = 0;
+    for (std::size_t k = 0; k < float_image.size(); ++k) grey_differs += float_image[k] != double_image[k];
+    const auto line = [](const std::string& text) { print_standard_output("{}\n", indented(text)); };
+    line(ui_message("bench_speed_float",
+                    {{"ns", float_run.timed ? fixed(float_run.median_seconds_per_unit / (static_cast<double>(w) * w) * 1e9, 2) : "-"},
+                     {"ratio", float_run.timed && double_run.timed
+                                   ? fixed(float_run.median_seconds_per_unit / double_run.median_seconds_per_unit, 2)
+                                   : "-"}}));
+    line("  " + ui_message("bench_speed_float_difference",
+                           {{"difference", shown_number(largest, ui_language(), 3)},
+                            {"i", std::to_string(at_i)},
+                            {"j", std::to_string(at_j)},
+                            {"pixels", counted(grey_differs, "bench_pixels")}}));
+}
+
 }  // namespace
 
 int run_speed_bench(const SpeedOptions& options) {
@@ -144,6 +182,17 @@ int run_speed_bench(const SpeedOptions& options) {
         MemorySink sink(threaded_image.data(), w);
         render(scene, {w, threads}, PixelSelection{}, sink);
     }));
+    // --real float on the first core, beside the double engine's run there.
+    std::vector<std::uint8_t> float_image(literal_t.size());
+    const std::size_t double_on_first = 1 + static_cast<std::size_t>(std::find(paths.begin(), paths.end(), in_use) - paths.begin());
+    jobs.push_back([&](long count) {
+        std::optional<PinnedToCpu> pin;
+        if (pinned) pin.emplace(cpus.front());
+        for (long k = 0; k < count; ++k) {
+            MemorySink sink(float_image.data(), w);
+            render(scene, {w, 1, RealType::float_}, PixelSelection{}, sink);
+        }
+    });
 
     print_standard_output("{}\n", wrap_text(ui_message("bench_speed_title",
                                                     {{"w", std::to_string(w)},
@@ -157,8 +206,9 @@ int run_speed_bench(const SpeedOptions& options) {
     TimingPolicy policy;
     policy.rounds = options.repetitions;
     const std::vector<Timing> timings = time_side_by_side(jobs, policy);
-    const Timing& threaded = timings.back();
-    const Timing& no_skip = timings[timings.size() - 2];
+    const Timing& float_run = timings.back();
+    const Timing& threaded = timings[timings.size() - 2];
+    const Timing& no_skip = timings[timings.size() - 3];
 
     const std::vector<std::uint8_t> literal_image = to_bytes(literal_t);
     bool identical = threaded_image == literal_image && no_skip_image == literal_image;
@@ -241,6 +291,8 @@ int run_speed_bench(const SpeedOptions& options) {
     }
     for (const std::string& problem : problems) line(problem);
     line(ui_message("bench_speed_identical", {{"answer", ui_message(identical ? "bench_yes" : "bench_no")}}));
+    print_standard_output("\n");
+    report_float(world, w, float_run, timings[double_on_first], float_image, literal_image);
     print_standard_output("\n");
     flush_standard_output();
 
