@@ -308,12 +308,10 @@ TEST_CASE("Drawn article rows: every instruction-set path this processor has, ea
                     CHECK(check_pane(named.world, w, formula) == 0);
                     CHECK(count_mismatches == 0);
                     // The article's scene leaves most of the pane to the background:
-                    // most of it is skipped (render/silhouette.hpp) with the article's
-                    // and the stable formula (the same delta); the geometric formula
-                    // has no proof and computes every pixel.
-                    if (named.name == "article.json" && formula != Formula::geometric)
-                        CHECK(skipped > static_cast<long long>(w) * w / 2);
-                    if (formula == Formula::geometric) CHECK(skipped == 0);
+                    // most of it is skipped (render/silhouette.hpp) with every formula
+                    // that has lanes (the article's and stable: the same delta;
+                    // geometric: its delta_g, with a margin for its roundings).
+                    if (named.name == "article.json") CHECK(skipped > static_cast<long long>(w) * w / 2);
                 }
             }
         }
