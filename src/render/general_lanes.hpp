@@ -52,26 +52,43 @@ struct GeneralRow {
         double yn, zn;      // n_y y_E, n_z z_E: n_hat.E's last two terms
         Surface surface;
     };
+    using Lamp = typename World<double, Rgb>::Lamp;
     double y_E, z_E;
     double yy, zz;          // y_E y_E, z_E z_E: |E|^2's last two terms
-    std::vector<Ball> spheres;
-    std::vector<Flat> planes;
-    std::vector<typename World<double, Rgb>::Lamp> lights;
     Intensity background;
+    // The objects and lights as plain arrays: the kernels read them without
+    // calling a function (which, not inlined, one instruction set's copy
+    // could serve another's).
+    const Ball* spheres;
+    int sphere_count;
+    const Flat* planes;
+    int plane_count;
+    const Lamp* lights;
+    int light_count;
 
     GeneralRow(const World<double, Rgb>& world, double y)
-        : y_E(y), z_E(world.z_E), yy(y * y), zz(world.z_E * world.z_E), lights(world.lights),
-          background(world.background) {
+        : y_E(y), z_E(world.z_E), yy(y * y), zz(world.z_E * world.z_E), background(world.background),
+          lamps_(world.lights) {
         auto surface = [&](int material) {
             const auto& s = world.materials[static_cast<std::size_t>(material)];
             return Surface{s.k_a, s.k_d, s.m};
         };
         for (const auto& b : world.spheres)
-            spheres.push_back({b.S, b.r, b.r * b.r, length_squared(b.S) - b.r * b.r, y * b.S.y, z_E * b.S.z,
-                               surface(b.material)});
+            balls_.push_back({b.S, b.r, b.r * b.r, length_squared(b.S) - b.r * b.r, y * b.S.y, z_E * b.S.z,
+                              surface(b.material)});
         for (const auto& f : world.planes)
-            planes.push_back({f.n_hat, f.NQ, f.n_hat.y * y, f.n_hat.z * z_E, surface(f.material)});
+            flats_.push_back({f.n_hat, f.NQ, f.n_hat.y * y, f.n_hat.z * z_E, surface(f.material)});
+        spheres = balls_.data(), sphere_count = static_cast<int>(balls_.size());
+        planes = flats_.data(), plane_count = static_cast<int>(flats_.size());
+        lights = lamps_.data(), light_count = static_cast<int>(lamps_.size());
     }
+    GeneralRow(const GeneralRow&) = delete;
+    GeneralRow& operator=(const GeneralRow&) = delete;
+
+private:
+    std::vector<Ball> balls_;
+    std::vector<Flat> flats_;
+    std::vector<Lamp> lamps_;
 };
 
 inline namespace PROMYK_LANES_ISA {
@@ -264,13 +281,11 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> general_lanes(const GeneralRow<R
     // The nearest hit with t > 0 over every object, ties to the earlier one.
     const Lane EE = (x_E * x_E + row.yy) + row.zz;  // |E|^2
     NearestLanes<Lane> nearest;
-    const double sphere_count = static_cast<double>(row.spheres.size());
+    const double sphere_count = row.sphere_count;
     if constexpr (Sw::many) {
-        for (std::size_t k = 0; k < row.spheres.size(); ++k)
-            test_sphere<Rgb>(row.spheres[k], x_E, EE, static_cast<double>(k), nearest);
-        for (std::size_t k = 0; k < row.planes.size(); ++k)
-            test_plane<Rgb>(row.planes[k], x_E, sphere_count + static_cast<double>(k), nearest);
-    } else if (!row.spheres.empty()) {
+        for (int k = 0; k < row.sphere_count; ++k) test_sphere<Rgb>(row.spheres[k], x_E, EE, k, nearest);
+        for (int k = 0; k < row.plane_count; ++k) test_plane<Rgb>(row.planes[k], x_E, sphere_count + k, nearest);
+    } else if (row.sphere_count > 0) {
         test_sphere<Rgb>(row.spheres[0], x_E, EE, 0.0, nearest);
     } else {
         test_plane<Rgb>(row.planes[0], x_E, 0.0, nearest);
@@ -298,25 +313,25 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> general_lanes(const GeneralRow<R
         r = splat<Lane>(1.0);
         k_a = k_d = splat<Lane>(0.0);
         m = splat_of<Lane>(row.background);
-        for (std::size_t k = 0; k < row.spheres.size(); ++k) {
+        for (int k = 0; k < row.sphere_count; ++k) {
             const auto& ball = row.spheres[k];
-            const Mask is = nearest.id == static_cast<double>(k);
+            const Mask is = nearest.id == double(k);
             S = pick(is, splat_of<Lane>(ball.S), S);
             r = select(is, splat<Lane>(ball.r), r);
             k_a = select(is, splat<Lane>(ball.surface.k_a), k_a);
             k_d = select(is, splat<Lane>(ball.surface.k_d), k_d);
             m = pick(is, splat_of<Lane>(ball.surface.m), m);
         }
-        for (std::size_t k = 0; k < row.planes.size(); ++k) {
+        for (int k = 0; k < row.plane_count; ++k) {
             const auto& flat = row.planes[k];
-            const Mask is = nearest.id == sphere_count + static_cast<double>(k);
+            const Mask is = nearest.id == sphere_count + k;
             n_hat = pick(is, splat_of<Lane>(flat.n_hat), n_hat);
             k_a = select(is, splat<Lane>(flat.surface.k_a), k_a);
             k_d = select(is, splat<Lane>(flat.surface.k_d), k_d);
             m = pick(is, splat_of<Lane>(flat.surface.m), m);
         }
         N = pick(on_sphere, Vec3<Lane>{P.x - S.x, P.y - S.y, P.z - S.z}, n_hat);
-    } else if (!row.spheres.empty()) {
+    } else if (row.sphere_count > 0) {
         const auto& ball = row.spheres[0];
         on_sphere = lane_not(Mask{});
         N = {P.x - ball.S.x, P.y - ball.S.y, P.z - ball.S.z};
@@ -336,7 +351,8 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> general_lanes(const GeneralRow<R
 
     Intensity I_P = every_channel<Lane, Rgb>(0.0);
     Mask faces_any{}, lit_any{};
-    for (const auto& light : row.lights) {
+    for (int l = 0; l < row.light_count; ++l) {
+        const auto& light = row.lights[l];
         const Vec3<Lane> K{light.L.x - P.x, light.L.y - P.y, light.L.z - P.z};
         const Lane KK = (K.x * K.x + K.y * K.y) + K.z * K.z;  // |K|^2
         const Lane D = (N.x * K.x + N.y * K.y) + N.z * K.z;   // N.K
@@ -358,23 +374,23 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> general_lanes(const GeneralRow<R
                 alive = both(alive, lane_not(stops));
                 ray = both(ray, lane_not(stops));
             };
-            for (std::size_t k = 0; k < row.spheres.size(); ++k) {
+            for (int k = 0; k < row.sphere_count; ++k) {
                 work.sphere_tests -= both(ray, kept);
                 if (!any(ray)) continue;
                 Mask yes{}, undecided_k{};
                 sphere_blocks_lanes(P, K, KK, row.spheres[k].S, row.spheres[k].rr, yes, undecided_k);
                 // Its own sphere: blocks only seen from inside, at s = 2D/|K|^2 < 1.
-                const Mask own = both(on_sphere, nearest.id == static_cast<double>(k));
+                const Mask own = both(on_sphere, nearest.id == double(k));
                 yes = pick_mask(own, both(nearest.flip, 2.0 * D < KK), yes);
                 takes(yes, both(lane_not(own), undecided_k));
             }
-            for (std::size_t k = 0; k < row.planes.size(); ++k) {
+            for (int k = 0; k < row.plane_count; ++k) {
                 work.plane_tests -= both(ray, kept);
                 if (!any(ray)) continue;
                 Mask yes{}, undecided_k{};
                 plane_blocks_lanes(P, K, row.planes[k].n_hat, row.planes[k].NQ, yes, undecided_k);
                 // Its own plane: a point of the plane never crosses it again.
-                const Mask own = both(lane_not(on_sphere), nearest.id == sphere_count + static_cast<double>(k));
+                const Mask own = both(lane_not(on_sphere), nearest.id == sphere_count + k);
                 takes(both(lane_not(own), yes), both(lane_not(own), undecided_k));
             }
         }
