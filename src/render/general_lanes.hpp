@@ -29,7 +29,7 @@ struct LaneSwitches {
 
 // What stays the same along a row: the world, flattened, and the products
 // with y_E and z_E (whole products only: a dot product's sum keeps its
-// order, (x x' + y y') + z z'). Built by the baseline's translation unit
+// order, (x x' + y y') + z z'). Filled by the baseline's translation unit
 // only (render/general_row.cpp); the wider sets read it.
 template <bool Rgb>
 struct GeneralRow {
@@ -53,31 +53,36 @@ struct GeneralRow {
         Surface surface;
     };
     using Lamp = typename World<double, Rgb>::Lamp;
-    double y_E, z_E;
-    double yy, zz;          // y_E y_E, z_E z_E: |E|^2's last two terms
-    Intensity background;
+    double y_E = 0, z_E = 0;
+    double yy = 0, zz = 0;  // y_E y_E, z_E z_E: |E|^2's last two terms
+    Intensity background{};
     // The objects and lights as plain arrays: the kernels read them without
     // calling a function (which, not inlined, one instruction set's copy
     // could serve another's).
-    const Ball* spheres;
-    int sphere_count;
-    const Flat* planes;
-    int plane_count;
-    const Lamp* lights;
-    int light_count;
+    const Ball* spheres = nullptr;
+    int sphere_count = 0;
+    const Flat* planes = nullptr;
+    int plane_count = 0;
+    const Lamp* lights = nullptr;
+    int light_count = 0;
 
-    GeneralRow(const World<double, Rgb>& world, double y)
-        : y_E(y), z_E(world.z_E), yy(y * y), zz(world.z_E * world.z_E), background(world.background),
-          lamps_(world.lights) {
+    GeneralRow() = default;
+    // Row y_E = y of the world: its arrays refilled, their memory kept (a
+    // thread draws row after row into one GeneralRow without allocating).
+    void set(const World<double, Rgb>& world, double y) {
+        y_E = y, z_E = world.z_E, yy = y * y, zz = world.z_E * world.z_E;
+        background = world.background;
         auto surface = [&](int material) {
             const auto& s = world.materials[static_cast<std::size_t>(material)];
             return Surface{s.k_a, s.k_d, s.m};
         };
+        balls_.clear(), flats_.clear();
         for (const auto& b : world.spheres)
             balls_.push_back({b.S, b.r, b.r * b.r, length_squared(b.S) - b.r * b.r, y * b.S.y, z_E * b.S.z,
                               surface(b.material)});
         for (const auto& f : world.planes)
             flats_.push_back({f.n_hat, f.NQ, f.n_hat.y * y, f.n_hat.z * z_E, surface(f.material)});
+        lamps_.assign(world.lights.begin(), world.lights.end());
         spheres = balls_.data(), sphere_count = static_cast<int>(balls_.size());
         planes = flats_.data(), plane_count = static_cast<int>(flats_.size());
         lights = lamps_.data(), light_count = static_cast<int>(lamps_.size());
@@ -188,6 +193,15 @@ struct NearestLanes {
     Mask flip{};
     Mask undecided{};  // a test whose deciding value was NaN or infinite
 
+    // The only object's root: taken where found and finite.
+    PROMYK_LANES_INLINE void take_only(Mask found, Lane t_k, Mask flip_k) {
+        const Mask finite = finite_lanes(t_k);
+        undecided = both(found, lane_not(finite));
+        const Mask taken = both(found, finite);
+        t = select(taken, t_k, t);
+        id = select(taken, splat<Lane>(0.0), id);
+        flip = flip_k;
+    }
     PROMYK_LANES_INLINE void take(Mask found, Lane t_k, double id_k, Mask flip_k) {
         undecided = either(undecided, both(found, lane_not(finite_lanes(t_k))));
         const Mask nearer = both(both(found, finite_lanes(t_k)), t_k < t);  // ties: the earlier object stays
@@ -199,7 +213,8 @@ struct NearestLanes {
 
 // geometry/sphere.hpp's intersect_sphere with the article's formula
 // (geometry/sphere_article.hpp), then trace_general's test of its root.
-template <bool Rgb, class Lane>
+// Only: the scene's only object (its root, if finite, is the nearest).
+template <bool Rgb, bool Only, class Lane>
 PROMYK_LANES_INLINE void test_sphere(const typename GeneralRow<Rgb>::Ball& ball, Lane x_E, Lane EE, double id,
                                      NearestLanes<Lane>& nearest) {
     using Mask = MaskOf<Lane>;
@@ -221,11 +236,14 @@ PROMYK_LANES_INLINE void test_sphere(const typename GeneralRow<Rgb>::Ball& ball,
         root = select(inside, t_far, t);
         found = either(found, inside);
     }
-    nearest.take(found, root, id, inside);
+    if constexpr (Only)
+        nearest.take_only(found, root, inside);
+    else
+        nearest.take(found, root, id, inside);
 }
 
 // geometry/plane.hpp's intersect_plane, then trace_general's test of its root.
-template <bool Rgb, class Lane>
+template <bool Rgb, bool Only, class Lane>
 PROMYK_LANES_INLINE void test_plane(const typename GeneralRow<Rgb>::Flat& flat, Lane x_E, double id,
                                     NearestLanes<Lane>& nearest) {
     using Mask = MaskOf<Lane>;
@@ -236,7 +254,11 @@ PROMYK_LANES_INLINE void test_plane(const typename GeneralRow<Rgb>::Flat& flat, 
     const Mask decides = (flat.NQ * 0.0 + NE * 0.0) == 0.0;
     const Mask ahead = both(decides, both(t > 0.0, finite_lanes(t)));
     const Lane root = select(decides, t, splat<Lane>(std::numeric_limits<double>::quiet_NaN()));
-    nearest.take(both(crosses, either(lane_not(decides), ahead)), root, id, NE > 0.0);
+    const Mask found = both(crosses, either(lane_not(decides), ahead));
+    if constexpr (Only)
+        nearest.take_only(found, root, NE > 0.0);
+    else
+        nearest.take(found, root, id, NE > 0.0);
 }
 
 // geometry/segment.hpp's sphere_blocks: blocked, and undecided.
@@ -283,12 +305,12 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> general_lanes(const GeneralRow<R
     NearestLanes<Lane> nearest;
     const double sphere_count = row.sphere_count;
     if constexpr (Sw::many) {
-        for (int k = 0; k < row.sphere_count; ++k) test_sphere<Rgb>(row.spheres[k], x_E, EE, k, nearest);
-        for (int k = 0; k < row.plane_count; ++k) test_plane<Rgb>(row.planes[k], x_E, sphere_count + k, nearest);
+        for (int k = 0; k < row.sphere_count; ++k) test_sphere<Rgb, false>(row.spheres[k], x_E, EE, k, nearest);
+        for (int k = 0; k < row.plane_count; ++k) test_plane<Rgb, false>(row.planes[k], x_E, sphere_count + k, nearest);
     } else if (row.sphere_count > 0) {
-        test_sphere<Rgb>(row.spheres[0], x_E, EE, 0.0, nearest);
+        test_sphere<Rgb, true>(row.spheres[0], x_E, EE, 0.0, nearest);
     } else {
-        test_plane<Rgb>(row.planes[0], x_E, 0.0, nearest);
+        test_plane<Rgb, true>(row.planes[0], x_E, 0.0, nearest);
     }
     pixel.non_finite = nearest.undecided;
     pixel.miss = both(lane_not(nearest.undecided), nearest.id < 0.0);

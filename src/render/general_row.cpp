@@ -37,10 +37,18 @@ bool has_object(const lanes::GeneralRow<Rgb>& row) {
     return row.sphere_count + row.plane_count > 0;
 }
 
+// This thread's row, refilled for each row drawn.
+template <bool Rgb>
+const lanes::GeneralRow<Rgb>& row_of(const World<double, Rgb>& world, int w, int i) {
+    thread_local lanes::GeneralRow<Rgb> row;
+    row.set(world, pane_y<double>(i, w));
+    return row;
+}
+
 template <bool Rgb>
 bool draw(const World<double, Rgb>& world, GeneralLaneStages stages, int w, int i, std::uint8_t* out,
           RowCounts& counts) {
-    const lanes::GeneralRow<Rgb> row(world, pane_y<double>(i, w));
+    const lanes::GeneralRow<Rgb>& row = row_of(world, w, i);
     if (!has_object(row)) return false;
     const double* x_E = pane_columns(w);
     switch (article_isa()) {
@@ -59,7 +67,7 @@ bool draw(const World<double, Rgb>& world, GeneralLaneStages stages, int w, int 
 template <bool Rgb, class Intensity>
 bool intensities(const World<double, Rgb>& world, GeneralLaneStages stages, int w, int i, Intensity* I_P,
                  std::uint8_t* branches) {
-    const lanes::GeneralRow<Rgb> row(world, pane_y<double>(i, w));
+    const lanes::GeneralRow<Rgb>& row = row_of(world, w, i);
     if (!has_object(row)) return false;
     std::vector<double> x_E(static_cast<std::size_t>(w));
     for (int j = 0; j < w; ++j) x_E[static_cast<std::size_t>(j)] = pane_x<double>(j, w);

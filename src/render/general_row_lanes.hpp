@@ -71,9 +71,9 @@ PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, const
     Mask miss{}, non_finite{}, lit{}, shadowed{};  // counted lane by lane: a mask is -1 where true
     LaneWork<Vector> work;
     int first_non_finite_j = -1;
-    // Pixels j .. j + n - 1 of the row, x their x_E (and, past n, filler).
-    const auto draw = [&](int j, int n, Vector x, Mask kept) __attribute__((always_inline)) {
-        const GeneralLanePixel<Vector, Rgb> pixel = general_lanes<Sw>(row, x, kept, work);
+    // Pixels j .. j + n - 1 of the row (and, past n, filler not kept).
+    const auto take = [&](int j, int n, const GeneralLanePixel<Vector, Rgb>& pixel, Mask kept)
+                          __attribute__((always_inline)) {
         put_intensities(pixel.I_P, out, j, n);
         miss -= pixel.miss & kept;
         lit -= pixel.lit & kept;
@@ -84,16 +84,24 @@ PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, const
             for (int k = width - 1; k >= 0; --k)
                 if (lane_of(now_non_finite, k)) first_non_finite_j = j + k;
     };
+    const Mask all_kept = lane_not(Mask{});
     int j = 0;
-    for (; j + width <= w; j += width) {
-        Vector x;
-        std::memcpy(&x, x_E + j, sizeof x);
-        draw(j, width, x, lane_not(Mask{}));
+    // Two vectors a step, computed before either is stored: two independent
+    // chains of square roots and divisions in flight at once.
+    for (; j + 2 * width <= w; j += 2 * width) {
+        Vector x0, x1;
+        std::memcpy(&x0, x_E + j, sizeof x0);
+        std::memcpy(&x1, x_E + j + width, sizeof x1);
+        const GeneralLanePixel<Vector, Rgb> p0 = general_lanes<Sw>(row, x0, all_kept, work);
+        const GeneralLanePixel<Vector, Rgb> p1 = general_lanes<Sw>(row, x1, all_kept, work);
+        take(j, width, p0, all_kept);
+        take(j + width, width, p1, all_kept);
     }
-    if (j < w) {
+    for (; j < w; j += width) {
+        const int n = w - j < width ? w - j : width;
         Mask kept;
-        const Vector x = columns<Vector>(x_E, j, w - j, kept);
-        draw(j, w - j, x, kept);
+        const Vector x = columns<Vector>(x_E, j, n, kept);
+        take(j, n, general_lanes<Sw>(row, x, kept, work), kept);
     }
     RowCounts counts;
     int misses = 0, lits = 0, shadoweds = 0, non_finites = 0;
