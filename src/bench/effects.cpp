@@ -147,11 +147,10 @@ int run_effects_bench(const EffectsOptions& options) {
     const Timing& general_kernel = timings[forced_general];
     if (article_kernel.timed && general_kernel.timed)
         print_standard_output(
-            "\n{}\n", wrap_text("  " + ui_message("bench_effects_general_ratio",
-                                                  {{"ratio", fixed(general_kernel.median_seconds_per_unit /
-                                                                       article_kernel.median_seconds_per_unit,
-                                                                   2)}}),
-                                2));
+            "\n{}\n", indented(ui_message("bench_effects_general_ratio",
+                                          {{"ratio", fixed(general_kernel.median_seconds_per_unit /
+                                                               article_kernel.median_seconds_per_unit,
+                                                           2)}})));
     if (!problems.empty()) print_standard_output("\n");
     for (const std::string& problem : problems) print_standard_output("{}\n", wrap_text("  " + problem, 4));
     print_standard_output("\n{}\n", wrap_text("  " + ui_message("bench_effects_stages"), 2));
