@@ -11,7 +11,9 @@
 #include "bench/bench_text.hpp"
 #include "bench/cpu_pinning.hpp"
 #include "bench/timing.hpp"
+#include "render/general_kernel.hpp"
 #include "render/renderer.hpp"
+#include "render/skipping.hpp"
 #include "render/stages.hpp"
 #include "scene/scene_json.hpp"
 #include "trace/messages.hpp"
@@ -87,6 +89,35 @@ int run_effects_bench(const EffectsOptions& options) {
             render(scenes[k], {w, 1}, PixelSelection{}, timed_sink);
         }));
     }
+    // The article's scene twice more, both computing every pixel (no
+    // background skipping): through the article's kernel, and forced through
+    // the general tracer, which should cost it only the stages it uses.
+    const Scene& article_scene = scenes.front();
+    const std::unique_ptr<Kernel> general = make_general_kernel(article_scene);
+    const std::size_t no_skipping = jobs.size(), forced_general = jobs.size() + 1;
+    std::vector<std::string> names;
+    for (const Scene& scene : scenes) names.push_back(scene.name);
+    names.push_back(ui_message("bench_effects_article_no_skipping"));
+    names.push_back(ui_message("bench_effects_article_general"));
+    stats.resize(scenes.size() + 2);
+    const bool skipping = background_skipping();
+    set_background_skipping(false);
+    {
+        NullSink sink;
+        render(article_scene, {w, 1}, PixelSelection{}, sink, &stats[no_skipping]);
+        render(*general, article_scene, {w, 1}, PixelSelection{}, sink, &stats[forced_general]);
+    }
+    set_background_skipping(skipping);
+    jobs.push_back(repeated([&] {
+        NullSink timed_sink;
+        set_background_skipping(false);
+        render(article_scene, {w, 1}, PixelSelection{}, timed_sink);
+        set_background_skipping(skipping);
+    }));
+    jobs.push_back(repeated([&] {
+        NullSink timed_sink;
+        render(*general, article_scene, {w, 1}, PixelSelection{}, timed_sink);
+    }));
     TimingPolicy policy;
     policy.rounds = options.repetitions;
     const std::vector<Timing> timings = time_side_by_side(jobs, policy);
@@ -100,11 +131,11 @@ int run_effects_bench(const EffectsOptions& options) {
                      {ui_message("bench_col_plane_tests")},
                      {ui_message("bench_col_skipped")}});
     std::vector<std::string> problems;
-    for (std::size_t k = 0; k < scenes.size(); ++k) {
+    for (std::size_t k = 0; k < timings.size(); ++k) {
         const Timing& t = timings[k];
         const RenderStats& s = stats[k];
-        if (!t.timed) problems.push_back(ui_message("bench_effects_untimed", {{"scene", scenes[k].name}, {"why", t.problem}}));
-        table.add_row({scenes[k].name, t.timed ? fixed(t.median_seconds_per_unit / pixels * 1e9, 2) : "-",
+        if (!t.timed) problems.push_back(ui_message("bench_effects_untimed", {{"scene", names[k]}, {"why", t.problem}}));
+        table.add_row({names[k], t.timed ? fixed(t.median_seconds_per_unit / pixels * 1e9, 2) : "-",
                        t.timed && article.timed ? fixed(t.median_seconds_per_unit / article.median_seconds_per_unit, 2) : "-",
                        fixed(static_cast<double>(s.shadow_rays) / pixels, 3),
                        fixed(static_cast<double>(s.sphere_tests) / pixels, 3),
@@ -112,6 +143,14 @@ int run_effects_bench(const EffectsOptions& options) {
                        fixed(static_cast<double>(s.skipped) / pixels, 3)});
     }
     print_standard_output("{}", table.text());
+    const Timing& article_kernel = timings[no_skipping];
+    const Timing& general_kernel = timings[forced_general];
+    if (article_kernel.timed && general_kernel.timed)
+        print_standard_output(
+            "\n{}\n", indented(ui_message("bench_effects_general_ratio",
+                                          {{"ratio", fixed(general_kernel.median_seconds_per_unit /
+                                                               article_kernel.median_seconds_per_unit,
+                                                           2)}})));
     if (!problems.empty()) print_standard_output("\n");
     for (const std::string& problem : problems) print_standard_output("{}\n", wrap_text("  " + problem, 4));
     print_standard_output("\n{}\n", wrap_text("  " + ui_message("bench_effects_stages"), 2));

@@ -12,6 +12,7 @@
 
 #include "math/real.hpp"
 #include "render/article_row.hpp"
+#include "render/general_row.hpp"
 #include "render/general_tracer.hpp"
 #include "render/kernel.hpp"
 #include "render/notes.hpp"
@@ -227,6 +228,9 @@ template <class Sw, bool Rgb, class Real, class F>
 class GeneralKernel final : public Kernel {
     using Result = GeneralResult<typename World<Real, Rgb>::Intensity>;
     using Pixel = SampledPixel<typename World<Real, Rgb>::Intensity>;
+    // Drawn in lanes (render/general_row.hpp): double with the article's
+    // formula, without Phong, one sample a pixel; the rest a pixel at a time.
+    static constexpr bool in_lanes = std::is_same_v<Real, double> && F::id == Formula::article && !Sw::phong;
 
 public:
     GeneralKernel(const Stages& stages, const Scene& scene, int spp)
@@ -238,6 +242,11 @@ public:
         NullRecorder none;
         WorkCounts work;
         RowCounts counts;
+        if constexpr (in_lanes) {
+            if (spp() == 1 &&
+                general_row_in_lanes(world_, GeneralLaneStages{Sw::shadows, Sw::ambient, Sw::many}, w, i, out, counts))
+                return counts;
+        }
         if (spp() > 1) {
             for (int j = 0; j < w; ++j) {
                 const Pixel pixel = sampled(w, i, j, work, none, IgnoreSample{});

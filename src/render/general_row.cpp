@@ -1,0 +1,123 @@
+// The general tracer's rows in lanes (render/general_row.hpp): the
+// baseline's two doubles here, the wider sets in their own translation
+// units (render/general_row_isa.hpp), chosen by render/isa.hpp. Compiled
+// with -fno-math-errno (src/CMakeLists.txt): a square root that need not set
+// errno is one sqrtpd for its lanes, with the same bits. The wasm compiles
+// this file without lanes (PROMYK_ISA_KERNELS unset): its rows stay one pixel
+// at a time.
+#include "render/general_row.hpp"
+
+#include <vector>
+
+#if defined(PROMYK_ISA_KERNELS)
+#include "render/general_row_isa.hpp"
+#include "render/general_row_lanes.hpp"
+#include "render/isa.hpp"
+#include "render/pane.hpp"
+#endif
+
+namespace promyk {
+
+#if defined(PROMYK_ISA_KERNELS)
+namespace {
+
+// x_E of every column of a w-pixel pane, the same for every row: computed
+// once per thread and pane, not a division per pixel.
+const double* pane_columns(int w) {
+    thread_local std::vector<double> x_E;
+    if (static_cast<int>(x_E.size()) != w) {
+        x_E.resize(static_cast<std::size_t>(w));
+        for (int j = 0; j < w; ++j) x_E[static_cast<std::size_t>(j)] = pane_x<double>(j, w);
+    }
+    return x_E.data();
+}
+
+template <bool Rgb>
+bool has_object(const lanes::GeneralRow<Rgb>& row) {
+    return row.sphere_count + row.plane_count > 0;
+}
+
+// This thread's row, refilled for each row drawn.
+template <bool Rgb>
+const lanes::GeneralRow<Rgb>& row_of(const World<double, Rgb>& world, int w, int i) {
+    thread_local lanes::GeneralRow<Rgb> row;
+    row.set(world, pane_y<double>(i, w));
+    return row;
+}
+
+template <bool Rgb>
+bool draw(const World<double, Rgb>& world, GeneralLaneStages stages, int w, int i, std::uint8_t* out,
+          RowCounts& counts) {
+    const lanes::GeneralRow<Rgb>& row = row_of(world, w, i);
+    if (!has_object(row)) return false;
+    const double* x_E = pane_columns(w);
+    switch (article_isa()) {
+        case Isa::avx512:
+            counts = lanes::avx512::draw_general_row(row, stages, x_E, w, out);
+            break;
+        case Isa::avx2:
+            counts = lanes::avx2::draw_general_row(row, stages, x_E, w, out);
+            break;
+        default:
+            counts = lanes::draw_general_row<lanes::Double2>(row, stages, x_E, w, out);
+    }
+    return true;
+}
+
+template <bool Rgb, class Intensity>
+bool intensities(const World<double, Rgb>& world, GeneralLaneStages stages, int w, int i, Intensity* I_P,
+                 std::uint8_t* branches) {
+    const lanes::GeneralRow<Rgb>& row = row_of(world, w, i);
+    if (!has_object(row)) return false;
+    std::vector<double> x_E(static_cast<std::size_t>(w));
+    for (int j = 0; j < w; ++j) x_E[static_cast<std::size_t>(j)] = pane_x<double>(j, w);
+    switch (article_isa()) {
+        case Isa::avx512:
+            lanes::avx512::general_row_intensities(row, stages, x_E.data(), w, I_P, branches);
+            break;
+        case Isa::avx2:
+            lanes::avx2::general_row_intensities(row, stages, x_E.data(), w, I_P, branches);
+            break;
+        default:
+            lanes::general_row_intensities<lanes::Double2>(row, stages, x_E.data(), w, I_P, branches);
+    }
+    return true;
+}
+
+}  // namespace
+
+bool general_row_in_lanes(const World<double, false>& world, GeneralLaneStages stages, int w, int i,
+                          std::uint8_t* out, RowCounts& counts) {
+    return draw(world, stages, w, i, out, counts);
+}
+bool general_row_in_lanes(const World<double, true>& world, GeneralLaneStages stages, int w, int i,
+                          std::uint8_t* out, RowCounts& counts) {
+    return draw(world, stages, w, i, out, counts);
+}
+bool general_row_intensities(const World<double, false>& world, GeneralLaneStages stages, int w, int i,
+                             double* I_P, std::uint8_t* branches) {
+    return intensities(world, stages, w, i, I_P, branches);
+}
+bool general_row_intensities(const World<double, true>& world, GeneralLaneStages stages, int w, int i, Vec3d* I_P,
+                             std::uint8_t* branches) {
+    return intensities(world, stages, w, i, I_P, branches);
+}
+
+#else  // no lanes in this build
+
+bool general_row_in_lanes(const World<double, false>&, GeneralLaneStages, int, int, std::uint8_t*, RowCounts&) {
+    return false;
+}
+bool general_row_in_lanes(const World<double, true>&, GeneralLaneStages, int, int, std::uint8_t*, RowCounts&) {
+    return false;
+}
+bool general_row_intensities(const World<double, false>&, GeneralLaneStages, int, int, double*, std::uint8_t*) {
+    return false;
+}
+bool general_row_intensities(const World<double, true>&, GeneralLaneStages, int, int, Vec3d*, std::uint8_t*) {
+    return false;
+}
+
+#endif
+
+}  // namespace promyk

@@ -1,0 +1,170 @@
+// A row of the general tracer, a vector of pixels at a time: the
+// intensities of render/general_lanes.hpp turned into bytes and counted (by
+// branch, and the shadow rays and tests). Included by one translation unit
+// per instruction set (render/general_row.cpp for the baseline,
+// render/general_row_avx2.cpp, ..._avx512.cpp), each compiling it in its own
+// namespace (PROMYK_LANES_ISA). Calls nothing that is not inlined.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+
+#include "render/article_row_lanes.hpp"  // put_grey_levels
+#include "render/general_lanes.hpp"
+#include "render/general_row.hpp"
+#include "render/kernel.hpp"
+
+namespace promyk::lanes {
+inline namespace PROMYK_LANES_ISA {
+
+// Calls visit(LaneSwitches<...>{}) with the stages as types: the one place
+// the stages chosen at run time become template arguments.
+template <bool Shadows, bool Ambient, class Visit>
+PROMYK_LANES_INLINE decltype(auto) with_many(bool many, Visit&& visit) {
+    if (many) return visit(LaneSwitches<Shadows, Ambient, true>{});
+    return visit(LaneSwitches<Shadows, Ambient, false>{});
+}
+template <class Visit>
+PROMYK_LANES_INLINE decltype(auto) with_switches(GeneralLaneStages stages, Visit&& visit) {
+    if (stages.shadows) {
+        if (stages.ambient) return with_many<true, true>(stages.many, visit);
+        return with_many<true, false>(stages.many, visit);
+    }
+    if (stages.ambient) return with_many<false, true>(stages.many, visit);
+    return with_many<false, false>(stages.many, visit);
+}
+
+// Pixels j .. j + n - 1 (n <= the width) into out: grey levels, or r, g, b.
+template <class Vector>
+PROMYK_LANES_INLINE void put_intensities(Vector I_P, std::uint8_t* out, int j, int n) {
+    put_grey_levels(I_P, out + j, n);
+}
+template <class Vector>
+PROMYK_LANES_INLINE void put_intensities(const Vec3<Vector>& I_P, std::uint8_t* out, int j, int n) {
+    constexpr int width = LaneTraits<Vector>::width;
+    std::uint8_t r[width], g[width], b[width];
+    put_grey_levels(I_P.x, r, n);
+    put_grey_levels(I_P.y, g, n);
+    put_grey_levels(I_P.z, b, n);
+    for (int k = 0; k < n; ++k) {
+        out[3 * (j + k)] = r[k];
+        out[3 * (j + k) + 1] = g[k];
+        out[3 * (j + k) + 2] = b[k];
+    }
+}
+
+// Columns j .. j + n - 1 as a vector: the last one filled past n with
+// column j's x_E, its extra lanes computed and not kept.
+template <class Vector>
+PROMYK_LANES_INLINE Vector columns(const double* x_E, int j, int n, MaskOf<Vector>& kept) {
+    Vector x = splat<Vector>(x_E[j]);
+    kept = MaskOf<Vector>{};
+    for (int k = 0; k < n; ++k) x[k] = x_E[j + k], kept[k] = -1;
+    return x;
+}
+
+template <class Sw, bool Rgb, class Vector>
+PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, const double* x_E, int w,
+                                              std::uint8_t* out) {
+    constexpr int width = LaneTraits<Vector>::width;
+    using Mask = MaskOf<Vector>;
+    Mask miss{}, non_finite{}, lit{}, shadowed{};  // counted lane by lane: a mask is -1 where true
+    LaneWork<Vector> work;
+    int first_non_finite_j = -1;
+    // Pixels j .. j + n - 1 of the row (and, past n, filler not kept).
+    const auto take = [&](int j, int n, const GeneralLanePixel<Vector, Rgb>& pixel, Mask kept)
+                          __attribute__((always_inline)) {
+        put_intensities(pixel.I_P, out, j, n);
+        miss -= pixel.miss & kept;
+        lit -= pixel.lit & kept;
+        shadowed -= pixel.shadowed & kept;
+        const Mask now_non_finite = pixel.non_finite & kept;
+        non_finite -= now_non_finite;
+        if (first_non_finite_j < 0 && any(now_non_finite))  // rare
+            for (int k = width - 1; k >= 0; --k)
+                if (lane_of(now_non_finite, k)) first_non_finite_j = j + k;
+    };
+    const Mask all_kept = lane_not(Mask{});
+    int j = 0;
+    // Two vectors a step, computed before either is stored: two independent
+    // chains of square roots and divisions in flight at once.
+    for (; j + 2 * width <= w; j += 2 * width) {
+        Vector x0, x1;
+        std::memcpy(&x0, x_E + j, sizeof x0);
+        std::memcpy(&x1, x_E + j + width, sizeof x1);
+        const GeneralLanePixel<Vector, Rgb> p0 = general_lanes<Sw>(row, x0, all_kept, work);
+        const GeneralLanePixel<Vector, Rgb> p1 = general_lanes<Sw>(row, x1, all_kept, work);
+        take(j, width, p0, all_kept);
+        take(j + width, width, p1, all_kept);
+    }
+    for (; j < w; j += width) {
+        const int n = w - j < width ? w - j : width;
+        Mask kept;
+        const Vector x = columns<Vector>(x_E, j, n, kept);
+        take(j, n, general_lanes<Sw>(row, x, kept, work), kept);
+    }
+    RowCounts counts;
+    int misses = 0, lits = 0, shadoweds = 0, non_finites = 0;
+    for (int k = 0; k < width; ++k) {
+        misses += static_cast<int>(miss[k]);
+        lits += static_cast<int>(lit[k]);
+        shadoweds += static_cast<int>(shadowed[k]);
+        non_finites += static_cast<int>(non_finite[k]);
+        counts.shadow_rays += work.shadow_rays[k];
+        counts.sphere_tests += work.sphere_tests[k];
+        counts.plane_tests += work.plane_tests[k];
+    }
+    counts.branches[static_cast<int>(Branch::miss)] = misses;
+    counts.branches[static_cast<int>(Branch::lit)] = lits;
+    counts.branches[static_cast<int>(Branch::shadowed)] = shadoweds;
+    counts.branches[static_cast<int>(Branch::non_finite)] = non_finites;
+    counts.branches[static_cast<int>(Branch::dark)] = w - misses - lits - shadoweds - non_finites;
+    counts.first_non_finite_j = first_non_finite_j;
+    // The eye's rays: every object tested by every pixel (one object: its one test).
+    if constexpr (Sw::many) {
+        counts.sphere_tests += static_cast<long long>(w) * row.sphere_count;
+        counts.plane_tests += static_cast<long long>(w) * row.plane_count;
+    } else if (row.sphere_count > 0) {
+        counts.sphere_tests += w;
+    } else {
+        counts.plane_tests += w;
+    }
+    return counts;
+}
+
+template <class Vector, bool Rgb>
+PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, GeneralLaneStages stages,
+                                              const double* x_E, int w, std::uint8_t* out) {
+    return with_switches(stages, [&](auto sw) { return draw_general_row<decltype(sw), Rgb, Vector>(row, x_E, w, out); });
+}
+
+// The row's intensities and branches, as draw_general_row computes them.
+template <class Vector, bool Rgb, class Intensity>
+PROMYK_LANES_INLINE void general_row_intensities(const GeneralRow<Rgb>& row, GeneralLaneStages stages,
+                                                 const double* x_E, int w, Intensity* I_P, std::uint8_t* branches) {
+    constexpr int width = LaneTraits<Vector>::width;
+    with_switches(stages, [&](auto sw) {
+        LaneWork<Vector> work;
+        for (int j = 0; j < w; j += width) {
+            const int n = w - j < width ? w - j : width;
+            MaskOf<Vector> kept;
+            const Vector x = columns<Vector>(x_E, j, n, kept);
+            const GeneralLanePixel<Vector, Rgb> pixel = general_lanes<decltype(sw)>(row, x, kept, work);
+            for (int k = 0; k < n; ++k) {
+                if constexpr (Rgb)
+                    I_P[j + k] = {pixel.I_P.x[k], pixel.I_P.y[k], pixel.I_P.z[k]};
+                else
+                    I_P[j + k] = pixel.I_P[k];
+                const Branch branch = pixel.miss[k]         ? Branch::miss
+                                      : pixel.non_finite[k] ? Branch::non_finite
+                                      : pixel.lit[k]        ? Branch::lit
+                                      : pixel.shadowed[k]   ? Branch::shadowed
+                                                            : Branch::dark;
+                branches[j + k] = static_cast<std::uint8_t>(branch);
+            }
+        }
+    });
+}
+
+}  // namespace PROMYK_LANES_ISA
+}  // namespace promyk::lanes
