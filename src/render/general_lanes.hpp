@@ -16,6 +16,7 @@
 
 #include "render/lanes.hpp"
 #include "render/world.hpp"
+#include "util/interrupt.hpp"
 
 namespace promyk::lanes {
 
@@ -385,6 +386,9 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> general_lanes(const GeneralRow<R
         const Mask faces = both(alive, D > 0.0);
         Mask blocked{};
         if constexpr (Sw::shadows) {
+            // Lights times objects tests: a pixel of thousands of each takes
+            // seconds, so a signal is heeded between lights, not only rows.
+            if ((l & 15) == 15) throw_if_interrupted();
             // A shadow ray from each pixel that faces the light; every object
             // is tested, in order, until one is undecided (the pixel stops).
             Mask ray = faces;

@@ -19,6 +19,7 @@
 #include "render/world.hpp"
 #include "shading/phong.hpp"
 #include "trace/keys.hpp"
+#include "util/interrupt.hpp"
 
 namespace promyk {
 
@@ -201,6 +202,9 @@ GeneralResult<typename World<Real, Rgb>::Intensity> trace_general(const World<Re
         const bool faces = D > 0;
         bool blocked = false;
         if constexpr (Sw::shadows) {
+            // Lights times objects tests: a pixel of thousands of each takes
+            // seconds, so a signal is heeded between lights, not only rows.
+            if ((l & 15) == 15) throw_if_interrupted();
             if (faces) {
                 ++work.shadow_rays;
                 // The first blocking object, by kind (1 sphere, 2 plane) and
