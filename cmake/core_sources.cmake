@@ -32,6 +32,7 @@ set(PROMYK_PORTABLE_SOURCES
   render/renderer.cpp
   render/article_row.cpp
   render/general_row.cpp
+  render/pane_columns.cpp
   render/isa.cpp
   render/skipping.cpp
   render/maps.cpp

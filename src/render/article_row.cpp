@@ -15,6 +15,7 @@
 #include "render/article_row_isa.hpp"
 #include "render/article_row_lanes.hpp"
 #include "render/isa.hpp"
+#include "render/pane_columns.hpp"
 #include "render/renderer.hpp"
 #include "render/silhouette.hpp"
 #include "render/skipping.hpp"
@@ -168,17 +169,6 @@ ArticleRowCounts article_row_intensities(const ArticleWorld<float>& world, int w
 
 namespace {
 #if defined(PROMYK_ISA_KERNELS)
-// x_E of every column of a w-pixel pane, the same for every row: computed
-// once per thread and pane, not a division per pixel.
-const double* pane_columns(int w) {
-    thread_local std::vector<double> x_E;
-    if (static_cast<int>(x_E.size()) != w) {
-        x_E.resize(static_cast<std::size_t>(w));
-        for (int j = 0; j < w; ++j) x_E[static_cast<std::size_t>(j)] = pane_x<double>(j, w);
-    }
-    return x_E.data();
-}
-
 // Row i in lanes with the formula, on the path render/isa.hpp chose.
 RowCounts lanes_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out, Formula formula) {
     const lanes::ArticleRow<double> row(world, pane_y<double>(i, w));

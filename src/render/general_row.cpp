@@ -14,23 +14,13 @@
 #include "render/general_row_lanes.hpp"
 #include "render/isa.hpp"
 #include "render/pane.hpp"
+#include "render/pane_columns.hpp"
 #endif
 
 namespace promyk {
 
 #if defined(PROMYK_ISA_KERNELS)
 namespace {
-
-// x_E of every column of a w-pixel pane, the same for every row: computed
-// once per thread and pane, not a division per pixel.
-const double* pane_columns(int w) {
-    thread_local std::vector<double> x_E;
-    if (static_cast<int>(x_E.size()) != w) {
-        x_E.resize(static_cast<std::size_t>(w));
-        for (int j = 0; j < w; ++j) x_E[static_cast<std::size_t>(j)] = pane_x<double>(j, w);
-    }
-    return x_E.data();
-}
 
 template <bool Rgb>
 bool has_object(const lanes::GeneralRow<Rgb>& row) {

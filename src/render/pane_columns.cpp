@@ -1,0 +1,19 @@
+#include "render/pane_columns.hpp"
+
+#include <cstddef>
+#include <vector>
+
+#include "render/pane.hpp"
+
+namespace promyk {
+
+const double* pane_columns(int w) {
+    thread_local std::vector<double> x_E;
+    if (static_cast<int>(x_E.size()) != w) {
+        x_E.resize(static_cast<std::size_t>(w));
+        for (int j = 0; j < w; ++j) x_E[static_cast<std::size_t>(j)] = pane_x<double>(j, w);
+    }
+    return x_E.data();
+}
+
+}  // namespace promyk
