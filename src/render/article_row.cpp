@@ -142,13 +142,12 @@ ArticleRowCounts article_row_intensities(const ArticleWorld<double>& world, int 
     const Isa isa = article_isa();
     if (isa != Isa::baseline) {
         const lanes::ArticleRow<double> row(world, pane_y<double>(i, w));
-        std::vector<double> x_E(static_cast<std::size_t>(w));
-        for (int j = 0; j < w; ++j) x_E[static_cast<std::size_t>(j)] = pane_x<double>(j, w);
+        const double* x_E = pane_columns(w);
         std::vector<std::uint8_t> taken(static_cast<std::size_t>(w));
         if (isa == Isa::avx512)
-            lanes::avx512::article_row_intensities(row, x_E.data(), w, I_P, taken.data(), formula);
+            lanes::avx512::article_row_intensities(row, x_E, w, I_P, taken.data(), formula);
         else
-            lanes::avx2::article_row_intensities(row, x_E.data(), w, I_P, taken.data(), formula);
+            lanes::avx2::article_row_intensities(row, x_E, w, I_P, taken.data(), formula);
         ArticleRowCounts counts;
         for (const std::uint8_t b : taken) {
             counts.miss += b == static_cast<std::uint8_t>(Branch::miss);

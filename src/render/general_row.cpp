@@ -59,17 +59,16 @@ bool intensities(const World<double, Rgb>& world, GeneralLaneStages stages, int 
                  std::uint8_t* branches) {
     const lanes::GeneralRow<Rgb>& row = row_of(world, w, i);
     if (!has_object(row)) return false;
-    std::vector<double> x_E(static_cast<std::size_t>(w));
-    for (int j = 0; j < w; ++j) x_E[static_cast<std::size_t>(j)] = pane_x<double>(j, w);
+    const double* x_E = pane_columns(w);
     switch (article_isa()) {
         case Isa::avx512:
-            lanes::avx512::general_row_intensities(row, stages, x_E.data(), w, I_P, branches);
+            lanes::avx512::general_row_intensities(row, stages, x_E, w, I_P, branches);
             break;
         case Isa::avx2:
-            lanes::avx2::general_row_intensities(row, stages, x_E.data(), w, I_P, branches);
+            lanes::avx2::general_row_intensities(row, stages, x_E, w, I_P, branches);
             break;
         default:
-            lanes::general_row_intensities<lanes::Double2>(row, stages, x_E.data(), w, I_P, branches);
+            lanes::general_row_intensities<lanes::Double2>(row, stages, x_E, w, I_P, branches);
     }
     return true;
 }
