@@ -77,13 +77,15 @@ struct Band {
 // signal) stops every thread.
 class RowPipeline {
 public:
-    RowPipeline(const Kernel& kernel, const TraceHeader& header, const PixelSelection& traced, int rows_per_band)
-        : kernel_(kernel), header_(header), traced_(traced), rows_per_band_(rows_per_band) {
+    // in_place: the sink's image memory (RenderSink::image_memory), or null.
+    RowPipeline(const Kernel& kernel, const TraceHeader& header, const PixelSelection& traced, int rows_per_band,
+                std::uint8_t* in_place)
+        : kernel_(kernel), header_(header), traced_(traced), rows_per_band_(rows_per_band), in_place_(in_place) {
         const int w = header.w;
         bands_total_ = (w + rows_per_band - 1) / rows_per_band;
         for (int b = 0; b < ring_size; ++b) {
             Band& band = ring_[b];
-            band.pixels.resize(static_cast<std::size_t>(rows_per_band) * w * kernel.channels());
+            if (in_place_ == nullptr) band.pixels.resize(static_cast<std::size_t>(rows_per_band) * w * kernel.channels());
             band.traces.resize(static_cast<std::size_t>(rows_per_band));
             band.counts.resize(static_cast<std::size_t>(rows_per_band));
             if (b < bands_total_) band.start(b * rows_per_band, rows_per_band, w);
@@ -198,7 +200,9 @@ private:
         Band& into = band(i / rows_per_band_);
         const int k = i - into.first_row;
         const std::size_t row_bytes = static_cast<std::size_t>(w) * kernel_.channels();
-        into.counts[k] = kernel_.row(w, i, &into.pixels[static_cast<std::size_t>(k) * row_bytes]);
+        std::uint8_t* out = in_place_ != nullptr ? in_place_ + static_cast<std::size_t>(i) * row_bytes
+                                                 : &into.pixels[static_cast<std::size_t>(k) * row_bytes];
+        into.counts[k] = kernel_.row(w, i, out);
         if (traced_.row_has_any(i)) trace_row(kernel_, header_, traced_, i, into.traces[k]);
         rows_done_.fetch_add(1, std::memory_order_relaxed);
         // Read before the row is counted: once the band is complete, the
@@ -222,6 +226,7 @@ private:
     const TraceHeader& header_;
     const PixelSelection& traced_;
     const int rows_per_band_;
+    std::uint8_t* const in_place_;  // rows drawn straight into the sink's image, or null
     int bands_total_ = 0;
     Band ring_[ring_size];
     std::atomic<int> next_row_{0};
@@ -278,7 +283,7 @@ struct RowsComputed {
 
 void deliver(Band& band, int w, int spp, RenderSink& sink, RenderStats& stats) {
     count(band, w, spp, stats);
-    sink.image_rows(band.pixels.data(), band.count);
+    if (!band.pixels.empty()) sink.image_rows(band.pixels.data(), band.count);  // else drawn in place
     for (int k = 0; k < band.count; ++k) {
         if (band.traces[k].empty()) continue;
         sink.trace_lines(band.traces[k]);
@@ -308,7 +313,7 @@ void render(const Kernel& kernel, const Scene& scene, const RenderSettings& sett
     TraceHeader header = trace_header(scene, w);
     header.spp = kernel.spp();
 
-    RowPipeline pipeline(kernel, header, traced, rows_per_band);
+    RowPipeline pipeline(kernel, header, traced, rows_per_band, sink.image_memory());
     const RowsComputed rows_computed{pipeline, out_stats};
     const Helpers helpers(pipeline, threads - 1);
     for (int b = 0; b < pipeline.bands_total(); ++b) {

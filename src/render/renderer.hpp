@@ -20,6 +20,11 @@ public:
     // `count` rows of w pixels each (w grey levels, or w r, g, b triples for
     // a coloured scene: image_channels), top first, in order.
     virtual void image_rows(const std::uint8_t* rows, int count) = 0;
+    // The whole image's bytes (w rows of w pixels, image_channels each), when
+    // the sink keeps it in memory: the rows are then drawn there in place,
+    // with no band buffer to copy them from, and image_rows is not called.
+    // Null (the default): the rows come through image_rows.
+    virtual std::uint8_t* image_memory() { return nullptr; }
     // JSON Lines of traced pixels, whole lines, in row order (i, then j).
     virtual void trace_lines(std::string_view lines) { (void)lines; }
     // Called after each band with the rows finished so far.
