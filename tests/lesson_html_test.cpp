@@ -118,6 +118,10 @@ TEST_CASE("html_escape and html_inline escape every text and keep TeX as text", 
     CHECK(html_escape(R"(<a href="x">&'</a>)") == "&lt;a href=&quot;x&quot;&gt;&amp;&#39;&lt;/a&gt;");
     CHECK(html_inline("a **b** *c* `<d>` $x<y$ e * f") ==
           "a <strong>b</strong> <em>c</em> <code>&lt;d&gt;</code> <span class=\"math\">x&lt;y</span> e * f");
+    // The article's symbols as it prints them; longer names and words stay text.
+    CHECK(html_inline("(t x_E, t y_E, t z_E), I_P; t_hit, max_W, a_Eb, xx_E, x_E2") ==
+          "(t x<sub>E</sub>, t y<sub>E</sub>, t z<sub>E</sub>), I<sub>P</sub>; t_hit, max_W, a_Eb, xx_E, x_E2");
+    CHECK(html_inline("`x_E` $x_E$ x_E") == "<code>x_E</code> <span class=\"math\">x_E</span> x<sub>E</sub>");
     // An unclosed marker is a character; what opened closes, so the line stays well formed.
     CHECK(html_inline("**open") == "**open");
     CHECK(html_fault(html_prose("- a\n- **b\n\n1. c\n\n```\n<x>\n```\n| a | b |\n|---|---|\n| 1 | <2> |\n")) == "");

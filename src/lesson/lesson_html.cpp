@@ -23,6 +23,21 @@ std::string html_escape(std::string_view text) {
 
 std::string html_math(std::string_view tex) { return "<span class=\"math\">" + html_escape(tex) + "</span>"; }
 
+namespace {
+
+bool word_character(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// The article's symbols in prose, a letter and a capital subscript standing
+// alone (x_E, z_S, I_P): typeset as a subscript, as the article prints them.
+// Longer names (t_hit) and parts of words stay as they are.
+bool symbol_subscript(std::string_view text, std::size_t k) {
+    return k + 2 < text.size() && std::isalpha(static_cast<unsigned char>(text[k])) && text[k + 1] == '_' &&
+           std::isupper(static_cast<unsigned char>(text[k + 2])) && (k == 0 || !word_character(text[k - 1])) &&
+           (k + 3 == text.size() || !word_character(text[k + 3]));
+}
+
+}  // namespace
+
 std::string html_inline(std::string_view text) {
     std::string out;
     bool strong = false, em = false;
@@ -51,6 +66,14 @@ std::string html_inline(std::string_view text) {
             out += em ? "</em>" : "<em>";
             em = !em;
             ++k;
+            continue;
+        }
+        if (symbol_subscript(text, k)) {  // x_E: x<sub>E</sub>
+            out += text[k];
+            out += "<sub>";
+            out += text[k + 2];
+            out += "</sub>";
+            k += 3;
             continue;
         }
         out += html_escape(text.substr(k, 1));
