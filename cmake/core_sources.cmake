@@ -52,6 +52,7 @@ set(PROMYK_PORTABLE_SOURCES
   trace/intensity_formula.cpp
   trace/formula_numbers.cpp
   trace/messages.cpp
+  trace/byte_size_text.cpp
   util/interrupt.cpp
   util/printable.cpp
   # The lesson runner: the page shows lessons through it (web_export/wasm).

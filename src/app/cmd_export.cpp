@@ -30,6 +30,7 @@
 #include "render/maps.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_json.hpp"
+#include "trace/byte_size_text.hpp"
 #include "trace/messages.hpp"
 #include "trace/number_text.hpp"
 #include "util/base64.hpp"
@@ -63,15 +64,6 @@ struct ExportOptions {
     std::string max_trace_size;  // --max-trace-size; empty: the default limit
     std::string bench_file;      // --bench: promyk bench accuracy --json's file
 };
-
-// 1.2 MB, 350 kB: SI units, as disk sizes are sold; 1,2 MB in Polish.
-std::string size_text(double bytes) {
-    std::string text = bytes < 1000  ? fmt::format("{:.0f} B", bytes)
-                       : bytes < 1e6 ? fmt::format("{:.0f} kB", bytes / 1e3)
-                                     : fmt::format("{:.1f} MB", bytes / 1e6);
-    if (ui_language() == Language::pl) std::replace(text.begin(), text.end(), '.', ',');
-    return text;
-}
 
 // Collects a render's rows: the image, or the branch map's colours.
 class RowsSink final : public RenderSink {
@@ -131,8 +123,8 @@ std::string read_traces(const std::string& path) {
         const std::uintmax_t size = std::filesystem::file_size(path, error);
         if (!error && size > max_embedded_traces)
             throw InputError(path, "", ui_message("export_traces_too_large",
-                                                  {{"size", size_text(static_cast<double>(size))},
-                                                   {"limit", size_text(static_cast<double>(max_embedded_traces))}}));
+                                                  {{"size", byte_size_text(static_cast<double>(size))},
+                                                   {"limit", byte_size_text(static_cast<double>(max_embedded_traces))}}));
     }
     return cli::read_input_file(path, "--traces reads", max_embedded_traces, "--traces");
 }
@@ -276,7 +268,7 @@ int run_export(const ExportOptions& options) {
                wrap_text(ui_message("export_wrote", {{"file", file},
                                                      {"scene", printable(scene.name)},
                                                      {"w", std::to_string(options.w)},
-                                                     {"size", size_text(static_cast<double>(out.bytes_written()))}}),
+                                                     {"size", byte_size_text(static_cast<double>(out.bytes_written()))}}),
                          4));
     return 0;
 }

@@ -36,6 +36,7 @@
 #include "render/scene_report.hpp"
 #include "render/stages.hpp"
 #include "render/trace_size.hpp"
+#include "trace/byte_size_text.hpp"
 #include "trace/messages.hpp"
 #include "trace/number_text.hpp"
 #include "util/errors.hpp"

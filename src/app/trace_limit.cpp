@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "render/trace_size.hpp"
+#include "trace/byte_size_text.hpp"
 #include "trace/messages.hpp"
 #include "util/errors.hpp"
 
@@ -63,26 +64,6 @@ CLI::Option* add_max_trace_size_option(CLI::App& cmd, std::string& size) {
 double trace_size_limit(const std::string& size) {
     if (size.empty()) return default_max_trace_size;
     return parse_size(size).value_or(default_max_trace_size);
-}
-
-std::string byte_size_text(double bytes) {
-    std::string text;
-    if (bytes < 1000) {
-        text = fmt::format("{:.0f} B", bytes);
-    } else {
-        const char* units[] = {"kB", "MB", "GB", "TB", "PB", "EB"};
-        int unit = 0;
-        bytes /= 1000;
-        while (bytes >= 999.5 && unit < 5) {
-            bytes /= 1000;
-            ++unit;
-        }
-        text = bytes < 9.95 ? fmt::format("{:.1f} {}", bytes, units[unit]) : fmt::format("{:.0f} {}", bytes, units[unit]);
-    }
-    if (ui_language() == Language::pl)
-        for (char& c : text)
-            if (c == '.') c = ',';
-    return text;
 }
 
 double trace_cost_bytes(const TraceCost& cost) {

@@ -20,9 +20,6 @@ CLI::Option* add_max_trace_size_option(CLI::App& cmd, std::string& size);
 // The limit in bytes: the option's value, or default_max_trace_size when empty.
 double trace_size_limit(const std::string& size);
 
-// "1.2 GB", "950 MB", "812 B": SI units, as disks are sold; a decimal comma in Polish.
-std::string byte_size_text(double bytes);
-
 // What one trace costs: a pixel of the scene in `traces` settings (trace
 // --compare traces several), `text` for the text layout.
 struct TraceCost {
