@@ -21,11 +21,14 @@
 namespace promyk::lanes {
 
 // The stages that change the pixel's steps (render/stages.hpp), as types.
-template <bool Shadows_, bool Ambient_, bool Many_>
+template <bool Shadows_, bool Ambient_, bool Many_, bool One_ = false>
 struct LaneSwitches {
     static constexpr bool shadows = Shadows_;
     static constexpr bool ambient = Ambient_;
     static constexpr bool many = Many_;  // several objects: each tested, the nearest hit wins
+    // One sphere and one light (render/general_row_one_sphere.hpp): not a
+    // stage of its own, the scene's shape, chosen once a row.
+    static constexpr bool one = One_;
 };
 
 // What stays the same along a row: the world, flattened, and the products

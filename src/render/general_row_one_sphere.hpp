@@ -1,0 +1,137 @@
+// The general tracer's pixel (render/general_lanes.hpp's general_lanes) for
+// a scene of one sphere and one light, the article's and its like: the same
+// steps in the same order, each lane rounding as trace_general does, with
+// what such a scene never needs left out (the nearest of several objects,
+// the hit object's numbers chosen lane by lane, the loop over lights, the
+// sphere's own shadow test against itself). Its numbers are in every lane
+// once a row (OneSphereRow), as the article's kernel keeps ArticleRow's.
+// Tests check every pixel's bits against the traced path
+// (tests/general_lanes_test.cpp).
+#pragma once
+
+#include <limits>
+
+#include "render/general_lanes.hpp"
+
+namespace promyk::lanes {
+inline namespace PROMYK_LANES_ISA {
+
+// The row's numbers, each in every lane: built once a row, read from
+// registers (the row itself could be overwritten by the bytes stored, as
+// far as the compiler knows, and would be read again for every vector).
+template <class Lane, bool Rgb>
+struct OneSphereRow {
+    using Intensity = LaneIntensity<Lane, Rgb>;
+    Lane y_E, z_E, yy, zz;
+    Lane S_x, S_y, S_z, r, SS_rr, ySy, zSz;  // the sphere, and C's last two terms
+    Lane k_d, k_a_I;                         // k_a I: a whole product, as trace_general's
+    Intensity m;
+    Lane L_x, L_y, L_z, I;  // the light
+    Intensity c;
+    Intensity background;
+
+    explicit OneSphereRow(const GeneralRow<Rgb>& row)
+        : y_E(every_lane<Lane>(row.y_E)), z_E(every_lane<Lane>(row.z_E)), yy(every_lane<Lane>(row.yy)),
+          zz(every_lane<Lane>(row.zz)), S_x(every_lane<Lane>(row.spheres[0].S.x)),
+          S_y(every_lane<Lane>(row.spheres[0].S.y)), S_z(every_lane<Lane>(row.spheres[0].S.z)),
+          r(every_lane<Lane>(row.spheres[0].r)), SS_rr(every_lane<Lane>(row.spheres[0].SS_rr)),
+          ySy(every_lane<Lane>(row.spheres[0].ySy)), zSz(every_lane<Lane>(row.spheres[0].zSz)),
+          k_d(every_lane<Lane>(row.spheres[0].surface.k_d)),
+          k_a_I(every_lane<Lane>(row.spheres[0].surface.k_a * row.lights[0].I)),
+          m(splat_of<Lane>(row.spheres[0].surface.m)), L_x(every_lane<Lane>(row.lights[0].L.x)),
+          L_y(every_lane<Lane>(row.lights[0].L.y)), L_z(every_lane<Lane>(row.lights[0].L.z)),
+          I(every_lane<Lane>(row.lights[0].I)), c(splat_of<Lane>(row.lights[0].c)),
+          background(splat_of<Lane>(row.background)) {}
+};
+
+// True where the row is drawn by one_sphere_lanes.
+template <bool Rgb>
+PROMYK_LANES_INLINE bool one_sphere_and_light(const GeneralRow<Rgb>& row) {
+    return row.sphere_count == 1 && row.plane_count == 0 && row.light_count == 1;
+}
+
+// Pixels E = (x_E, y_E, z_E), one a lane; `kept`: the lanes whose work counts.
+template <class Sw, bool Rgb, class Lane>
+PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> one_sphere_lanes(const OneSphereRow<Lane, Rgb>& row, Lane x_E,
+                                                                MaskOf<Lane> kept, LaneWork<Lane>& work) {
+    using Mask = MaskOf<Lane>;
+    using Intensity = LaneIntensity<Lane, Rgb>;
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    GeneralLanePixel<Lane, Rgb> pixel;
+    pixel.I_P = row.background;
+    pixel.non_finite = pixel.lit = pixel.shadowed = Mask{};
+
+    // The sphere (geometry/sphere_article.hpp): |E|^2, C = E.S, delta.
+    const Lane EE = (x_E * x_E + row.yy) + row.zz;
+    const Lane C = (x_E * row.S_x + row.ySy) + row.zSz;
+    const Lane delta = C * C - EE * row.SS_rr;
+    const Mask hit = lane_not(both(delta <= 0.0, delta >= std::numeric_limits<double>::lowest()));
+    pixel.miss = lane_not(hit);
+    if (!any(hit)) return pixel;  // the background: nothing to shade
+    // The nearer root; a NaN or infinite one passes on (non-finite).
+    Lane t = (C - lane_sqrt(delta)) / EE;
+    const Mask near = either(lane_not(t <= 0.0), lane_not(finite_lanes(t)));
+    Mask found = both(hit, near), inside{};
+    const Mask behind = both(hit, lane_not(near));
+    if (any(behind)) {  // the far root: the eye inside the sphere
+        const Lane t_far = (C + lane_sqrt(delta)) / EE;
+        inside = both(behind, t_far > 0.0);
+        t = select(inside, t_far, t);
+        found = either(found, inside);
+    }
+    // A root that is not finite decides nothing: the pixel is non-finite.
+    const Mask finite = finite_lanes(t);
+    pixel.non_finite = both(found, lane_not(finite));
+    pixel.miss = lane_not(found);
+    Mask alive = both(found, finite);  // shaded on
+    if (!any(alive)) {
+        pixel.I_P = pick(pixel.non_finite, every_channel<Lane, Rgb>(nan), pixel.I_P);
+        return pixel;
+    }
+
+    // P = tE; N = P - S, turned towards the eye seen from inside; K = L - P.
+    const Lane P_x = t * x_E, P_y = t * row.y_E, P_z = t * row.z_E;
+    Lane N_x = P_x - row.S_x, N_y = P_y - row.S_y, N_z = P_z - row.S_z;
+    if (any(inside)) N_x = select(inside, -N_x, N_x), N_y = select(inside, -N_y, N_y), N_z = select(inside, -N_z, N_z);
+    const Lane K_x = row.L_x - P_x, K_y = row.L_y - P_y, K_z = row.L_z - P_z;
+    const Lane KK = (K_x * K_x + K_y * K_y) + K_z * K_z;  // |K|^2
+    const Lane D = (N_x * K_x + N_y * K_y) + N_z * K_z;   // N.K
+    // Non-finite |K|^2 or D: the pixel stops here.
+    const Mask undecided = both(alive, lane_not((KK * 0.0 + D * 0.0) == 0.0));
+    pixel.non_finite = either(pixel.non_finite, undecided);
+    alive = both(alive, lane_not(undecided));
+    const Mask faces = both(alive, D > 0.0);
+    Mask reaches = faces;
+    if constexpr (Sw::shadows) {
+        // The shadow ray meets only the sphere itself: again at s = 2D/|K|^2
+        // seen from inside, never ahead seen from outside.
+        work.shadow_rays -= both(faces, kept);
+        work.sphere_tests -= both(faces, kept);
+        reaches = both(faces, lane_not(both(inside, 2.0 * D < KK)));
+    }
+
+    // The light's contribution: c (m (k_a I + k_d diffuse)).
+    Lane diffuse = every_lane<Lane>(0.0);
+    if (any(reaches)) diffuse = select(reaches, row.I * D / (row.r * lane_sqrt(KK)), diffuse);
+    Lane lambert = row.k_d * diffuse;
+    if constexpr (Sw::ambient) lambert = row.k_a_I + lambert;
+    Intensity term;
+    if constexpr (Rgb)
+        term = times(lambert, row.m);
+    else
+        term = times(row.m, lambert);
+    const Intensity I_P = plus(every_channel<Lane, Rgb>(0.0), times(row.c, term));
+
+    // An intensity beyond the largest double: non-finite, its value kept.
+    const Mask overflow = both(alive, lane_not(below_max_lanes(I_P)));
+    pixel.non_finite = either(pixel.non_finite, overflow);
+    const Mask shaded = both(alive, lane_not(overflow));
+    pixel.lit = both(shaded, reaches);
+    if constexpr (Sw::shadows) pixel.shadowed = both(shaded, both(faces, lane_not(reaches)));
+    const Mask stopped = both(lane_not(alive), pixel.non_finite);  // NaN
+    pixel.I_P = pick(alive, I_P, pick(stopped, every_channel<Lane, Rgb>(nan), pixel.I_P));
+    return pixel;
+}
+
+}  // namespace PROMYK_LANES_ISA
+}  // namespace promyk::lanes
