@@ -21,14 +21,17 @@
 namespace promyk::lanes {
 
 // The stages that change the pixel's steps (render/stages.hpp), as types.
-template <bool Shadows_, bool Ambient_, bool Many_, bool One_ = false>
+template <bool Shadows_, bool Ambient_, bool Many_, bool One_ = false, bool Plain_ = false>
 struct LaneSwitches {
     static constexpr bool shadows = Shadows_;
     static constexpr bool ambient = Ambient_;
     static constexpr bool many = Many_;  // several objects: each tested, the nearest hit wins
-    // One sphere and one light (render/general_row_one_sphere.hpp): not a
-    // stage of its own, the scene's shape, chosen once a row.
+    // One sphere and one light (render/general_row_one_sphere.hpp), and of
+    // those, plain: k_d, m and c exactly 1 (the article's matte white), so
+    // the products by them are left out. Not stages, the scene's shape and
+    // numbers, chosen once a row.
     static constexpr bool one = One_;
+    static constexpr bool plain = Plain_;
 };
 
 // What stays the same along a row: the world, flattened, and the products

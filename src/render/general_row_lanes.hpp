@@ -22,20 +22,22 @@ inline namespace PROMYK_LANES_ISA {
 // one sphere's and one light's) as types: the one place the stages chosen
 // at run time become template arguments.
 template <bool Shadows, bool Ambient, class Visit>
-PROMYK_LANES_INLINE decltype(auto) with_many(bool many, bool one, Visit&& visit) {
+PROMYK_LANES_INLINE decltype(auto) with_many(bool many, bool one, bool plain, Visit&& visit) {
     if (many) return visit(LaneSwitches<Shadows, Ambient, true>{});
+    if (one && plain) return visit(LaneSwitches<Shadows, Ambient, false, true, true>{});
     if (one) return visit(LaneSwitches<Shadows, Ambient, false, true>{});
     return visit(LaneSwitches<Shadows, Ambient, false>{});
 }
 template <bool Rgb, class Visit>
 PROMYK_LANES_INLINE decltype(auto) with_switches(GeneralLaneStages stages, const GeneralRow<Rgb>& row, Visit&& visit) {
     const bool one = !stages.many && one_sphere_and_light(row);
+    const bool plain = one && plain_surface_and_light(row);
     if (stages.shadows) {
-        if (stages.ambient) return with_many<true, true>(stages.many, one, visit);
-        return with_many<true, false>(stages.many, one, visit);
+        if (stages.ambient) return with_many<true, true>(stages.many, one, plain, visit);
+        return with_many<true, false>(stages.many, one, plain, visit);
     }
-    if (stages.ambient) return with_many<false, true>(stages.many, one, visit);
-    return with_many<false, false>(stages.many, one, visit);
+    if (stages.ambient) return with_many<false, true>(stages.many, one, plain, visit);
+    return with_many<false, false>(stages.many, one, plain, visit);
 }
 
 // The row's pixels, a vector at a time, by the stages' pixel function: the

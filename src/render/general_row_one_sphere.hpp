@@ -10,6 +10,7 @@
 #pragma once
 
 #include <limits>
+#include <type_traits>
 
 #include "render/general_lanes.hpp"
 
@@ -50,6 +51,23 @@ PROMYK_LANES_INLINE bool one_sphere_and_light(const GeneralRow<Rgb>& row) {
     return row.sphere_count == 1 && row.plane_count == 0 && row.light_count == 1;
 }
 
+// True where the one sphere's k_d and m and the one light's c are exactly
+// 1: x 1 is x, bit for bit, for every double (a NaN keeps its payload; no
+// arithmetic makes a signalling one), so one_sphere_lanes leaves out those
+// products (LaneSwitches::plain).
+template <class Intensity>
+PROMYK_LANES_INLINE bool is_one(const Intensity& x) {
+    if constexpr (std::is_same_v<Intensity, double>)
+        return x == 1.0;
+    else
+        return x.x == 1.0 && x.y == 1.0 && x.z == 1.0;
+}
+template <bool Rgb>
+PROMYK_LANES_INLINE bool plain_surface_and_light(const GeneralRow<Rgb>& row) {
+    const auto& surface = row.spheres[0].surface;
+    return surface.k_d == 1.0 && is_one(surface.m) && is_one(row.lights[0].c);
+}
+
 // Pixels E = (x_E, y_E, z_E), one a lane; `kept`: the lanes whose work counts.
 template <class Sw, bool Rgb, class Lane>
 PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> one_sphere_lanes(const OneSphereRow<Lane, Rgb>& row, Lane x_E,
@@ -70,9 +88,8 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> one_sphere_lanes(const OneSphere
     if (!any(hit)) return pixel;  // the background: nothing to shade
     // The nearer root; a NaN or infinite one passes on (non-finite).
     Lane t = (C - lane_sqrt(delta)) / EE;
-    const Mask near = either(lane_not(t <= 0.0), lane_not(finite_lanes(t)));
-    Mask found = both(hit, near), inside{};
-    const Mask behind = both(hit, lane_not(near));
+    const Mask behind = both(hit, both(t <= 0.0, t >= std::numeric_limits<double>::lowest()));
+    Mask found = both(hit, lane_not(behind)), inside{};
     if (any(behind)) {  // the far root: the eye inside the sphere
         const Lane t_far = (C + lane_sqrt(delta)) / EE;
         inside = both(behind, t_far > 0.0);
@@ -83,16 +100,14 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> one_sphere_lanes(const OneSphere
     const Mask finite = finite_lanes(t);
     pixel.non_finite = both(found, lane_not(finite));
     pixel.miss = lane_not(found);
-    Mask alive = both(found, finite);  // shaded on
-    if (!any(alive)) {
-        pixel.I_P = pick(pixel.non_finite, every_channel<Lane, Rgb>(nan), pixel.I_P);
-        return pixel;
-    }
+    Mask alive = both(found, finite);  // shaded on (no early return: the
+    // lanes that are not are as rare as in the article's kernel, and the
+    // selects below leave their intensities as they are)
 
     // P = tE; N = P - S, turned towards the eye seen from inside; K = L - P.
     const Lane P_x = t * x_E, P_y = t * row.y_E, P_z = t * row.z_E;
     Lane N_x = P_x - row.S_x, N_y = P_y - row.S_y, N_z = P_z - row.S_z;
-    if (any(inside)) N_x = select(inside, -N_x, N_x), N_y = select(inside, -N_y, N_y), N_z = select(inside, -N_z, N_z);
+    N_x = select(inside, -N_x, N_x), N_y = select(inside, -N_y, N_y), N_z = select(inside, -N_z, N_z);
     const Lane K_x = row.L_x - P_x, K_y = row.L_y - P_y, K_z = row.L_z - P_z;
     const Lane KK = (K_x * K_x + K_y * K_y) + K_z * K_z;  // |K|^2
     const Lane D = (N_x * K_x + N_y * K_y) + N_z * K_z;   // N.K
@@ -113,14 +128,19 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> one_sphere_lanes(const OneSphere
     // The light's contribution: c (m (k_a I + k_d diffuse)).
     Lane diffuse = every_lane<Lane>(0.0);
     if (any(reaches)) diffuse = select(reaches, row.I * D / (row.r * lane_sqrt(KK)), diffuse);
-    Lane lambert = row.k_d * diffuse;
+    Lane lambert = diffuse;  // plain: k_d diffuse is diffuse
+    if constexpr (!Sw::plain) lambert = row.k_d * diffuse;
     if constexpr (Sw::ambient) lambert = row.k_a_I + lambert;
-    Intensity term;
-    if constexpr (Rgb)
-        term = times(lambert, row.m);
+    Intensity term;  // c (m lambert); plain: lambert in every channel
+    if constexpr (Sw::plain && Rgb)
+        term = {lambert, lambert, lambert};
+    else if constexpr (Sw::plain)
+        term = lambert;
+    else if constexpr (Rgb)
+        term = times(row.c, times(lambert, row.m));
     else
-        term = times(row.m, lambert);
-    const Intensity I_P = plus(every_channel<Lane, Rgb>(0.0), times(row.c, term));
+        term = times(row.c, times(row.m, lambert));
+    const Intensity I_P = plus(every_channel<Lane, Rgb>(0.0), term);  // 0 + the light's: -0 becomes 0
 
     // An intensity beyond the largest double: non-finite, its value kept.
     const Mask overflow = both(alive, lane_not(below_max_lanes(I_P)));
