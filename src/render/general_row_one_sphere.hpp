@@ -83,9 +83,9 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> one_sphere_lanes(const OneSphere
     const Lane EE = (x_E * x_E + row.yy) + row.zz;
     const Lane C = (x_E * row.S_x + row.ySy) + row.zSz;
     const Lane delta = C * C - EE * row.SS_rr;
-    const Mask hit = lane_not(both(delta <= 0.0, delta >= std::numeric_limits<double>::lowest()));
-    pixel.miss = lane_not(hit);
-    if (!any(hit)) return pixel;  // the background: nothing to shade
+    pixel.miss = both(delta <= 0.0, delta >= std::numeric_limits<double>::lowest());
+    if (all(pixel.miss)) return pixel;  // the background: nothing to shade
+    const Mask hit = lane_not(pixel.miss);
     // The nearer root; a NaN or infinite one passes on (non-finite).
     Lane t = (C - lane_sqrt(delta)) / EE;
     const Mask behind = both(hit, both(t <= 0.0, t >= std::numeric_limits<double>::lowest()));
