@@ -244,8 +244,8 @@ PROMYK_LANES_INLINE void test_sphere(const typename GeneralRow<Rgb>::Ball& ball,
     const Lane C = (x_E * ball.S.x + ball.ySy) + ball.zSz;  // E.S
     const Lane delta = C * C - EE * ball.SS_rr;
     const Mask miss = both(delta <= 0.0, delta >= std::numeric_limits<double>::lowest());
+    if (all(miss)) return;  // (not !any(!miss): GCC makes that integer code lane by lane)
     const Mask hit = lane_not(miss);
-    if (!any(hit)) return;
     // The nearer root; a NaN or infinite one passes on (non-finite).
     const Lane t = (C - lane_sqrt(delta)) / EE;
     const Mask near = either(lane_not(t <= 0.0), lane_not(finite_lanes(t)));
