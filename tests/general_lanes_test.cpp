@@ -5,7 +5,8 @@
 // instruction-set path this processor has, for the example scenes (the
 // article's forced through the general tracer), the hard cases, hostile
 // scenes (values near the double range's ends), random scenes of several
-// objects and lights, exact ties and an eye inside a sphere. Phong scenes
+// objects and lights, exact ties and an eye inside a sphere, and scenes of
+// one sphere and one light (their own kernel) of every kind. Phong scenes
 // are not in lanes (their rows stay one pixel at a time) and are skipped.
 #include <catch2/catch.hpp>
 
@@ -274,7 +275,52 @@ std::vector<NamedScene> tie_scenes() {
     return scenes;
 }
 
+// One sphere and one light (render/general_row_one_sphere.hpp), every
+// combination of its switches: shadows, ambient, colour, plain (k_d, m and
+// c exactly 1) or not, the eye outside or inside; and hostile ones (numbers
+// from 1e-300 to 1e300: deltas, roots, |K|^2, D and results overflow), some
+// of them plain.
+std::vector<NamedScene> one_sphere_scenes(int hostile) {
+    std::vector<NamedScene> scenes;
+    for (int n = 0; n < 32; ++n) {
+        Scene scene;
+        scene.shadows = n & 1;
+        const bool ambient = n & 2, coloured = n & 4, plain = n & 8, inside = n & 16;
+        Material m;
+        m.ambient = ambient ? 0.25 : 0;
+        if (!plain) m.diffuse = 0.7, m.colour = coloured ? Colour{1, 0.5, 0.25} : Colour{0.6, 0.6, 0.6};
+        scene.materials = {m};
+        scene.spheres = {inside ? Sphere{{0.1, -0.2, 0.5}, 3, 0} : Sphere{{0.2, 0.1, 3.2}, 1.1, 0}};
+        scene.lights = {Light{{1.5, 1, inside ? 1.0 : 1.2}, 1.25, plain ? white : Colour{0.9, 0.9, 0.9}}};
+        if (coloured) scene.background = {0.1, 0.2, 0.3};
+        scenes.push_back({"one sphere " + std::to_string(n), scene, small_panes});
+    }
+    std::mt19937_64 random(20261203);
+    std::uniform_real_distribution<double> exponent(-300, 300), unit(-1, 1), positive(0.1, 1);
+    auto big = [&] { return (unit(random) < 0 ? -1 : 1) * std::pow(10.0, exponent(random) * positive(random)); };
+    auto point = [&] { return Vec3d{big(), big(), big()}; };
+    for (int n = 0; n < hostile; ++n) {
+        Scene scene;
+        scene.z_E = std::abs(big());
+        scene.shadows = n % 2 == 0;
+        const bool plain = n % 3 != 0;
+        scene.materials = {plain ? Material{n % 4 == 0 ? 0.1 : 0.0, 1, 0, 1, white}
+                                 : Material{n % 4 == 0 ? 0.1 : 0.0, std::abs(big()), 0, 1, {1, 0.5, 0.25}}};
+        scene.spheres = {Sphere{point(), std::abs(big()), 0}};
+        scene.lights = {Light{point(), std::abs(big()), plain ? white : Colour{0.5, 1, 1}}};
+        if (n % 5 == 0) scene.background = {0.1, 0.2, 0.3};
+        scenes.push_back({"hostile one sphere " + std::to_string(n), scene, {9, 11}});
+    }
+    return scenes;
+}
+
 }  // namespace
+
+TEST_CASE("General rows in lanes: one sphere and one light, plain or not, hostile too, every path, bit-identical to "
+          "the traced path",
+          "[lanes][isa][non-finite]") {
+    for (const NamedScene& named : one_sphere_scenes(60)) CHECK(check_scene(named));
+}
 
 TEST_CASE("General rows in lanes: the example scenes, every path, bit-identical to the traced path", "[lanes][isa]") {
     int checked = 0;

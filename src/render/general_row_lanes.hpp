@@ -11,28 +11,55 @@
 
 #include "render/article_row_lanes.hpp"  // put_grey_levels
 #include "render/general_lanes.hpp"
+#include "render/general_row_one_sphere.hpp"
 #include "render/general_row.hpp"
 #include "render/kernel.hpp"
 
 namespace promyk::lanes {
 inline namespace PROMYK_LANES_ISA {
 
-// Calls visit(LaneSwitches<...>{}) with the stages as types: the one place
-// the stages chosen at run time become template arguments.
+// Calls visit(LaneSwitches<...>{}) with the stages (and whether the row is
+// one sphere's and one light's) as types: the one place the stages chosen
+// at run time become template arguments.
 template <bool Shadows, bool Ambient, class Visit>
-PROMYK_LANES_INLINE decltype(auto) with_many(bool many, Visit&& visit) {
+PROMYK_LANES_INLINE decltype(auto) with_many(bool many, bool one, bool plain, Visit&& visit) {
     if (many) return visit(LaneSwitches<Shadows, Ambient, true>{});
+    if (one && plain) return visit(LaneSwitches<Shadows, Ambient, false, true, true>{});
+    if (one) return visit(LaneSwitches<Shadows, Ambient, false, true>{});
     return visit(LaneSwitches<Shadows, Ambient, false>{});
 }
-template <class Visit>
-PROMYK_LANES_INLINE decltype(auto) with_switches(GeneralLaneStages stages, Visit&& visit) {
+template <bool Rgb, class Visit>
+PROMYK_LANES_INLINE decltype(auto) with_switches(GeneralLaneStages stages, const GeneralRow<Rgb>& row, Visit&& visit) {
+    const bool one = !stages.many && one_sphere_and_light(row);
+    const bool plain = one && plain_surface_and_light(row);
     if (stages.shadows) {
-        if (stages.ambient) return with_many<true, true>(stages.many, visit);
-        return with_many<true, false>(stages.many, visit);
+        if (stages.ambient) return with_many<true, true>(stages.many, one, plain, visit);
+        return with_many<true, false>(stages.many, one, plain, visit);
     }
-    if (stages.ambient) return with_many<false, true>(stages.many, visit);
-    return with_many<false, false>(stages.many, visit);
+    if (stages.ambient) return with_many<false, true>(stages.many, one, plain, visit);
+    return with_many<false, false>(stages.many, one, plain, visit);
 }
+
+// The row's pixels, a vector at a time, by the stages' pixel function: the
+// one-sphere row's numbers in every lane once a row (OneSphereRow), or the
+// general tracer's, which reads the row itself.
+template <class Sw, bool Rgb, class Vector, bool One = Sw::one>
+struct RowLanes {
+    const GeneralRow<Rgb>& row;
+    PROMYK_LANES_INLINE GeneralLanePixel<Vector, Rgb> operator()(Vector x_E, MaskOf<Vector> kept,
+                                                                LaneWork<Vector>& work) const {
+        return general_lanes<Sw>(row, x_E, kept, work);
+    }
+};
+template <class Sw, bool Rgb, class Vector>
+struct RowLanes<Sw, Rgb, Vector, true> {
+    OneSphereRow<Vector, Rgb> one;
+    explicit RowLanes(const GeneralRow<Rgb>& row) : one(row) {}
+    PROMYK_LANES_INLINE GeneralLanePixel<Vector, Rgb> operator()(Vector x_E, MaskOf<Vector> kept,
+                                                                LaneWork<Vector>& work) const {
+        return one_sphere_lanes<Sw>(one, x_E, kept, work);
+    }
+};
 
 // Pixels j .. j + n - 1 (n <= the width) into out: grey levels, or r, g, b.
 template <class Vector>
@@ -57,7 +84,7 @@ PROMYK_LANES_INLINE void put_intensities(const Vec3<Vector>& I_P, std::uint8_t* 
 // column j's x_E, its extra lanes computed and not kept.
 template <class Vector>
 PROMYK_LANES_INLINE Vector columns(const double* x_E, int j, int n, MaskOf<Vector>& kept) {
-    Vector x = splat<Vector>(x_E[j]);
+    Vector x = every_lane<Vector>(x_E[j]);
     kept = MaskOf<Vector>{};
     for (int k = 0; k < n; ++k) x[k] = x_E[j + k], kept[k] = -1;
     return x;
@@ -85,6 +112,7 @@ PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, const
                 if (lane_of(now_non_finite, k)) first_non_finite_j = j + k;
     };
     const Mask all_kept = lane_not(Mask{});
+    const RowLanes<Sw, Rgb, Vector> pixels_at{row};
     int j = 0;
     // Two vectors a step, computed before either is stored: two independent
     // chains of square roots and divisions in flight at once.
@@ -92,8 +120,8 @@ PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, const
         Vector x0, x1;
         std::memcpy(&x0, x_E + j, sizeof x0);
         std::memcpy(&x1, x_E + j + width, sizeof x1);
-        const GeneralLanePixel<Vector, Rgb> p0 = general_lanes<Sw>(row, x0, all_kept, work);
-        const GeneralLanePixel<Vector, Rgb> p1 = general_lanes<Sw>(row, x1, all_kept, work);
+        const GeneralLanePixel<Vector, Rgb> p0 = pixels_at(x0, all_kept, work);
+        const GeneralLanePixel<Vector, Rgb> p1 = pixels_at(x1, all_kept, work);
         take(j, width, p0, all_kept);
         take(j + width, width, p1, all_kept);
     }
@@ -101,7 +129,7 @@ PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, const
         const int n = w - j < width ? w - j : width;
         Mask kept;
         const Vector x = columns<Vector>(x_E, j, n, kept);
-        take(j, n, general_lanes<Sw>(row, x, kept, work), kept);
+        take(j, n, pixels_at(x, kept, work), kept);
     }
     RowCounts counts;
     int misses = 0, lits = 0, shadoweds = 0, non_finites = 0;
@@ -135,7 +163,8 @@ PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, const
 template <class Vector, bool Rgb>
 PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, GeneralLaneStages stages,
                                               const double* x_E, int w, std::uint8_t* out) {
-    return with_switches(stages, [&](auto sw) { return draw_general_row<decltype(sw), Rgb, Vector>(row, x_E, w, out); });
+    return with_switches(stages, row,
+                         [&](auto sw) { return draw_general_row<decltype(sw), Rgb, Vector>(row, x_E, w, out); });
 }
 
 // The row's intensities and branches, as draw_general_row computes them.
@@ -143,13 +172,14 @@ template <class Vector, bool Rgb, class Intensity>
 PROMYK_LANES_INLINE void general_row_intensities(const GeneralRow<Rgb>& row, GeneralLaneStages stages,
                                                  const double* x_E, int w, Intensity* I_P, std::uint8_t* branches) {
     constexpr int width = LaneTraits<Vector>::width;
-    with_switches(stages, [&](auto sw) {
+    with_switches(stages, row, [&](auto sw) {
         LaneWork<Vector> work;
+        const RowLanes<decltype(sw), Rgb, Vector> pixels_at{row};
         for (int j = 0; j < w; j += width) {
             const int n = w - j < width ? w - j : width;
             MaskOf<Vector> kept;
             const Vector x = columns<Vector>(x_E, j, n, kept);
-            const GeneralLanePixel<Vector, Rgb> pixel = general_lanes<decltype(sw)>(row, x, kept, work);
+            const GeneralLanePixel<Vector, Rgb> pixel = pixels_at(x, kept, work);
             for (int k = 0; k < n; ++k) {
                 if constexpr (Rgb)
                     I_P[j + k] = {pixel.I_P.x[k], pixel.I_P.y[k], pixel.I_P.z[k]};
