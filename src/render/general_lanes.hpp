@@ -109,29 +109,13 @@ inline namespace PROMYK_LANES_ISA {
 template <class Lane, bool Rgb>
 using LaneIntensity = std::conditional_t<Rgb, Vec3<Lane>, Lane>;
 
-// x in every lane, as one broadcast: lanes.hpp's splat fills the lanes one
-// by one, which GCC compiles to a load per lane for a value read from the
-// row (eight masked loads and their masks for AVX-512's eight doubles).
-template <class Lane>
-PROMYK_LANES_INLINE Lane every_lane(double x) {
-    constexpr int width = LaneTraits<Lane>::width;
-    if constexpr (width == 1)
-        return x;
-    else if constexpr (width == 2)
-        return Lane{x, x};
-    else if constexpr (width == 4)
-        return Lane{x, x, x, x};
-    else
-        return Lane{x, x, x, x, x, x, x, x};
-}
-
 template <class Lane, class Real>
 PROMYK_LANES_INLINE Lane splat_of(Real x) {
-    return every_lane<Lane>(x);
+    return splat<Lane>(x);
 }
 template <class Lane, class Real>
 PROMYK_LANES_INLINE Vec3<Lane> splat_of(const Vec3<Real>& v) {
-    return {every_lane<Lane>(v.x), every_lane<Lane>(v.y), every_lane<Lane>(v.z)};
+    return {splat<Lane>(v.x), splat<Lane>(v.y), splat<Lane>(v.z)};
 }
 template <class Lane>
 PROMYK_LANES_INLINE Lane pick(MaskOf<Lane> m, Lane a, Lane b) {
@@ -167,9 +151,9 @@ PROMYK_LANES_INLINE Vec3<Lane> plus(const Vec3<Lane>& a, const Vec3<Lane>& b) {
 template <class Lane, bool Rgb>
 PROMYK_LANES_INLINE LaneIntensity<Lane, Rgb> every_channel(double x) {
     if constexpr (Rgb)
-        return {every_lane<Lane>(x), every_lane<Lane>(x), every_lane<Lane>(x)};
+        return {splat<Lane>(x), splat<Lane>(x), splat<Lane>(x)};
     else
-        return every_lane<Lane>(x);
+        return splat<Lane>(x);
 }
 // A mask's a where m, else b.
 template <class Mask>
@@ -211,8 +195,8 @@ struct LaneWork {
 template <class Lane>
 struct NearestLanes {
     using Mask = MaskOf<Lane>;
-    Lane t = every_lane<Lane>(std::numeric_limits<double>::infinity());
-    Lane id = every_lane<Lane>(-1.0);
+    Lane t = splat<Lane>(std::numeric_limits<double>::infinity());
+    Lane id = splat<Lane>(-1.0);
     Mask flip{};
     Mask undecided{};  // a test whose deciding value was NaN or infinite
 
@@ -222,14 +206,14 @@ struct NearestLanes {
         undecided = both(found, lane_not(finite));
         const Mask taken = both(found, finite);
         t = select(taken, t_k, t);
-        id = select(taken, every_lane<Lane>(0.0), id);
+        id = select(taken, splat<Lane>(0.0), id);
         flip = flip_k;
     }
     PROMYK_LANES_INLINE void take(Mask found, Lane t_k, double id_k, Mask flip_k) {
         undecided = either(undecided, both(found, lane_not(finite_lanes(t_k))));
         const Mask nearer = both(both(found, finite_lanes(t_k)), t_k < t);  // ties: the earlier object stays
         t = select(nearer, t_k, t);
-        id = select(nearer, every_lane<Lane>(id_k), id);
+        id = select(nearer, splat<Lane>(id_k), id);
         flip = pick_mask(nearer, flip_k, flip);
     }
 };
@@ -276,7 +260,7 @@ PROMYK_LANES_INLINE void test_plane(const typename GeneralRow<Rgb>::Flat& flat, 
     // n_hat.Q or n_hat.E beyond the range: a NaN root (nothing decided).
     const Mask decides = (flat.NQ * 0.0 + NE * 0.0) == 0.0;
     const Mask ahead = both(decides, both(t > 0.0, finite_lanes(t)));
-    const Lane root = select(decides, t, every_lane<Lane>(std::numeric_limits<double>::quiet_NaN()));
+    const Lane root = select(decides, t, splat<Lane>(std::numeric_limits<double>::quiet_NaN()));
     const Mask found = both(crosses, either(lane_not(decides), ahead));
     if constexpr (Only)
         nearest.take_only(found, root, NE > 0.0);
@@ -355,24 +339,24 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> general_lanes(const GeneralRow<R
         // The hit object's own numbers, chosen lane by lane.
         on_sphere = nearest.id < sphere_count;
         Vec3<Lane> S{}, n_hat{};
-        r = every_lane<Lane>(1.0);
-        k_a = k_d = every_lane<Lane>(0.0);
+        r = splat<Lane>(1.0);
+        k_a = k_d = splat<Lane>(0.0);
         m = splat_of<Lane>(row.background);
         for (int k = 0; k < row.sphere_count; ++k) {
             const auto& ball = row.spheres[k];
             const Mask is = nearest.id == double(k);
             S = pick(is, splat_of<Lane>(ball.S), S);
-            r = select(is, every_lane<Lane>(ball.r), r);
-            k_a = select(is, every_lane<Lane>(ball.surface.k_a), k_a);
-            k_d = select(is, every_lane<Lane>(ball.surface.k_d), k_d);
+            r = select(is, splat<Lane>(ball.r), r);
+            k_a = select(is, splat<Lane>(ball.surface.k_a), k_a);
+            k_d = select(is, splat<Lane>(ball.surface.k_d), k_d);
             m = pick(is, splat_of<Lane>(ball.surface.m), m);
         }
         for (int k = 0; k < row.plane_count; ++k) {
             const auto& flat = row.planes[k];
             const Mask is = nearest.id == sphere_count + k;
             n_hat = pick(is, splat_of<Lane>(flat.n_hat), n_hat);
-            k_a = select(is, every_lane<Lane>(flat.surface.k_a), k_a);
-            k_d = select(is, every_lane<Lane>(flat.surface.k_d), k_d);
+            k_a = select(is, splat<Lane>(flat.surface.k_a), k_a);
+            k_d = select(is, splat<Lane>(flat.surface.k_d), k_d);
             m = pick(is, splat_of<Lane>(flat.surface.m), m);
         }
         N = pick(on_sphere, Vec3<Lane>{P.x - S.x, P.y - S.y, P.z - S.z}, n_hat);
@@ -380,15 +364,15 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> general_lanes(const GeneralRow<R
         const auto& ball = row.spheres[0];
         on_sphere = lane_not(Mask{});
         N = {P.x - ball.S.x, P.y - ball.S.y, P.z - ball.S.z};
-        r = every_lane<Lane>(ball.r);
-        k_a = every_lane<Lane>(ball.surface.k_a), k_d = every_lane<Lane>(ball.surface.k_d);
+        r = splat<Lane>(ball.r);
+        k_a = splat<Lane>(ball.surface.k_a), k_d = splat<Lane>(ball.surface.k_d);
         m = splat_of<Lane>(ball.surface.m);
     } else {
         const auto& flat = row.planes[0];
         on_sphere = Mask{};
         N = splat_of<Lane>(flat.n_hat);
-        r = every_lane<Lane>(1.0);
-        k_a = every_lane<Lane>(flat.surface.k_a), k_d = every_lane<Lane>(flat.surface.k_d);
+        r = splat<Lane>(1.0);
+        k_a = splat<Lane>(flat.surface.k_a), k_d = splat<Lane>(flat.surface.k_d);
         m = splat_of<Lane>(flat.surface.m);
     }
     N = pick(nearest.flip, Vec3<Lane>{-N.x, -N.y, -N.z}, N);  // seen from inside, or from the plane's back
@@ -447,7 +431,7 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> general_lanes(const GeneralRow<R
         lit_any = either(lit_any, reaches);
 
         // This light's contribution: c (m (k_a I + k_d diffuse)).
-        Lane diffuse = every_lane<Lane>(0.0);
+        Lane diffuse = splat<Lane>(0.0);
         if (any(reaches)) diffuse = select(reaches, light.I * D / (r * lane_sqrt(KK)), diffuse);
         Lane lambert = k_d * diffuse;
         if constexpr (Sw::ambient) lambert = k_a * light.I + lambert;

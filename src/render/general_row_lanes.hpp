@@ -84,7 +84,7 @@ PROMYK_LANES_INLINE void put_intensities(const Vec3<Vector>& I_P, std::uint8_t* 
 // column j's x_E, its extra lanes computed and not kept.
 template <class Vector>
 PROMYK_LANES_INLINE Vector columns(const double* x_E, int j, int n, MaskOf<Vector>& kept) {
-    Vector x = every_lane<Vector>(x_E[j]);
+    Vector x = splat<Vector>(x_E[j]);
     kept = MaskOf<Vector>{};
     for (int k = 0; k < n; ++k) x[k] = x_E[j + k], kept[k] = -1;
     return x;

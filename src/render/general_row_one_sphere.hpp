@@ -32,16 +32,16 @@ struct OneSphereRow {
     Intensity background;
 
     explicit OneSphereRow(const GeneralRow<Rgb>& row)
-        : y_E(every_lane<Lane>(row.y_E)), z_E(every_lane<Lane>(row.z_E)), yy(every_lane<Lane>(row.yy)),
-          zz(every_lane<Lane>(row.zz)), S_x(every_lane<Lane>(row.spheres[0].S.x)),
-          S_y(every_lane<Lane>(row.spheres[0].S.y)), S_z(every_lane<Lane>(row.spheres[0].S.z)),
-          r(every_lane<Lane>(row.spheres[0].r)), SS_rr(every_lane<Lane>(row.spheres[0].SS_rr)),
-          ySy(every_lane<Lane>(row.spheres[0].ySy)), zSz(every_lane<Lane>(row.spheres[0].zSz)),
-          k_d(every_lane<Lane>(row.spheres[0].surface.k_d)),
-          k_a_I(every_lane<Lane>(row.spheres[0].surface.k_a * row.lights[0].I)),
-          m(splat_of<Lane>(row.spheres[0].surface.m)), L_x(every_lane<Lane>(row.lights[0].L.x)),
-          L_y(every_lane<Lane>(row.lights[0].L.y)), L_z(every_lane<Lane>(row.lights[0].L.z)),
-          I(every_lane<Lane>(row.lights[0].I)), c(splat_of<Lane>(row.lights[0].c)),
+        : y_E(splat<Lane>(row.y_E)), z_E(splat<Lane>(row.z_E)), yy(splat<Lane>(row.yy)),
+          zz(splat<Lane>(row.zz)), S_x(splat<Lane>(row.spheres[0].S.x)),
+          S_y(splat<Lane>(row.spheres[0].S.y)), S_z(splat<Lane>(row.spheres[0].S.z)),
+          r(splat<Lane>(row.spheres[0].r)), SS_rr(splat<Lane>(row.spheres[0].SS_rr)),
+          ySy(splat<Lane>(row.spheres[0].ySy)), zSz(splat<Lane>(row.spheres[0].zSz)),
+          k_d(splat<Lane>(row.spheres[0].surface.k_d)),
+          k_a_I(splat<Lane>(row.spheres[0].surface.k_a * row.lights[0].I)),
+          m(splat_of<Lane>(row.spheres[0].surface.m)), L_x(splat<Lane>(row.lights[0].L.x)),
+          L_y(splat<Lane>(row.lights[0].L.y)), L_z(splat<Lane>(row.lights[0].L.z)),
+          I(splat<Lane>(row.lights[0].I)), c(splat_of<Lane>(row.lights[0].c)),
           background(splat_of<Lane>(row.background)) {}
 };
 
@@ -126,7 +126,7 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> one_sphere_lanes(const OneSphere
     }
 
     // The light's contribution: c (m (k_a I + k_d diffuse)).
-    Lane diffuse = every_lane<Lane>(0.0);
+    Lane diffuse = splat<Lane>(0.0);
     if (any(reaches)) diffuse = select(reaches, row.I * D / (row.r * lane_sqrt(KK)), diffuse);
     Lane lambert = diffuse;  // plain: k_d diffuse is diffuse
     if constexpr (!Sw::plain) lambert = row.k_d * diffuse;

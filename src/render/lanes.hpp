@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <type_traits>
+#include <utility>
 
 #if defined(__SSE2__)
 #include <immintrin.h>
@@ -108,16 +109,20 @@ PROMYK_LANES_INLINE Real select(bool m, Real a, Real b) {
 PROMYK_LANES_INLINE double lane_sqrt(double x) { return std::sqrt(x); }
 PROMYK_LANES_INLINE float lane_sqrt(float x) { return std::sqrt(x); }
 
-// x in every lane (written out: 0 + x would turn a -0 into +0).
+// x in every lane, as one broadcast: the vector written out as {x, x, ...}
+// (0 + x would turn a -0 into +0; filling the lanes one by one in a loop,
+// GCC compiled a value read from memory to a masked load per lane).
+template <class Lane, class Real, std::size_t... k>
+PROMYK_LANES_INLINE Lane splat_lanes(Real x, std::index_sequence<k...>) {
+    using Element = typename LaneTraits<Lane>::Real;
+    return Lane{((void)k, static_cast<Element>(x))...};
+}
 template <class Lane, class Real>
 PROMYK_LANES_INLINE Lane splat(Real x) {
-    if constexpr (LaneTraits<Lane>::width == 1) {
+    if constexpr (LaneTraits<Lane>::width == 1)
         return x;
-    } else {
-        Lane v;
-        for (int k = 0; k < LaneTraits<Lane>::width; ++k) v[k] = x;
-        return v;
-    }
+    else
+        return splat_lanes<Lane>(x, std::make_index_sequence<LaneTraits<Lane>::width>{});
 }
 
 // Vectors: masks are -1 (true) or 0 in every lane.
