@@ -15,10 +15,10 @@
 namespace promyk::lanes {
 inline namespace PROMYK_LANES_ISA {
 
-// A vector's truncated grey levels and its bytes, lane for lane.
-typedef std::int32_t Int2 __attribute__((vector_size(8)));
-typedef std::int32_t Int4 __attribute__((vector_size(16)));
-typedef std::int32_t Int8 __attribute__((vector_size(32)));
+// A vector's grey levels as 64-bit integers, and its bytes, lane for lane.
+typedef std::int64_t Int64x2 __attribute__((vector_size(16)));
+typedef std::int64_t Int64x4 __attribute__((vector_size(32)));
+typedef std::int64_t Int64x8 __attribute__((vector_size(64)));
 typedef std::uint8_t Byte2 __attribute__((vector_size(2)));
 typedef std::uint8_t Byte4 __attribute__((vector_size(4)));
 typedef std::uint8_t Byte8 __attribute__((vector_size(8)));
@@ -26,32 +26,43 @@ template <class Vector>
 struct GreyTypes;
 template <>
 struct GreyTypes<Double2> {
-    using Ints = Int2;
+    using Ints = Int64x2;
     using Bytes = Byte2;
 };
 template <>
 struct GreyTypes<Double4> {
-    using Ints = Int4;
+    using Ints = Int64x4;
     using Bytes = Byte4;
 };
 template <>
 struct GreyTypes<Double8> {
-    using Ints = Int8;
+    using Ints = Int64x8;
     using Bytes = Byte8;
 };
 
-// image/quantize.hpp's to_byte, lane by lane, the same steps: clamp to
-// [0, 1] (NaN to 0), scale by 255, truncate, and round a half up.
+// image/quantize.hpp's to_byte, lane by lane: clamp to [0, 1] (NaN to 0),
+// scale by 255, and round a half up; the same bytes by another way that
+// stays in double lanes (to_byte's truncation to int and back crossed
+// between lane widths twice). y + 2^52 rounds y (0 <= y <= 255) to the
+// nearest integer, a tie to the even one, and holds that integer in its
+// low bits; r = (y + 2^52) - 2^52 is it as a double (both exact). A tie
+// rounded down (y - r = +1/2) goes up, as to_byte rounds it; one rounded up
+// (y - r = -1/2) already has. tests/grey_levels_test.cpp compares every
+// width with to_byte at every tie and its neighbours.
 template <class Vector>
 PROMYK_LANES_INLINE void put_grey_levels(Vector v, std::uint8_t* out, int n) {
     using Ints = typename GreyTypes<Vector>::Ints;
     using Bytes = typename GreyTypes<Vector>::Bytes;
+    constexpr double two_52 = 4503599627370496.0;  // 2^52: from here on, doubles are integers
     const Vector positive = select(v > 0.0, v, splat<Vector>(0.0));  // also NaN -> 0
     const Vector clamped = select(positive < 1.0, positive, splat<Vector>(1.0));
     const Vector y = clamped * 255.0;
-    const Ints q = __builtin_convertvector(y, Ints);  // truncation; y - q is then exact
-    const auto half_up = __builtin_convertvector((y - __builtin_convertvector(q, Vector)) >= 0.5, Ints);
-    const Bytes grey = __builtin_convertvector(q - half_up, Bytes);  // a mask is -1 where true
+    const Vector shifted = y + two_52;  // 2^52 + round(y), a tie to even
+    const Vector r = shifted - two_52;
+    Ints bits;
+    std::memcpy(&bits, &shifted, sizeof bits);  // round(y) in the low bits
+    const Ints tie_down = (y - r) == 0.5;       // -1 where true
+    const Bytes grey = __builtin_convertvector(bits - tie_down, Bytes);  // the low byte
     std::memcpy(out, &grey, static_cast<std::size_t>(n));
 }
 
