@@ -31,6 +31,7 @@ set(PROMYK_PORTABLE_SOURCES
   render/trace_pixel.cpp
   render/renderer.cpp
   render/article_row.cpp
+  render/float_row.cpp
   render/general_row.cpp
   render/pane_columns.cpp
   render/isa.cpp

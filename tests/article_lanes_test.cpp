@@ -21,6 +21,7 @@
 #include "hard_cases_support.hpp"
 #include "isa_forced.hpp"
 #include "render/article_row.hpp"
+#include "render/float_row.hpp"
 #include "render/isa.hpp"
 #include "image/quantize.hpp"
 #include "render/pane.hpp"
@@ -350,4 +351,54 @@ TEST_CASE("Instruction-set paths: names, and the widest this processor has is th
     CHECK(isa_supported(Isa::avx2) == static_cast<bool>(__builtin_cpu_supports("avx2")));
     CHECK(isa_supported(Isa::avx512) == static_cast<bool>(__builtin_cpu_supports("avx512f")));
 #endif
+}
+
+// --real float drawn in float lanes (render/float_row.hpp): every pixel's
+// grey level, each row's counts, on every path, against trace_ray<float>.
+TEST_CASE("Drawn float rows: every instruction-set path, each formula, bit-identical to the traced path in float",
+          "[lanes][isa][float]") {
+    std::vector<NamedWorld> worlds = article_worlds();
+    int s = 0;
+    for (const ArticleWorld<double>& world : random_worlds(24)) worlds.push_back({"random " + std::to_string(s++), world, 0});
+    for (const Isa isa : supported_isas()) {
+        PathForced forced(isa);
+        for (const Formula formula : lane_formulas) {
+            for (const NamedWorld& named : worlds) {
+                const ArticleWorld<float> world = in_type<float>(named.world);
+                // Panes that are and are not whole vectors of 4, 8 and 16 floats.
+                std::vector<int> panes = {61, 64, 67};
+                if (named.w > 0) panes.push_back(named.w), panes.push_back(3 * named.w);
+                if (named.name == "article.json" || named.name == "far_sphere.json") panes.push_back(301);
+                for (const int w : panes) {
+                    INFO(isa_name(isa) << ", " << formula_name(formula) << ", " << named.name << ", w = " << w);
+                    std::vector<std::uint8_t> grey(static_cast<std::size_t>(w));
+                    int mismatches = 0, count_mismatches = 0, rows_in_lanes = 0;
+                    for (int i = 0; i < w; ++i) {
+                        RowCounts drawn;
+                        rows_in_lanes += float_row_in_lanes(world, w, i, grey.data(), formula, drawn);
+                        RowCounts traced;
+                        traced.sphere_tests = w;
+                        for (int j = 0; j < w; ++j) {
+                            const PixelResult<float> pixel = traced_ray(world, pane_point(i, j, w, world.z_E), formula);
+                            ++traced.branches[static_cast<int>(pixel.branch)];
+                            if (pixel.branch == Branch::non_finite && traced.first_non_finite_j < 0)
+                                traced.first_non_finite_j = j;
+                            mismatches += grey[static_cast<std::size_t>(j)] != to_byte(static_cast<double>(pixel.I_P));
+                        }
+                        for (int b = 0; b < branch_count; ++b)
+                            count_mismatches += drawn.branches[b] != traced.branches[b];
+                        count_mismatches += drawn.first_non_finite_j != traced.first_non_finite_j;
+                        count_mismatches += drawn.sphere_tests != traced.sphere_tests || drawn.skipped != 0;
+                    }
+                    CHECK(rows_in_lanes == w);
+                    CHECK(mismatches == 0);
+                    CHECK(count_mismatches == 0);
+                }
+            }
+        }
+    }
+    // fma has no lanes: the kernel draws it a pixel at a time.
+    RowCounts none;
+    std::vector<std::uint8_t> grey(8);
+    CHECK_FALSE(float_row_in_lanes(in_type<float>(article_worlds().front().world), 8, 0, grey.data(), Formula::fma, none));
 }

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 #include "render/article_lanes.hpp"
 #include "render/kernel.hpp"
@@ -49,7 +50,7 @@ struct GreyTypes<Double8> {
 // rounded down (y - r = +1/2) goes up, as to_byte rounds it; one rounded up
 // (y - r = -1/2) already has. tests/grey_levels_test.cpp compares every
 // width with to_byte at every tie and its neighbours.
-template <class Vector>
+template <class Vector, std::enable_if_t<std::is_same_v<typename LaneTraits<Vector>::Real, double>, int> = 0>
 PROMYK_LANES_INLINE void put_grey_levels(Vector v, std::uint8_t* out, int n) {
     using Ints = typename GreyTypes<Vector>::Ints;
     using Bytes = typename GreyTypes<Vector>::Bytes;
@@ -66,13 +67,47 @@ PROMYK_LANES_INLINE void put_grey_levels(Vector v, std::uint8_t* out, int n) {
     std::memcpy(out, &grey, static_cast<std::size_t>(n));
 }
 
+// Floats (--real float): to_byte takes each intensity as a double, exactly,
+// so the lanes widen to doubles (a float is one exactly) and go on as above,
+// a half at a time: half the floats as doubles fill the same register. A
+// template, so that only the instruction set that draws a width compiles it.
+typedef float Float2 __attribute__((vector_size(8)));
+template <class Floats>
+struct FloatHalves;
+template <>
+struct FloatHalves<Float4> {
+    using Half = Float2;
+    using Doubles = Double2;
+};
+template <>
+struct FloatHalves<Float8> {
+    using Half = Float4;
+    using Doubles = Double4;
+};
+template <>
+struct FloatHalves<Float16> {
+    using Half = Float8;
+    using Doubles = Double8;
+};
+template <class Floats, std::enable_if_t<std::is_same_v<typename LaneTraits<Floats>::Real, float>, int> = 0>
+PROMYK_LANES_INLINE void put_grey_levels(Floats v, std::uint8_t* out, int n) {
+    using Half = typename FloatHalves<Floats>::Half;
+    using Doubles = typename FloatHalves<Floats>::Doubles;
+    constexpr int half = LaneTraits<Floats>::width / 2;
+    Half low, high;
+    std::memcpy(&low, &v, sizeof low);
+    std::memcpy(&high, reinterpret_cast<const char*>(&v) + sizeof low, sizeof high);
+    put_grey_levels(__builtin_convertvector(low, Doubles), out, n < half ? n : half);
+    if (n > half) put_grey_levels(__builtin_convertvector(high, Doubles), out + half, n - half);
+}
+
 // Row `row` of a w-pixel pane into out[0 .. w), with the sphere's formula
 // Root (render/article_lanes.hpp): x_E[j] is pane_x(j, w), given for the
 // whole pane (columns share it; computing it here would cost each pixel a
 // division). The last vector is filled past w and only its first pixels
 // are kept.
-template <class Vector, template <class> class Root = ArticleRoot>
-PROMYK_LANES_INLINE RowCounts draw_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out) {
+template <class Vector, template <class> class Root = ArticleRoot, class Real = typename LaneTraits<Vector>::Real>
+PROMYK_LANES_INLINE RowCounts draw_row(const ArticleRow<Real>& row, const Real* x_E, int w, std::uint8_t* out) {
     constexpr int width = LaneTraits<Vector>::width;
     using Mask = MaskOf<Vector>;
     Mask miss{}, dark{}, non_finite{};  // counted lane by lane: a mask is -1 where true
@@ -163,8 +198,8 @@ PROMYK_LANES_INLINE void row_intensities(const ArticleRow<double>& row, const do
 
 // draw_row with the formula chosen at run time (once a row): the article's,
 // stable or geometric; fma has no lanes.
-template <class Vector>
-PROMYK_LANES_INLINE RowCounts draw_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out,
+template <class Vector, class Real = typename LaneTraits<Vector>::Real>
+PROMYK_LANES_INLINE RowCounts draw_row(const ArticleRow<Real>& row, const Real* x_E, int w, std::uint8_t* out,
                                        Formula formula) {
     return with_root(formula, [&](auto root) {
         return draw_row<Vector, decltype(root)::template Root>(row, x_E, w, out);

@@ -12,6 +12,7 @@
 
 #include "math/real.hpp"
 #include "render/article_row.hpp"
+#include "render/float_row.hpp"
 #include "render/general_row.hpp"
 #include "render/general_tracer.hpp"
 #include "render/kernel.hpp"
@@ -98,6 +99,8 @@ class ArticleKernel final : public Kernel {
     // Drawn in lanes (render/article_row.hpp): double with the article's,
     // stable or geometric formula; float and fma a pixel at a time below.
     static constexpr bool in_lanes = std::is_same_v<Real, double> && F::id != Formula::fma;
+    // float with those formulas: in float lanes (render/float_row.hpp).
+    static constexpr bool in_float_lanes = std::is_same_v<Real, float> && F::id != Formula::fma;
 
 public:
     ArticleKernel(const Stages& stages, const ArticleWorld<double>& world, int spp)
@@ -110,8 +113,11 @@ public:
         if constexpr (in_lanes) {
             return render_row(world_, w, i, out, F::id);  // the tuned loop of the article's program
         } else {
-            NullRecorder none;
             RowCounts counts;
+            if constexpr (in_float_lanes) {
+                if (float_row_in_lanes(world_, w, i, out, F::id, counts)) return counts;
+            }
+            NullRecorder none;
             counts.sphere_tests = w;
             for (int j = 0; j < w; ++j) {
                 const PixelResult<Real> pixel = trace_pixel_ray<F>(world_, w, i, j, none);

@@ -49,6 +49,11 @@ typedef double Double4 __attribute__((vector_size(32)));
 typedef double Double8 __attribute__((vector_size(64)));
 using Mask4d = decltype(Double4{} < Double4{});
 using Mask8d = decltype(Double8{} < Double8{});
+// Eight and sixteen floats, the same registers for --real float.
+typedef float Float8 __attribute__((vector_size(32)));
+typedef float Float16 __attribute__((vector_size(64)));
+using Mask8f = decltype(Float8{} < Float8{});
+using Mask16f = decltype(Float16{} < Float16{});
 
 template <class Lane>
 struct LaneTraits;
@@ -89,6 +94,18 @@ struct LaneTraits<Double8> {
     using Real = double;
     using Mask = Mask8d;
     static constexpr int width = 8;
+};
+template <>
+struct LaneTraits<Float8> {
+    using Real = float;
+    using Mask = Mask8f;
+    static constexpr int width = 8;
+};
+template <>
+struct LaneTraits<Float16> {
+    using Real = float;
+    using Mask = Mask16f;
+    static constexpr int width = 16;
 };
 
 template <class Lane>
@@ -149,11 +166,16 @@ PROMYK_LANES_INLINE unsigned lane_bits(Mask m) {
 #endif
 #if defined(__AVX__)
     if constexpr (sizeof m == 32 && n == 4) return unsigned(_mm256_movemask_pd(reinterpret_cast<__m256d>(m)));
+    if constexpr (sizeof m == 32 && n == 8) return unsigned(_mm256_movemask_ps(reinterpret_cast<__m256>(m)));
 #endif
 #if defined(__AVX512F__)
     if constexpr (sizeof m == 64 && n == 8) {
         const __m512i v = reinterpret_cast<__m512i>(m);
         return unsigned(_mm512_test_epi64_mask(v, v));
+    }
+    if constexpr (sizeof m == 64 && n == 16) {
+        const __m512i v = reinterpret_cast<__m512i>(m);
+        return unsigned(_mm512_test_epi32_mask(v, v));
     }
 #endif
     unsigned bits = 0;

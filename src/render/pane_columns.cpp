@@ -7,13 +7,21 @@
 
 namespace promyk {
 
-const double* pane_columns(int w) {
-    thread_local std::vector<double> x_E;
+namespace {
+
+template <class Real>
+const Real* columns(int w) {
+    thread_local std::vector<Real> x_E;
     if (static_cast<int>(x_E.size()) != w) {
         x_E.resize(static_cast<std::size_t>(w));
-        for (int j = 0; j < w; ++j) x_E[static_cast<std::size_t>(j)] = pane_x<double>(j, w);
+        for (int j = 0; j < w; ++j) x_E[static_cast<std::size_t>(j)] = pane_x<Real>(j, w);
     }
     return x_E.data();
 }
+
+}  // namespace
+
+const double* pane_columns(int w) { return columns<double>(w); }
+const float* pane_columns_float(int w) { return columns<float>(w); }
 
 }  // namespace promyk
