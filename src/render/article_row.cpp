@@ -17,6 +17,8 @@
 #include "render/isa.hpp"
 #include "render/pane_columns.hpp"
 #include "render/renderer.hpp"
+#include "render/sample_lanes.hpp"
+#include "render/sample_lanes_isa.hpp"
 #include "render/silhouette.hpp"
 #include "render/skipping.hpp"
 
@@ -249,6 +251,29 @@ RowCounts one_pixel_row(const ArticleWorld<double>& world, int w, int i, std::ui
 }
 
 }  // namespace
+
+bool sampled_row_in_lanes(const ArticleWorld<double>& world, int w, int i, int spp, std::uint8_t* out, Formula formula,
+                          RowCounts& counts, double* I_P, std::uint8_t* branches) {
+#if defined(PROMYK_ISA_KERNELS)
+    if (!has_lanes(formula) || spp <= 1) return false;
+    // y_E is each sample's own: the row's is not used.
+    const lanes::ArticleRow<double> row(world, pane_y<double>(i, w));
+    switch (article_isa()) {
+        case Isa::avx512:
+            counts = lanes::avx512::draw_sampled_article_row(row, w, i, spp, out, I_P, branches, formula);
+            break;
+        case Isa::avx2:
+            counts = lanes::avx2::draw_sampled_article_row(row, w, i, spp, out, I_P, branches, formula);
+            break;
+        default:
+            counts = lanes::draw_sampled_row<lanes::Double2>(row, w, i, spp, out, I_P, branches, formula);
+    }
+    return true;
+#else
+    (void)world, (void)w, (void)i, (void)spp, (void)out, (void)formula, (void)counts, (void)I_P, (void)branches;
+    return false;
+#endif
+}
 
 RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out) {
     return render_row(world, w, i, out, Formula::article);
