@@ -20,9 +20,10 @@ void article_row_intensities(const ArticleRow<double>& row, const double* x_E, i
     row_intensities<Double8>(row, x_E, w, I_P, branches, formula);
 }
 
-RowCounts draw_sampled_article_row(const ArticleRow<double>& row, int w, int i, int spp, std::uint8_t* out,
+RowCounts draw_sampled_article_row(const ArticleRow<double>& row, int w, int i, int spp, int lo, int hi,
+                                   std::uint8_t* out,
                                    double* I_P, std::uint8_t* branches, Formula formula) {
-    return draw_sampled_row<Double8>(row, w, i, spp, out, I_P, branches, formula);
+    return draw_sampled_row<Double8>(row, w, i, spp, lo, hi, out, I_P, branches, formula);
 }
 
 }  // namespace avx512

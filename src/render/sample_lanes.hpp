@@ -65,16 +65,19 @@ struct SampleRow {
           rr(row.rr), SS_rr(row.SS_rr) {}
 };
 
-// x * (1/d) in place of x / d where d is a power of two: both are the
-// correctly rounded x / d, as the quotients here (of numbers from 2^-17 to
-// 2^31 by d <= 2^30) neither overflow nor fall below the normal range.
-template <class Vector>
+// x * (1/d) in place of x / d where d is a power of two (Exact): both are
+// the correctly rounded x / d, as the quotients here (of 0 or numbers from
+// 2^-60 to 2^31 by d <= 2^30) neither overflow nor fall below the normal
+// range. Chosen once a row, so the sample loop has no branch on it.
+PROMYK_LANES_INLINE bool power_of_two(int n) { return n > 0 && (n & (n - 1)) == 0; }
+template <class Vector, bool Exact>
 struct Divisor {
     double d, reciprocal;
-    bool power_of_two;
-    explicit Divisor(int n)
-        : d(n), reciprocal(1.0 / n), power_of_two(n > 0 && (n & (n - 1)) == 0) {}
-    PROMYK_LANES_INLINE Vector divide(Vector x) const { return power_of_two ? x * reciprocal : x / d; }
+    explicit Divisor(int n) : d(n), reciprocal(1.0 / n) {}
+    PROMYK_LANES_INLINE Vector divide(Vector x) const {
+        if constexpr (Exact) return x * reciprocal;
+        else return x / d;
+    }
 };
 
 // The pixels of one vector: their sums, branch counts and centre samples.
@@ -98,9 +101,9 @@ struct SampleGrid {
 
 // Sample s of the vector's pixels: its point as sample_point computes it,
 // traced with the formula Root, and taken into the pixels' sums and counts.
-template <class Vector, template <class> class Root>
-PROMYK_LANES_INLINE void take_sample(const ArticleRow<double>& row, const SampleGrid& grid,
-                                     const Divisor<Vector>& by_n, const Divisor<Vector>& by_w, int s,
+template <class Vector, template <class> class Root, bool First, class Div>
+PROMYK_LANES_INLINE void take_sample(const ArticleRow<double>& row, const SampleGrid& grid, const Div& by_n,
+                                     const Div& by_w, int s,
                                      std::uint32_t s_hash, SampledLanes<Vector>& p) {
     using Mask = MaskOf<Vector>;
     using I = typename SampleInts<Vector>::I;
@@ -114,12 +117,15 @@ PROMYK_LANES_INLINE void take_sample(const ArticleRow<double>& row, const Sample
     const Vector x = by_w.divide(p.x0 + 2.0 * u) - 1.0;
     const Vector y = by_w.divide(-(grid.y0 + 2.0 * v)) + 1.0;
     const LanePixel<Vector> pixel = article_lanes<Root>(SampleRow<Vector>(row, y), x);
-    p.sum = s == 0 ? pixel.I_P : p.sum + pixel.I_P;
+    if constexpr (First) p.sum = pixel.I_P;  // not 0 + I_P: that would make a -0 +0
+    else p.sum = p.sum + pixel.I_P;
     p.miss -= pixel.miss;
     p.dark -= pixel.dark;
     p.non_finite -= pixel.non_finite;
     const Vector d = u * u + v * v;
-    const Mask nearer = s == 0 ? ~Mask{} : d < p.nearest;
+    Mask nearer;
+    if constexpr (First) nearer = ~Mask{};  // d < INFINITY: d is finite
+    else nearer = d < p.nearest;
     p.nearest = select(nearer, d, p.nearest);
     p.centre_miss = (pixel.miss & nearer) | (p.centre_miss & ~nearer);
     p.centre_dark = (pixel.dark & nearer) | (p.centre_dark & ~nearer);
@@ -153,15 +159,18 @@ PROMYK_LANES_INLINE void put_sampled(const SampledLanes<Vector>& p, int spp, int
 // Row grid.i into out[0 .. w) from grid.spp samples a pixel, with the
 // formula Root: two vectors of pixels in flight (two independent chains of
 // square roots and divisions), then one for the rest.
-template <class Vector, template <class> class Root>
-PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, const SampleGrid& grid,
+template <class Vector, template <class> class Root, bool Exact>
+PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, const SampleGrid& grid, int lo, int hi,
                                                std::uint8_t* out, double* I_P, std::uint8_t* branches) {
     constexpr int width = LaneTraits<Vector>::width;
     using U = typename SampleInts<Vector>::U;
-    const Divisor<Vector> by_n(grid.n), by_w(grid.w);
+    const Divisor<Vector, Exact> by_n(grid.n), by_w(grid.w);
+    const auto s_hash = [](int s) __attribute__((always_inline)) {
+        return mix32_lanes(static_cast<std::uint32_t>(s) + hash_s);
+    };
     const int w = grid.w, spp = grid.spp;
     RowCounts counts;
-    counts.sphere_tests = static_cast<long long>(w) * spp;
+    counts.sphere_tests = static_cast<long long>(hi - lo) * spp;
     const auto pixels = [&](int j) __attribute__((always_inline)) {
         SampledLanes<Vector> p;
         U j_lanes;
@@ -169,30 +178,33 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, co
         p.j_hash = j_lanes * hash_j;
         return p;
     };
-    int j = 0;
-    for (; j + 2 * width <= w; j += 2 * width) {
+    (void)w;
+    int j = lo;
+    for (; j + 2 * width <= hi; j += 2 * width) {
         SampledLanes<Vector> p0 = pixels(j), p1 = pixels(j + width);
-        for (int s = 0; s < spp; ++s) {
-            const std::uint32_t s_hash = mix32_lanes(static_cast<std::uint32_t>(s) + hash_s);
-            take_sample<Vector, Root>(row, grid, by_n, by_w, s, s_hash, p0);
-            take_sample<Vector, Root>(row, grid, by_n, by_w, s, s_hash, p1);
+        take_sample<Vector, Root, true>(row, grid, by_n, by_w, 0, s_hash(0), p0);
+        take_sample<Vector, Root, true>(row, grid, by_n, by_w, 0, s_hash(0), p1);
+        for (int s = 1; s < spp; ++s) {
+            const std::uint32_t h = s_hash(s);
+            take_sample<Vector, Root, false>(row, grid, by_n, by_w, s, h, p0);
+            take_sample<Vector, Root, false>(row, grid, by_n, by_w, s, h, p1);
         }
         put_sampled(p0, spp, j, width, out, counts, I_P, branches);
         put_sampled(p1, spp, j + width, width, out, counts, I_P, branches);
     }
-    for (; j < w; j += width) {  // the last vector's lanes past w are computed and dropped
+    for (; j < hi; j += width) {  // the last vector's lanes past hi are computed and dropped
         SampledLanes<Vector> p = pixels(j);
-        for (int s = 0; s < spp; ++s)
-            take_sample<Vector, Root>(row, grid, by_n, by_w, s, mix32_lanes(static_cast<std::uint32_t>(s) + hash_s), p);
-        put_sampled(p, spp, j, w - j < width ? w - j : width, out, counts, I_P, branches);
+        take_sample<Vector, Root, true>(row, grid, by_n, by_w, 0, s_hash(0), p);
+        for (int s = 1; s < spp; ++s) take_sample<Vector, Root, false>(row, grid, by_n, by_w, s, s_hash(s), p);
+        put_sampled(p, spp, j, hi - j < width ? hi - j : width, out, counts, I_P, branches);
     }
     return counts;
 }
 
-// Row i of a w-pixel pane, spp > 1 samples a pixel, the formula chosen at
-// run time (once a row).
+// Columns [lo, hi) of row i of a w-pixel pane, spp > 1 samples a pixel, the
+// formula chosen at run time (once a row).
 template <class Vector>
-PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, int w, int i, int spp,
+PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, int w, int i, int spp, int lo, int hi,
                                                std::uint8_t* out, double* I_P, std::uint8_t* branches,
                                                Formula formula) {
     SampleGrid grid;
@@ -201,8 +213,11 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, in
     while ((grid.n + 1) * (grid.n + 1) <= spp) ++grid.n;  // spp_side (not compiled here)
     grid.y0 = 2.0 * i + 1.0;
     grid.i_hash = static_cast<std::uint32_t>(i) * hash_i;
+    const bool exact = power_of_two(grid.n) && power_of_two(w);
     return with_root(formula, [&](auto root) {
-        return draw_sampled_row<Vector, decltype(root)::template Root>(row, grid, out, I_P, branches);
+        using R = decltype(root);
+        return exact ? draw_sampled_row<Vector, R::template Root, true>(row, grid, lo, hi, out, I_P, branches)
+                     : draw_sampled_row<Vector, R::template Root, false>(row, grid, lo, hi, out, I_P, branches);
     });
 }
 

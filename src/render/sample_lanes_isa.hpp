@@ -14,7 +14,8 @@ namespace promyk::lanes {
 template <class Real>
 struct ArticleRow;
 
-// Row i of a w-pixel pane from spp > 1 samples a pixel into out[0 .. w)
+// Columns [lo, hi) of row i of a w-pixel pane from spp > 1 samples a pixel
+// into out[lo .. hi)
 // with the formula (article, stable or geometric); I_P and branches, when
 // given, get each pixel's mean and Branch.
 #if defined(__clang__)
@@ -22,11 +23,13 @@ struct ArticleRow;
 #pragma clang diagnostic ignored "-Winline-namespace-reopened-noninline"
 #endif
 namespace avx2 {
-RowCounts draw_sampled_article_row(const ArticleRow<double>& row, int w, int i, int spp, std::uint8_t* out,
+RowCounts draw_sampled_article_row(const ArticleRow<double>& row, int w, int i, int spp, int lo, int hi,
+                                   std::uint8_t* out,
                                    double* I_P, std::uint8_t* branches, Formula formula);
 }
 namespace avx512 {
-RowCounts draw_sampled_article_row(const ArticleRow<double>& row, int w, int i, int spp, std::uint8_t* out,
+RowCounts draw_sampled_article_row(const ArticleRow<double>& row, int w, int i, int spp, int lo, int hi,
+                                   std::uint8_t* out,
                                    double* I_P, std::uint8_t* branches, Formula formula);
 }
 #if defined(__clang__)
