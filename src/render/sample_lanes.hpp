@@ -132,27 +132,47 @@ PROMYK_LANES_INLINE void take_sample(const ArticleRow<double>& row, const Sample
     p.centre_non_finite = (pixel.non_finite & nearer) | (p.centre_non_finite & ~nearer);
 }
 
-// The vector's first n pixels, from column j: their grey levels into out,
-// their branches into counts (and, for the tests, I_P and branches).
+// The row's pixels by branch, and those whose samples disagree, counted lane
+// by lane (a mask is -1 where true) and summed once at the row's end.
 template <class Vector>
-PROMYK_LANES_INLINE void put_sampled(const SampledLanes<Vector>& p, int spp, int j, int n, std::uint8_t* out,
-                                     RowCounts& counts, double* I_P, std::uint8_t* branches) {
+struct RowTally {
+    using Mask = MaskOf<Vector>;
+    Mask miss{}, dark{}, non_finite{}, disagreeing{};
+    int first_non_finite_j = -1;
+};
+
+// The vector's first n pixels (kept: their lanes), from column j: their grey
+// levels into out, their branches into the tally (and, for the tests, I_P
+// and branches). A pixel's branch is its centre sample's, or non-finite when
+// its mean is; its samples agree when each branch took none or all of them.
+template <class Vector>
+PROMYK_LANES_INLINE void put_sampled(const SampledLanes<Vector>& p, int spp, int j, int n, MaskOf<Vector> kept,
+                                     std::uint8_t* out, RowTally<Vector>& tally, double* I_P, std::uint8_t* branches) {
+    using Mask = MaskOf<Vector>;
+    constexpr int width = LaneTraits<Vector>::width;
     const Vector mean = p.sum / double(spp);
     put_grey_levels(mean, out + j, n);
-    for (int k = 0; k < n; ++k) {
-        const int miss = int(p.miss[k]), dark = int(p.dark[k]), non_finite = int(p.non_finite[k]);
-        const int lit = spp - miss - dark - non_finite;
-        const auto one_branch = [spp](int c) { return c == 0 || c == spp; };
-        if (!(one_branch(miss) && one_branch(dark) && one_branch(non_finite) && one_branch(lit))) ++counts.disagreeing;
-        const Branch centre = p.centre_miss[k]         ? Branch::miss
-                              : p.centre_non_finite[k] ? Branch::non_finite
-                              : p.centre_dark[k]       ? Branch::dark
-                                                       : Branch::lit;
-        const Branch branch = mean[k] * 0.0 == 0.0 ? centre : Branch::non_finite;  // finite_value
-        ++counts.branches[static_cast<int>(branch)];
-        if (branch == Branch::non_finite && counts.first_non_finite_j < 0) counts.first_non_finite_j = j + k;
-        if (I_P) I_P[j + k] = mean[k];
-        if (branches) branches[j + k] = static_cast<std::uint8_t>(branch);
+    const Mask lit = spp - p.miss - p.dark - p.non_finite;  // samples lit
+    const auto one_branch = [spp](Mask c) __attribute__((always_inline)) { return (c == 0) | (c == spp); };
+    const Mask agree = one_branch(p.miss) & one_branch(p.dark) & one_branch(p.non_finite) & one_branch(lit);
+    tally.disagreeing -= ~agree & kept;
+    const Mask finite = mean * 0.0 == 0.0;  // finite_value
+    const Mask non_finite = (~finite | p.centre_non_finite) & kept;
+    tally.miss -= finite & p.centre_miss & kept;
+    tally.dark -= finite & p.centre_dark & kept;
+    tally.non_finite -= non_finite;
+    if (tally.first_non_finite_j < 0 && any(non_finite))  // rare
+        for (int k = width - 1; k >= 0; --k)
+            if (non_finite[k]) tally.first_non_finite_j = j + k;
+    if (I_P || branches) {
+        for (int k = 0; k < n; ++k) {
+            const Branch branch = non_finite[k]       ? Branch::non_finite
+                                  : p.centre_miss[k] ? Branch::miss
+                                  : p.centre_dark[k] ? Branch::dark
+                                                     : Branch::lit;
+            if (I_P) I_P[j + k] = mean[k];
+            if (branches) branches[j + k] = static_cast<std::uint8_t>(branch);
+        }
     }
 }
 
@@ -164,7 +184,9 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, co
                                                std::uint8_t* out, double* I_P, std::uint8_t* branches) {
     constexpr int width = LaneTraits<Vector>::width;
     using U = typename SampleInts<Vector>::U;
+    using Mask = MaskOf<Vector>;
     const Divisor<Vector, Exact> by_n(grid.n), by_w(grid.w);
+    RowTally<Vector> tally;
     const auto s_hash = [](int s) __attribute__((always_inline)) {
         return mix32_lanes(static_cast<std::uint32_t>(s) + hash_s);
     };
@@ -189,15 +211,30 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, co
             take_sample<Vector, Root, false>(row, grid, by_n, by_w, s, h, p0);
             take_sample<Vector, Root, false>(row, grid, by_n, by_w, s, h, p1);
         }
-        put_sampled(p0, spp, j, width, out, counts, I_P, branches);
-        put_sampled(p1, spp, j + width, width, out, counts, I_P, branches);
+        put_sampled(p0, spp, j, width, ~Mask{}, out, tally, I_P, branches);
+        put_sampled(p1, spp, j + width, width, ~Mask{}, out, tally, I_P, branches);
     }
     for (; j < hi; j += width) {  // the last vector's lanes past hi are computed and dropped
         SampledLanes<Vector> p = pixels(j);
         take_sample<Vector, Root, true>(row, grid, by_n, by_w, 0, s_hash(0), p);
         for (int s = 1; s < spp; ++s) take_sample<Vector, Root, false>(row, grid, by_n, by_w, s, s_hash(s), p);
-        put_sampled(p, spp, j, hi - j < width ? hi - j : width, out, counts, I_P, branches);
+        const int n = hi - j < width ? hi - j : width;
+        Mask kept{};
+        for (int k = 0; k < n; ++k) kept[k] = -1;
+        put_sampled(p, spp, j, n, kept, out, tally, I_P, branches);
     }
+    int miss = 0, dark = 0, non_finite = 0;
+    for (int k = 0; k < width; ++k) {
+        miss += static_cast<int>(tally.miss[k]);
+        dark += static_cast<int>(tally.dark[k]);
+        non_finite += static_cast<int>(tally.non_finite[k]);
+        counts.disagreeing += static_cast<int>(tally.disagreeing[k]);
+    }
+    counts.branches[static_cast<int>(Branch::miss)] = miss;
+    counts.branches[static_cast<int>(Branch::dark)] = dark;
+    counts.branches[static_cast<int>(Branch::non_finite)] = non_finite;
+    counts.branches[static_cast<int>(Branch::lit)] = (hi - lo) - miss - dark - non_finite;
+    counts.first_non_finite_j = tally.first_non_finite_j;
     return counts;
 }
 
