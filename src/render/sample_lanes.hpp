@@ -65,10 +65,11 @@ struct SampleRow {
           rr(row.rr), SS_rr(row.SS_rr) {}
 };
 
-// x * (1/d) in place of x / d where d is a power of two (Exact): both are
-// the correctly rounded x / d, as the quotients here (of 0 or numbers from
-// 2^-60 to 2^31 by d <= 2^30) neither overflow nor fall below the normal
-// range. Chosen once a row, so the sample loop has no branch on it.
+// x * (1/d) in place of x / d where d is a power of two (Exact): 1/d is
+// exact, so both are the correctly rounded value of the same exact x / d,
+// the same bits (subnormal results too: IEEE rounds both the same way; the
+// product cannot overflow, and a NaN or infinity stays what it was).
+// Chosen once a row, so the sample loop has no branch on it.
 PROMYK_LANES_INLINE bool power_of_two(int n) { return n > 0 && (n & (n - 1)) == 0; }
 template <class Vector, bool Exact>
 struct Divisor {
@@ -145,12 +146,13 @@ struct RowTally {
 // levels into out, their branches into the tally (and, for the tests, I_P
 // and branches). A pixel's branch is its centre sample's, or non-finite when
 // its mean is; its samples agree when each branch took none or all of them.
-template <class Vector>
-PROMYK_LANES_INLINE void put_sampled(const SampledLanes<Vector>& p, int spp, int j, int n, MaskOf<Vector> kept,
-                                     std::uint8_t* out, RowTally<Vector>& tally, double* I_P, std::uint8_t* branches) {
+template <class Vector, class Div>
+PROMYK_LANES_INLINE void put_sampled(const SampledLanes<Vector>& p, int spp, const Div& by_spp, int j, int n,
+                                     MaskOf<Vector> kept, std::uint8_t* out, RowTally<Vector>& tally, double* I_P,
+                                     std::uint8_t* branches) {
     using Mask = MaskOf<Vector>;
     constexpr int width = LaneTraits<Vector>::width;
-    const Vector mean = p.sum / double(spp);
+    const Vector mean = by_spp.divide(p.sum);  // sum / spp
     put_grey_levels(mean, out + j, n);
     const Mask lit = spp - p.miss - p.dark - p.non_finite;  // samples lit
     const auto one_branch = [spp](Mask c) __attribute__((always_inline)) { return (c == 0) | (c == spp); };
@@ -185,7 +187,7 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, co
     constexpr int width = LaneTraits<Vector>::width;
     using U = typename SampleInts<Vector>::U;
     using Mask = MaskOf<Vector>;
-    const Divisor<Vector, Exact> by_n(grid.n), by_w(grid.w);
+    const Divisor<Vector, Exact> by_n(grid.n), by_w(grid.w), by_spp(grid.spp);  // spp = n^2
     RowTally<Vector> tally;
     const auto s_hash = [](int s) __attribute__((always_inline)) {
         return mix32_lanes(static_cast<std::uint32_t>(s) + hash_s);
@@ -211,8 +213,8 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, co
             take_sample<Vector, Root, false>(row, grid, by_n, by_w, s, h, p0);
             take_sample<Vector, Root, false>(row, grid, by_n, by_w, s, h, p1);
         }
-        put_sampled(p0, spp, j, width, ~Mask{}, out, tally, I_P, branches);
-        put_sampled(p1, spp, j + width, width, ~Mask{}, out, tally, I_P, branches);
+        put_sampled(p0, spp, by_spp, j, width, ~Mask{}, out, tally, I_P, branches);
+        put_sampled(p1, spp, by_spp, j + width, width, ~Mask{}, out, tally, I_P, branches);
     }
     for (; j < hi; j += width) {  // the last vector's lanes past hi are computed and dropped
         SampledLanes<Vector> p = pixels(j);
@@ -221,7 +223,7 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, co
         const int n = hi - j < width ? hi - j : width;
         Mask kept{};
         for (int k = 0; k < n; ++k) kept[k] = -1;
-        put_sampled(p, spp, j, n, kept, out, tally, I_P, branches);
+        put_sampled(p, spp, by_spp, j, n, kept, out, tally, I_P, branches);
     }
     int miss = 0, dark = 0, non_finite = 0;
     for (int k = 0; k < width; ++k) {
