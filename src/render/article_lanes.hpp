@@ -52,7 +52,8 @@ struct ArticleRoot {
     Lane EE, C, delta;
     Mask miss;  // delta <= 0; -inf and NaN decide nothing and go on
 
-    PROMYK_LANES_INLINE ArticleRoot(const ArticleRow<Real>& row, Lane x_E, Lane EE_, Lane C_) : EE(EE_), C(C_) {
+    template <class Row>
+    PROMYK_LANES_INLINE ArticleRoot(const Row& row, Lane x_E, Lane EE_, Lane C_) : EE(EE_), C(C_) {
         (void)x_E;
         delta = C * C - EE * row.SS_rr;
         miss = both(delta <= Real(0), delta >= std::numeric_limits<Real>::lowest());
@@ -97,7 +98,8 @@ struct StableRoot {
     Real c_0;
     Mask miss;
 
-    PROMYK_LANES_INLINE StableRoot(const ArticleRow<Real>& row, Lane x_E, Lane EE_, Lane C_)
+    template <class Row>
+    PROMYK_LANES_INLINE StableRoot(const Row& row, Lane x_E, Lane EE_, Lane C_)
         : EE(EE_), C(C_), c_0(row.SS_rr) {
         (void)x_E;
         delta = C * C - EE * c_0;
@@ -118,7 +120,8 @@ struct GeometricRoot {
     Real c_0;
     Mask miss;
 
-    PROMYK_LANES_INLINE GeometricRoot(const ArticleRow<Real>& row, Lane x_E, Lane EE_, Lane C_)
+    template <class Row>
+    PROMYK_LANES_INLINE GeometricRoot(const Row& row, Lane x_E, Lane EE_, Lane C_)
         : EE(EE_), C(C_), c_0(row.SS_rr) {
         const Vec3<Real>& S = row.world.S;
         const Lane t_mid = C / EE;
@@ -159,8 +162,12 @@ struct LanePixel {
 };
 
 // Pixels E = (x_E, y_E, z_E), one a lane, of the row, with the formula Root.
-template <template <class> class Root = ArticleRoot, class Lane, class Real = typename LaneTraits<Lane>::Real>
-PROMYK_LANES_INLINE LanePixel<Lane> article_lanes(const ArticleRow<Real>& row, Lane x_E) {
+// The row is an ArticleRow (y_E one number) or any type with its members,
+// where y_E, yy and ySy may be lanes too (render/sample_lanes.hpp: each lane
+// a sample, at its own height).
+template <template <class> class Root = ArticleRoot, class Lane, class Row,
+          class Real = typename LaneTraits<Lane>::Real>
+PROMYK_LANES_INLINE LanePixel<Lane> article_lanes(const Row& row, Lane x_E) {
     const ArticleWorld<Real>& world = row.world;
     using Mask = MaskOf<Lane>;
     LanePixel<Lane> pixel;

@@ -7,6 +7,7 @@
 #include "render/article_row.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <vector>
 
@@ -17,6 +18,9 @@
 #include "render/isa.hpp"
 #include "render/pane_columns.hpp"
 #include "render/renderer.hpp"
+#include "render/sample_lanes.hpp"
+#include "render/sample_lanes_isa.hpp"
+#include "render/sample_lanes_span.hpp"
 #include "render/silhouette.hpp"
 #include "render/skipping.hpp"
 
@@ -249,6 +253,54 @@ RowCounts one_pixel_row(const ArticleWorld<double>& world, int w, int i, std::ui
 }
 
 }  // namespace
+
+bool sampled_row_in_lanes(const ArticleWorld<double>& world, int w, int i, int spp, std::uint8_t* out, Formula formula,
+                          RowCounts& counts, double* I_P, std::uint8_t* branches) {
+#if defined(PROMYK_ISA_KERNELS)
+    if (!has_lanes(formula) || spp <= 1) return false;
+    // A skipped pixel: spp misses, each the background, summed in sample
+    // order as sample_pixel sums them (not always the background itself).
+    double background = world.background;
+    for (int s = 1; s < spp; ++s) background = background + world.background;
+    background = background / spp;
+    // Only the columns whose samples may meet the sphere are computed; the
+    // others are proven misses (render/sample_lanes_span.hpp).
+    const RowSpan span = background_skipping() && std::isfinite(background)
+                             ? sampled_row_hit_span(world, w, i, formula)
+                             : RowSpan{0, w};
+    // y_E is each sample's own: the row's is not used.
+    const lanes::ArticleRow<double> row(world, pane_y<double>(i, w));
+    switch (article_isa()) {
+        case Isa::avx512:
+            counts = lanes::avx512::draw_sampled_article_row(row, w, i, spp, span.lo, span.hi, out, I_P, branches,
+                                                             formula);
+            break;
+        case Isa::avx2:
+            counts = lanes::avx2::draw_sampled_article_row(row, w, i, spp, span.lo, span.hi, out, I_P, branches,
+                                                           formula);
+            break;
+        default:
+            counts = lanes::draw_sampled_row<lanes::Double2>(row, w, i, spp, span.lo, span.hi, out, I_P, branches,
+                                                             formula);
+    }
+    const int skipped = w - (span.hi - span.lo);
+    const std::uint8_t grey = to_byte(background);
+    std::memset(out, grey, static_cast<std::size_t>(span.lo));
+    std::memset(out + span.hi, grey, static_cast<std::size_t>(w - span.hi));
+    for (int j = 0; j < w; ++j) {
+        if (j == span.lo) j = span.hi;
+        if (j >= w) break;
+        if (I_P) I_P[j] = background;
+        if (branches) branches[j] = static_cast<std::uint8_t>(Branch::miss);
+    }
+    counts.skipped = skipped;
+    counts.branches[static_cast<int>(Branch::miss)] += skipped;
+    return true;
+#else
+    (void)world, (void)w, (void)i, (void)spp, (void)out, (void)formula, (void)counts, (void)I_P, (void)branches;
+    return false;
+#endif
+}
 
 RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out) {
     return render_row(world, w, i, out, Formula::article);

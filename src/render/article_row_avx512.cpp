@@ -4,6 +4,8 @@
 // First: it opens the inline namespace the declarations below extend.
 #include "render/article_row_lanes.hpp"
 #include "render/article_row_isa.hpp"
+#include "render/sample_lanes.hpp"
+#include "render/sample_lanes_isa.hpp"
 
 namespace promyk::lanes {
 inline namespace avx512 {  // inline, as lanes.hpp opened it in this file
@@ -16,6 +18,12 @@ RowCounts draw_article_row(const ArticleRow<double>& row, const double* x_E, int
 void article_row_intensities(const ArticleRow<double>& row, const double* x_E, int w, double* I_P,
                              std::uint8_t* branches, Formula formula) {
     row_intensities<Double8>(row, x_E, w, I_P, branches, formula);
+}
+
+RowCounts draw_sampled_article_row(const ArticleRow<double>& row, int w, int i, int spp, int lo, int hi,
+                                   std::uint8_t* out,
+                                   double* I_P, std::uint8_t* branches, Formula formula) {
+    return draw_sampled_row<Double8>(row, w, i, spp, lo, hi, out, I_P, branches, formula);
 }
 
 }  // namespace avx512

@@ -198,8 +198,12 @@ private:
     }
 
     RowCounts sampled_row(int w, int i, std::uint8_t* out) const {
-        NullRecorder none;
         RowCounts counts;
+        if constexpr (in_lanes) {
+            // The samples in lanes (render/sample_lanes.hpp), the same bits.
+            if (sampled_row_in_lanes(world_, w, i, spp(), out, F::id, counts)) return counts;
+        }
+        NullRecorder none;
         counts.sphere_tests = static_cast<long long>(w) * spp();
         for (int j = 0; j < w; ++j) {
             const SampledPixel<Real> pixel = sampled(w, i, j, none, IgnoreSample{});

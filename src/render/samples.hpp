@@ -30,11 +30,15 @@ struct SampleOffset {
 // A well-mixed 32-bit integer hash (the "lowbias32" of Chris Wellons's hash
 // prospector): every input bit affects every output bit. Inline, with the
 // offsets below: rendering computes them for every sample.
+// Its constants, and sample_hash's, are named for the lanes' copy
+// (render/sample_lanes.hpp), which must compute the same integers.
+inline constexpr std::uint32_t mix32_k1 = 0x7feb352dU, mix32_k2 = 0x846ca68bU;
+inline constexpr std::uint32_t hash_i = 0x9e3779b1U, hash_j = 0x85ebca6bU, hash_s = 0x632be5abU;
 inline std::uint32_t mix32(std::uint32_t x) {
     x ^= x >> 16;
-    x *= 0x7feb352dU;
+    x *= mix32_k1;
     x ^= x >> 15;
-    x *= 0x846ca68bU;
+    x *= mix32_k2;
     x ^= x >> 16;
     return x;
 }
@@ -43,7 +47,7 @@ inline std::uint32_t mix32(std::uint32_t x) {
 // constants keep (0, 0, 0) from hashing to 0 (mix32(0) is 0).
 inline std::uint32_t sample_hash(int i, int j, int s) {
     const auto u32 = [](int x) { return static_cast<std::uint32_t>(x); };
-    return mix32(u32(i) * 0x9e3779b1U ^ mix32(u32(j) * 0x85ebca6bU ^ mix32(u32(s) + 0x632be5abU)));
+    return mix32(u32(i) * hash_i ^ mix32(u32(j) * hash_j ^ mix32(u32(s) + hash_s)));
 }
 
 // Sample s of pixel (i, j) on an n x n grid (n = spp_side(spp) > 1): cell

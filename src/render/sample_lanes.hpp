@@ -1,0 +1,264 @@
+// A row drawn from spp > 1 samples a pixel (render/samples.hpp), in lanes:
+// each lane one pixel, the vector's pixels side by side, all taking sample s
+// at once, s = 0 .. spp - 1 in order. Each lane then sums its pixel's
+// intensities in sample order, counts its branches and keeps its centre
+// sample's, as render/sampling.hpp's sample_pixel does, and the sample's
+// point is computed by the same operations as sample_point, so every pixel
+// has the one-pixel path's bits (tests/sample_lanes_test.cpp). Included by
+// one translation unit per instruction set, like render/article_row_lanes.hpp;
+// calls nothing that is not inlined.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+
+#include "render/article_lanes.hpp"
+#include "render/article_row_lanes.hpp"
+#include "render/kernel.hpp"
+#include "render/samples.hpp"
+
+namespace promyk::lanes {
+inline namespace PROMYK_LANES_ISA {
+
+// A vector's lanes as unsigned 32-bit integers (the hash) and as signed
+// ones (to convert the jitter to double: it is below 2^16).
+template <class Vector>
+struct SampleInts;
+template <>
+struct SampleInts<Double2> {
+    typedef std::uint32_t U __attribute__((vector_size(8)));
+    typedef std::int32_t I __attribute__((vector_size(8)));
+};
+template <>
+struct SampleInts<Double4> {
+    typedef std::uint32_t U __attribute__((vector_size(16)));
+    typedef std::int32_t I __attribute__((vector_size(16)));
+};
+template <>
+struct SampleInts<Double8> {
+    typedef std::uint32_t U __attribute__((vector_size(32)));
+    typedef std::int32_t I __attribute__((vector_size(32)));
+};
+
+// render/samples.hpp's mix32, on one integer or on lanes (its own copy:
+// the shared inline one must not be compiled here).
+template <class U>
+PROMYK_LANES_INLINE U mix32_lanes(U x) {
+    x ^= x >> 16;
+    x *= mix32_k1;
+    x ^= x >> 15;
+    x *= mix32_k2;
+    x ^= x >> 16;
+    return x;
+}
+
+// ArticleRow with the sample's height in each lane: y_E and the products
+// with it are lanes, the rest the row's (the same products, the same bits).
+template <class Lane>
+struct SampleRow {
+    using Real = typename LaneTraits<Lane>::Real;
+    const ArticleWorld<Real>& world;
+    Lane y_E, yy, ySy;
+    Real zz, zSz, SS, rr, SS_rr;
+    PROMYK_LANES_INLINE SampleRow(const ArticleRow<Real>& row, Lane y)
+        : world(row.world), y_E(y), yy(y * y), ySy(y * row.world.S.y), zz(row.zz), zSz(row.zSz), SS(row.SS),
+          rr(row.rr), SS_rr(row.SS_rr) {}
+};
+
+// x * (1/d) in place of x / d where d is a power of two (Exact): 1/d is
+// exact, so both are the correctly rounded value of the same exact x / d,
+// the same bits (subnormal results too: IEEE rounds both the same way; the
+// product cannot overflow, and a NaN or infinity stays what it was).
+// Chosen once a row, so the sample loop has no branch on it.
+PROMYK_LANES_INLINE bool power_of_two(int n) { return n > 0 && (n & (n - 1)) == 0; }
+template <class Vector, bool Exact>
+struct Divisor {
+    double d, reciprocal;
+    explicit Divisor(int n) : d(n), reciprocal(1.0 / n) {}
+    PROMYK_LANES_INLINE Vector divide(Vector x) const {
+        if constexpr (Exact) return x * reciprocal;
+        else return x / d;
+    }
+};
+
+// The pixels of one vector: their sums, branch counts and centre samples.
+template <class Vector>
+struct SampledLanes {
+    using Mask = MaskOf<Vector>;
+    using U = typename SampleInts<Vector>::U;
+    Vector x0;  // 2 j + 1, each lane's pixel
+    U j_hash;   // j hash_j
+    Vector sum{}, nearest{};
+    Mask miss{}, dark{}, non_finite{};                      // samples per branch (-1 a sample)
+    Mask centre_miss{}, centre_dark{}, centre_non_finite{};  // the centre sample's branch
+};
+
+// The row's numbers that do not change from sample to sample.
+struct SampleGrid {
+    int i, w, spp, n;
+    double y0;  // 2 i + 1
+    std::uint32_t i_hash;
+};
+
+// Sample s of the vector's pixels: its point as sample_point computes it,
+// traced with the formula Root, and taken into the pixels' sums and counts.
+template <class Vector, template <class> class Root, bool First, class Div>
+PROMYK_LANES_INLINE void take_sample(const ArticleRow<double>& row, const SampleGrid& grid, const Div& by_n,
+                                     const Div& by_w, int s,
+                                     std::uint32_t s_hash, SampledLanes<Vector>& p) {
+    using Mask = MaskOf<Vector>;
+    using I = typename SampleInts<Vector>::I;
+    // sample_offset_on: the hash's 16 bits of jitter along each axis.
+    const auto h = mix32_lanes(grid.i_hash ^ mix32_lanes(p.j_hash ^ s_hash));
+    const Vector jitter_u = __builtin_convertvector(reinterpret_cast<I>(h & 0xffffU), Vector) / 65536.0;
+    const Vector jitter_v = __builtin_convertvector(reinterpret_cast<I>(h >> 16), Vector) / 65536.0;
+    const Vector u = by_n.divide(double(s % grid.n) + jitter_u) - 0.5;
+    const Vector v = by_n.divide(double(s / grid.n) + jitter_v) - 0.5;
+    // sample_point.
+    const Vector x = by_w.divide(p.x0 + 2.0 * u) - 1.0;
+    const Vector y = by_w.divide(-(grid.y0 + 2.0 * v)) + 1.0;
+    const LanePixel<Vector> pixel = article_lanes<Root>(SampleRow<Vector>(row, y), x);
+    if constexpr (First) p.sum = pixel.I_P;  // not 0 + I_P: that would make a -0 +0
+    else p.sum = p.sum + pixel.I_P;
+    p.miss -= pixel.miss;
+    p.dark -= pixel.dark;
+    p.non_finite -= pixel.non_finite;
+    const Vector d = u * u + v * v;
+    Mask nearer;
+    if constexpr (First) nearer = ~Mask{};  // d < INFINITY: d is finite
+    else nearer = d < p.nearest;
+    p.nearest = select(nearer, d, p.nearest);
+    p.centre_miss = (pixel.miss & nearer) | (p.centre_miss & ~nearer);
+    p.centre_dark = (pixel.dark & nearer) | (p.centre_dark & ~nearer);
+    p.centre_non_finite = (pixel.non_finite & nearer) | (p.centre_non_finite & ~nearer);
+}
+
+// The row's pixels by branch, and those whose samples disagree, counted lane
+// by lane (a mask is -1 where true) and summed once at the row's end.
+template <class Vector>
+struct RowTally {
+    using Mask = MaskOf<Vector>;
+    Mask miss{}, dark{}, non_finite{}, disagreeing{};
+    int first_non_finite_j = -1;
+};
+
+// The vector's first n pixels (kept: their lanes), from column j: their grey
+// levels into out, their branches into the tally (and, for the tests, I_P
+// and branches). A pixel's branch is its centre sample's, or non-finite when
+// its mean is; its samples agree when each branch took none or all of them.
+template <class Vector, class Div>
+PROMYK_LANES_INLINE void put_sampled(const SampledLanes<Vector>& p, int spp, const Div& by_spp, int j, int n,
+                                     MaskOf<Vector> kept, std::uint8_t* out, RowTally<Vector>& tally, double* I_P,
+                                     std::uint8_t* branches) {
+    using Mask = MaskOf<Vector>;
+    constexpr int width = LaneTraits<Vector>::width;
+    const Vector mean = by_spp.divide(p.sum);  // sum / spp
+    put_grey_levels(mean, out + j, n);
+    const Mask lit = spp - p.miss - p.dark - p.non_finite;  // samples lit
+    const auto one_branch = [spp](Mask c) __attribute__((always_inline)) { return (c == 0) | (c == spp); };
+    const Mask agree = one_branch(p.miss) & one_branch(p.dark) & one_branch(p.non_finite) & one_branch(lit);
+    tally.disagreeing -= ~agree & kept;
+    const Mask finite = mean * 0.0 == 0.0;  // finite_value
+    const Mask non_finite = (~finite | p.centre_non_finite) & kept;
+    tally.miss -= finite & p.centre_miss & kept;
+    tally.dark -= finite & p.centre_dark & kept;
+    tally.non_finite -= non_finite;
+    if (tally.first_non_finite_j < 0 && any(non_finite))  // rare
+        for (int k = width - 1; k >= 0; --k)
+            if (non_finite[k]) tally.first_non_finite_j = j + k;
+    if (I_P || branches) {
+        for (int k = 0; k < n; ++k) {
+            const Branch branch = non_finite[k]       ? Branch::non_finite
+                                  : p.centre_miss[k] ? Branch::miss
+                                  : p.centre_dark[k] ? Branch::dark
+                                                     : Branch::lit;
+            if (I_P) I_P[j + k] = mean[k];
+            if (branches) branches[j + k] = static_cast<std::uint8_t>(branch);
+        }
+    }
+}
+
+// Row grid.i into out[0 .. w) from grid.spp samples a pixel, with the
+// formula Root: two vectors of pixels in flight (two independent chains of
+// square roots and divisions), then one for the rest.
+template <class Vector, template <class> class Root, bool Exact>
+PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, const SampleGrid& grid, int lo, int hi,
+                                               std::uint8_t* out, double* I_P, std::uint8_t* branches) {
+    constexpr int width = LaneTraits<Vector>::width;
+    using U = typename SampleInts<Vector>::U;
+    using Mask = MaskOf<Vector>;
+    const Divisor<Vector, Exact> by_n(grid.n), by_w(grid.w), by_spp(grid.spp);  // spp = n^2
+    RowTally<Vector> tally;
+    const auto s_hash = [](int s) __attribute__((always_inline)) {
+        return mix32_lanes(static_cast<std::uint32_t>(s) + hash_s);
+    };
+    const int w = grid.w, spp = grid.spp;
+    RowCounts counts;
+    counts.sphere_tests = static_cast<long long>(hi - lo) * spp;
+    const auto pixels = [&](int j) __attribute__((always_inline)) {
+        SampledLanes<Vector> p;
+        U j_lanes;
+        for (int k = 0; k < width; ++k) j_lanes[k] = static_cast<std::uint32_t>(j + k), p.x0[k] = 2.0 * (j + k) + 1.0;
+        p.j_hash = j_lanes * hash_j;
+        return p;
+    };
+    (void)w;
+    int j = lo;
+    for (; j + 2 * width <= hi; j += 2 * width) {
+        SampledLanes<Vector> p0 = pixels(j), p1 = pixels(j + width);
+        take_sample<Vector, Root, true>(row, grid, by_n, by_w, 0, s_hash(0), p0);
+        take_sample<Vector, Root, true>(row, grid, by_n, by_w, 0, s_hash(0), p1);
+        for (int s = 1; s < spp; ++s) {
+            const std::uint32_t h = s_hash(s);
+            take_sample<Vector, Root, false>(row, grid, by_n, by_w, s, h, p0);
+            take_sample<Vector, Root, false>(row, grid, by_n, by_w, s, h, p1);
+        }
+        put_sampled(p0, spp, by_spp, j, width, ~Mask{}, out, tally, I_P, branches);
+        put_sampled(p1, spp, by_spp, j + width, width, ~Mask{}, out, tally, I_P, branches);
+    }
+    for (; j < hi; j += width) {  // the last vector's lanes past hi are computed and dropped
+        SampledLanes<Vector> p = pixels(j);
+        take_sample<Vector, Root, true>(row, grid, by_n, by_w, 0, s_hash(0), p);
+        for (int s = 1; s < spp; ++s) take_sample<Vector, Root, false>(row, grid, by_n, by_w, s, s_hash(s), p);
+        const int n = hi - j < width ? hi - j : width;
+        Mask kept{};
+        for (int k = 0; k < n; ++k) kept[k] = -1;
+        put_sampled(p, spp, by_spp, j, n, kept, out, tally, I_P, branches);
+    }
+    int miss = 0, dark = 0, non_finite = 0;
+    for (int k = 0; k < width; ++k) {
+        miss += static_cast<int>(tally.miss[k]);
+        dark += static_cast<int>(tally.dark[k]);
+        non_finite += static_cast<int>(tally.non_finite[k]);
+        counts.disagreeing += static_cast<int>(tally.disagreeing[k]);
+    }
+    counts.branches[static_cast<int>(Branch::miss)] = miss;
+    counts.branches[static_cast<int>(Branch::dark)] = dark;
+    counts.branches[static_cast<int>(Branch::non_finite)] = non_finite;
+    counts.branches[static_cast<int>(Branch::lit)] = (hi - lo) - miss - dark - non_finite;
+    counts.first_non_finite_j = tally.first_non_finite_j;
+    return counts;
+}
+
+// Columns [lo, hi) of row i of a w-pixel pane, spp > 1 samples a pixel, the
+// formula chosen at run time (once a row).
+template <class Vector>
+PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, int w, int i, int spp, int lo, int hi,
+                                               std::uint8_t* out, double* I_P, std::uint8_t* branches,
+                                               Formula formula) {
+    SampleGrid grid;
+    grid.i = i, grid.w = w, grid.spp = spp;
+    grid.n = 1;
+    while ((grid.n + 1) * (grid.n + 1) <= spp) ++grid.n;  // spp_side (not compiled here)
+    grid.y0 = 2.0 * i + 1.0;
+    grid.i_hash = static_cast<std::uint32_t>(i) * hash_i;
+    const bool exact = power_of_two(grid.n) && power_of_two(w);
+    return with_root(formula, [&](auto root) {
+        using R = decltype(root);
+        return exact ? draw_sampled_row<Vector, R::template Root, true>(row, grid, lo, hi, out, I_P, branches)
+                     : draw_sampled_row<Vector, R::template Root, false>(row, grid, lo, hi, out, I_P, branches);
+    });
+}
+
+}  // namespace PROMYK_LANES_ISA
+}  // namespace promyk::lanes
