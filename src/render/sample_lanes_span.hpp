@@ -32,7 +32,7 @@ inline RowSpan sampled_row_hit_span(const ArticleWorld<double>& world, int w, in
     using namespace silhouette_detail;
     const RowSpan all{0, w};
     const double u = std::numeric_limits<double>::epsilon() / 2;
-    const double xS = world.S.x, yS = world.S.y, zS = world.S.z, z = world.z_E;
+    const double xS = world.S.x, yS = world.S.y, zS = world.S.z;
     const double rr = world.r * world.r;
     // Concave in (x, y): r² < z_S², with room for the two roundings.
     if (!(rr < zS * zS * (1 - 1e-6)) || !(w >= 1)) return all;
