@@ -81,7 +81,8 @@ public:
     // in_place: the sink's image memory (RenderSink::image_memory), or null.
     RowPipeline(const Kernel& kernel, const TraceHeader& header, const PixelSelection& traced, int rows_per_band,
                 std::uint8_t* in_place)
-        : kernel_(kernel), header_(header), traced_(traced), rows_per_band_(rows_per_band), in_place_(in_place) {
+        : kernel_(kernel), header_(header), traced_(traced), rows_per_band_(rows_per_band),
+          rows_a_claim_(rows_a_claim(header.w, !traced.empty())), in_place_(in_place) {
         const int w = header.w;
         bands_total_ = (w + rows_per_band - 1) / rows_per_band;
         for (int b = 0; b < ring_size; ++b) {
@@ -105,10 +106,15 @@ public:
     void help() noexcept {
         try {
             for (;;) {
-                const int i = next_row_.fetch_add(1);
-                if (i >= header_.w || stopped()) return;
+                int i = next_row_.load(std::memory_order_relaxed);
+                int n = 0;
+                do {
+                    if (i >= header_.w) return;
+                    n = claimable(i, header_.w);
+                } while (!next_row_.compare_exchange_weak(i, i + n));
+                if (stopped()) return;
                 if (!wait_for_band_buffer(i / rows_per_band_)) return;
-                draw(i);
+                draw(i, n);
             }
         } catch (...) {
             fail();
@@ -124,9 +130,10 @@ public:
             if (stopped()) return false;
             int i = next_row_.load();
             const int free_rows = std::min(header_.w, (delivered_.load() + ring_size) * rows_per_band_);
-            if (i < free_rows && next_row_.compare_exchange_weak(i, i + 1)) {
+            int n = i < free_rows ? claimable(i, free_rows) : 0;
+            if (n > 0 && next_row_.compare_exchange_weak(i, i + n)) {
                 try {
-                    draw(i);
+                    draw(i, n);
                 } catch (...) {
                     fail();
                 }
@@ -201,23 +208,50 @@ private:
         return !stopped();
     }
 
-    void draw(int i) {
+    // Rows a thread claims at once: each claim and each count is an atomic
+    // the threads share (a cache line passed from core to core), which cost
+    // a row of background about as much as drawing it; a few rows a claim,
+    // about 16,000 pixels, pay it once (two threads: 0.88 to 0.90 of the
+    // cores' sum before, bench speed). One when tracing: a traced row is
+    // long work of its own.
+    static int rows_a_claim(int w, bool tracing) {
+        return tracing ? 1 : std::max(1, std::min(8, (1 << 14) / std::max(1, w)));
+    }
+
+    // How many rows from row i one claim takes: at most rows_a_claim_, none
+    // at or past `end`, all in row i's band (a band is counted whole).
+    int claimable(int i, int end) const {
+        const int band_end = (i / rows_per_band_ + 1) * rows_per_band_;
+        return std::min({rows_a_claim_, end - i, band_end - i});
+    }
+
+    // Rows first .. first + n - 1, all in one band; a signal is heeded
+    // between them.
+    void draw(int first, int n) {
+        Band& into = band(first / rows_per_band_);
+        int drawn = 0;
+        for (; drawn < n; ++drawn) {
+            if (drawn > 0 && stopped()) break;
+            draw_row(first + drawn, into);
+        }
+        rows_done_.fetch_add(drawn, std::memory_order_relaxed);
+        // Read before the rows are counted: once the band is complete, the
+        // calling thread may deliver it and start the buffer's next band.
+        const int count = into.count;
+        if (into.rows_done.fetch_add(drawn, std::memory_order_acq_rel) + drawn == count) {
+            { const std::lock_guard<std::mutex> lock(mutex_); }  // the waiter is waiting or sees the count
+            band_drawn_.notify_all();
+        }
+    }
+
+    void draw_row(int i, Band& into) {
         const int w = header_.w;
-        Band& into = band(i / rows_per_band_);
         const int k = i - into.first_row;
         const std::size_t row_bytes = static_cast<std::size_t>(w) * kernel_.channels();
         std::uint8_t* out = in_place_ != nullptr ? in_place_ + static_cast<std::size_t>(i) * row_bytes
                                                  : into.pixels.get() + static_cast<std::size_t>(k) * row_bytes;
         into.counts[k] = kernel_.row(w, i, out);
         if (traced_.row_has_any(i)) trace_row(kernel_, header_, traced_, i, into.traces[k]);
-        rows_done_.fetch_add(1, std::memory_order_relaxed);
-        // Read before the row is counted: once the band is complete, the
-        // calling thread may deliver it and start the buffer's next band.
-        const int count = into.count;
-        if (into.rows_done.fetch_add(1, std::memory_order_acq_rel) + 1 == count) {
-            { const std::lock_guard<std::mutex> lock(mutex_); }  // the waiter is waiting or sees the count
-            band_drawn_.notify_all();
-        }
     }
 
     void fail() noexcept {
@@ -232,6 +266,7 @@ private:
     const TraceHeader& header_;
     const PixelSelection& traced_;
     const int rows_per_band_;
+    const int rows_a_claim_;
     std::uint8_t* const in_place_;  // rows drawn straight into the sink's image, or null
     int bands_total_ = 0;
     Band ring_[ring_size];
