@@ -66,6 +66,29 @@ struct ArticleRoot {
     }
 };
 
+// Lanes where the computed t_c = c_0 / q is finite, > 0 and below the
+// computed q / |E|^2, which is finite too, proven without dividing. With
+// u the unit roundoff and every value normal: t_c <= (c_0 / q)(1 + u) and
+// q / |E|^2 rounds to at least (q / |E|^2)(1 - u), so c_0 |E|^2 (1 + u) <
+// q^2 (1 - u) is enough; the products are computed within (1 + u), and the
+// test c_0 |E|^2 < q^2 (1 - 2^-40) (2^-11 in float) leaves more than the
+// 5u those roundings need. t_c >= 2 * the least normal keeps both quotients
+// normal (q / |E|^2 exceeds c_0 / q); q < |E|^2 2^1018 (2^122 in float),
+// a product that is exact or infinite, keeps q / |E|^2 finite. tests/article_lanes_test.cpp
+// and the hard cases compare every pixel with the traced path.
+template <class Lane, class Real = typename LaneTraits<Lane>::Real>
+PROMYK_LANES_INLINE MaskOf<Lane> nearer_root_proven(Lane q, Lane t_c, Real c_0, Lane EE) {
+    using limits = std::numeric_limits<Real>;
+    constexpr Real below_one = Real(1) - limits::epsilon() * Real(4096);  // 1 - 2^-40 in double, 1 - 2^-11 in float
+    constexpr Real least = Real(2) * limits::min();
+    constexpr Real huge = Real(1) / (limits::min() * Real(16));  // 2^1018 in double, 2^122 in float
+    const Lane c0_EE = c_0 * EE, qq = q * q;
+    const MaskOf<Lane> ordered = both(c0_EE >= limits::min(), c0_EE < (qq * below_one));
+    const MaskOf<Lane> t_c_fine = both(t_c >= least, t_c <= limits::max());
+    const MaskOf<Lane> t_q_finite = both(qq <= limits::max(), both(q > Real(0), q < EE * huge));
+    return both(ordered, both(t_c_fine, t_q_finite));
+}
+
 // The stable and geometric formulas' roots q / |E|^2 and c_0 / q, with
 // q = C + sign(C) root_term, and the engine's choice between them
 // (geometry/sphere_stable.hpp's cancellation_free_roots and sphere.hpp's
@@ -75,8 +98,13 @@ template <class Lane, class Real = typename LaneTraits<Lane>::Real>
 PROMYK_LANES_INLINE Lane cancellation_free_root(Lane C, Lane root_term, Real c_0, Lane EE, MaskOf<Lane>& missed) {
     using Mask = MaskOf<Lane>;
     const Lane q = select(C >= Real(0), C + root_term, C - root_term);
-    const Lane t_q = q / EE;
     const Lane t_c = c_0 / q;
+    // Where every lane's c_0 / q is proven the nearer root and ahead of the
+    // eye (or the lane missed already), the choice below would take it:
+    // q / |E|^2, a second division, is not needed (nearer_root_proven).
+    if constexpr (LaneTraits<Lane>::width > 1)
+        if (c_0 > Real(0) && all(either(missed, nearer_root_proven(q, t_c, c_0, EE)))) return t_c;
+    const Lane t_q = q / EE;
     const Mask finite_q = t_q * Real(0) == Real(0), finite_c = t_c * Real(0) == Real(0);
     const Mask finite = both(finite_q, finite_c);
     const Mask q_first = t_q < t_c;
