@@ -19,7 +19,6 @@
 #include "render/pane_columns.hpp"
 #include "render/renderer.hpp"
 #include "render/sample_lanes.hpp"
-#include "render/sample_lanes_isa.hpp"
 #include "render/sample_lanes_span.hpp"
 #include "render/silhouette.hpp"
 #include "render/skipping.hpp"

@@ -5,7 +5,6 @@
 #include "render/article_row_lanes.hpp"
 #include "render/article_row_isa.hpp"
 #include "render/sample_lanes.hpp"
-#include "render/sample_lanes_isa.hpp"
 
 namespace promyk::lanes {
 inline namespace avx2 {  // inline, as lanes.hpp opened it in this file

@@ -1,7 +1,9 @@
 // The article's drawn rows compiled for each wider instruction set
 // (render/article_row_lanes.hpp in render/article_row_avx2.cpp and
-// ..._avx512.cpp); render_row (render/article_row.cpp) calls the one
-// render/isa.hpp chose. Declared in each set's own namespace, which is
+// ..._avx512.cpp; sampled rows, render/sample_lanes.hpp, there too; float
+// rows in render/float_row_avx2.cpp and ..._avx512.cpp); render_row and
+// sampled_row_in_lanes (render/article_row.cpp) and float_row_in_lanes
+// (render/float_row.cpp) call the one render/isa.hpp chose. Declared in each set's own namespace, which is
 // part of every symbol those files define.
 #pragma once
 
@@ -30,12 +32,24 @@ RowCounts draw_article_row(const ArticleRow<double>& row, const double* x_E, int
                            Formula formula);
 void article_row_intensities(const ArticleRow<double>& row, const double* x_E, int w, double* I_P,
                              std::uint8_t* branches, Formula formula);
+// Columns [lo, hi) of row i from spp > 1 samples a pixel into out[lo .. hi);
+// I_P and branches, when given, get each pixel's mean and Branch.
+RowCounts draw_sampled_article_row(const ArticleRow<double>& row, int w, int i, int spp, int lo, int hi,
+                                   std::uint8_t* out, double* I_P, std::uint8_t* branches, Formula formula);
+// The row in float (--real float); x_E[j] = pane_x<float>(j, w).
+RowCounts draw_float_row(const ArticleRow<float>& row, const float* x_E, int w, std::uint8_t* out, Formula formula);
 }
 namespace avx512 {
 RowCounts draw_article_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out,
                            Formula formula);
 void article_row_intensities(const ArticleRow<double>& row, const double* x_E, int w, double* I_P,
                              std::uint8_t* branches, Formula formula);
+// Columns [lo, hi) of row i from spp > 1 samples a pixel into out[lo .. hi);
+// I_P and branches, when given, get each pixel's mean and Branch.
+RowCounts draw_sampled_article_row(const ArticleRow<double>& row, int w, int i, int spp, int lo, int hi,
+                                   std::uint8_t* out, double* I_P, std::uint8_t* branches, Formula formula);
+// The row in float (--real float); x_E[j] = pane_x<float>(j, w).
+RowCounts draw_float_row(const ArticleRow<float>& row, const float* x_E, int w, std::uint8_t* out, Formula formula);
 }
 #if defined(__clang__)
 #pragma clang diagnostic pop

@@ -5,7 +5,7 @@
 #include "render/article_lanes.hpp"
 #include "render/article_row.hpp"
 #include "render/article_row_lanes.hpp"
-#include "render/float_row_isa.hpp"
+#include "render/article_row_isa.hpp"
 #include "render/isa.hpp"
 #include "render/pane.hpp"
 #include "render/pane_columns.hpp"

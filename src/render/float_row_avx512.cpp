@@ -3,7 +3,7 @@
 // promyk::lanes::avx512::..., apart from the baseline's copies.
 // First: it opens the inline namespace the declarations below extend.
 #include "render/article_row_lanes.hpp"
-#include "render/float_row_isa.hpp"
+#include "render/article_row_isa.hpp"
 
 namespace promyk::lanes {
 inline namespace avx512 {  // inline, as lanes.hpp opened it in this file
