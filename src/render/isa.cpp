@@ -44,7 +44,7 @@ bool isa_supported(Isa isa) {
     if (isa == Isa::baseline) return true;
 #if defined(PROMYK_ISA_KERNELS)
     // The flags each translation unit is compiled with (src/CMakeLists.txt).
-    if (isa == Isa::avx2) return __builtin_cpu_supports("avx2");
+    if (isa == Isa::avx2) return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
     if (isa == Isa::avx512)
         return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
                __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512bw");
