@@ -16,6 +16,7 @@
 #include "render/article_row_lanes.hpp"
 #include "render/kernel.hpp"
 #include "render/samples.hpp"
+#include "render/whole_divisor.hpp"
 
 namespace promyk::lanes {
 inline namespace PROMYK_LANES_ISA {
@@ -69,17 +70,37 @@ struct SampleRow {
 // exact, so both are the correctly rounded value of the same exact x / d,
 // the same bits (subnormal results too: IEEE rounds both the same way; the
 // product cannot overflow, and a NaN or infinity stays what it was).
-// Chosen once a row, so the sample loop has no branch on it.
+// Otherwise a division, or for the samples' coordinates (Whole) two fmas
+// (render/whole_divisor.hpp). Chosen once a row, so the sample loop has no
+// branch on it.
 PROMYK_LANES_INLINE bool power_of_two(int n) { return n > 0 && (n & (n - 1)) == 0; }
-template <class Vector, bool Exact>
+template <class Vector, bool Exact, bool Whole = false>
 struct Divisor {
     double d, reciprocal;
-    explicit Divisor(int n) : d(n), reciprocal(1.0 / n) {}
+    WholeDivisor<Vector, Whole && fused_multiply_add> whole;
+    explicit Divisor(int n) : d(n), reciprocal(1.0 / n), whole(n) {}
     PROMYK_LANES_INLINE Vector divide(Vector x) const {
         if constexpr (Exact) return x * reciprocal;
-        else return x / d;
+        else return whole.divide(x);
     }
 };
+
+// A sample's branch as one integer a lane, its fields 16 bits wide (spp is
+// at most 1024): 1 at bit 0 if it missed, at bit 16 if dark, at bit 32 if
+// non-finite (lit: none; the branches exclude each other). Summed, the fields
+// count a pixel's samples per branch; the centre sample's is kept whole. One
+// vector where three masks were: a third of the selects and registers.
+constexpr int miss_field = 0, dark_field = 16, non_finite_field = 32;
+template <class Mask>
+PROMYK_LANES_INLINE Mask branch_code(Mask miss, Mask dark, Mask non_finite) {
+    constexpr std::int64_t one = 1;
+    return (miss & (one << miss_field)) | (dark & (one << dark_field)) | (non_finite & (one << non_finite_field));
+}
+// The field at bit `field` of summed codes: that branch's count.
+template <class Mask>
+PROMYK_LANES_INLINE Mask branch_count(Mask codes, int field) {
+    return (codes >> field) & 0xffff;
+}
 
 // The pixels of one vector: their sums, branch counts and centre samples.
 template <class Vector>
@@ -88,49 +109,69 @@ struct SampledLanes {
     using U = typename SampleInts<Vector>::U;
     Vector x0;  // 2 j + 1, each lane's pixel
     U j_hash;   // j hash_j
-    Vector sum{}, nearest{};
-    Mask miss{}, dark{}, non_finite{};                      // samples per branch (-1 a sample)
-    Mask centre_miss{}, centre_dark{}, centre_non_finite{};  // the centre sample's branch
+    // The first sample's intensity x is -0 + x, all of x's bits (+0 + x
+    // would make a -0 +0), and its d is below infinity.
+    Vector sum = splat<Vector>(-0.0), nearest = splat<Vector>(INFINITY);
+    Mask branches{};  // samples per branch, summed branch_codes
+    Mask centre{};    // the centre sample's branch_code
 };
 
 // The row's numbers that do not change from sample to sample.
 struct SampleGrid {
     int i, w, spp, n;
-    double y0;  // 2 i + 1
+    double minus_y0;  // -(2 i + 1)
     std::uint32_t i_hash;
 };
 
-// Sample s of the vector's pixels: its point as sample_point computes it,
-// traced with the formula Root, and taken into the pixels' sums and counts.
-template <class Vector, template <class> class Root, bool First, class Div>
-PROMYK_LANES_INLINE void take_sample(const ArticleRow<double>& row, const SampleGrid& grid, const Div& by_n,
-                                     const Div& by_w, int s,
-                                     std::uint32_t s_hash, SampledLanes<Vector>& p) {
-    using Mask = MaskOf<Vector>;
+// Sample s, its cell (column, row) = (s mod n, s div n), counted along (no
+// division a sample), and its hash.
+struct SampleCounter {
+    std::uint32_t column = 0, row = 0, hash = mix32_lanes(hash_s);
+    int s = 0;
+    PROMYK_LANES_INLINE void next(std::uint32_t n) {
+        ++s;
+        if (++column == n) column = 0, ++row;
+        hash = mix32_lanes(static_cast<std::uint32_t>(s) + hash_s);
+    }
+};
+
+// A sample's point E = (x, y, z_E) in each lane, and d, its offset's squared
+// distance from the pixel's centre.
+template <class Vector>
+struct SamplePoint {
+    Vector x, y, d;
+};
+
+// Sample c.s's point for the vector's pixels, as sample_point computes it.
+template <class Vector, class Div>
+PROMYK_LANES_INLINE SamplePoint<Vector> sample_point_lanes(const SampleGrid& grid, const Div& by_cell, const Div& by_w,
+                                                           const SampleCounter& c, const SampledLanes<Vector>& p) {
     using I = typename SampleInts<Vector>::I;
-    // sample_offset_on: the hash's 16 bits of jitter along each axis.
-    const auto h = mix32_lanes(grid.i_hash ^ mix32_lanes(p.j_hash ^ s_hash));
-    const Vector jitter_u = __builtin_convertvector(reinterpret_cast<I>(h & 0xffffU), Vector) / 65536.0;
-    const Vector jitter_v = __builtin_convertvector(reinterpret_cast<I>(h >> 16), Vector) / 65536.0;
-    const Vector u = by_n.divide(double(s % grid.n) + jitter_u) - 0.5;
-    const Vector v = by_n.divide(double(s / grid.n) + jitter_v) - 0.5;
-    // sample_point.
-    const Vector x = by_w.divide(p.x0 + 2.0 * u) - 1.0;
-    const Vector y = by_w.divide(-(grid.y0 + 2.0 * v)) + 1.0;
-    const LanePixel<Vector> pixel = article_lanes<Root>(SampleRow<Vector>(row, y), x);
-    if constexpr (First) p.sum = pixel.I_P;  // not 0 + I_P: that would make a -0 +0
-    else p.sum = p.sum + pixel.I_P;
-    p.miss -= pixel.miss;
-    p.dark -= pixel.dark;
-    p.non_finite -= pixel.non_finite;
-    const Vector d = u * u + v * v;
-    Mask nearer;
-    if constexpr (First) nearer = ~Mask{};  // d < INFINITY: d is finite
-    else nearer = d < p.nearest;
-    p.nearest = select(nearer, d, p.nearest);
-    p.centre_miss = (pixel.miss & nearer) | (p.centre_miss & ~nearer);
-    p.centre_dark = (pixel.dark & nearer) | (p.centre_dark & ~nearer);
-    p.centre_non_finite = (pixel.non_finite & nearer) | (p.centre_non_finite & ~nearer);
+    // sample_offset_on: the hash's 16 bits of jitter along each axis. Its
+    // (s mod n + jitter_u) / n is (2^16 (s mod n) + h_u) / (2^16 n), the same
+    // exact quotient rounded once (the numerator, below 2^31, and 2^16 n are
+    // exact in double), so one conversion and one division give its bits.
+    const auto h = mix32_lanes(grid.i_hash ^ mix32_lanes(p.j_hash ^ c.hash));
+    const Vector u = by_cell.divide(__builtin_convertvector(reinterpret_cast<I>((h & 0xffffU) | (c.column << 16)), Vector)) - 0.5;
+    const Vector v = by_cell.divide(__builtin_convertvector(reinterpret_cast<I>((h >> 16) | (c.row << 16)), Vector)) - 0.5;
+    // sample_point. -(y0 + 2 v) is (-y0) - 2 v but for a zero's sign, which
+    // adding 1 erases.
+    return {by_w.divide(p.x0 + 2.0 * u) - 1.0, by_w.divide(grid.minus_y0 - 2.0 * v) + 1.0, u * u + v * v};
+}
+
+// A sample of the vector's pixels at its points E, traced with the formula
+// Root and taken into the pixels' sums and counts.
+template <class Vector, template <class> class Root>
+PROMYK_LANES_INLINE void take_sample(const ArticleRow<double>& row, const SamplePoint<Vector>& E,
+                                     SampledLanes<Vector>& p) {
+    using Mask = MaskOf<Vector>;
+    const LanePixel<Vector> pixel = article_lanes<Root, false>(SampleRow<Vector>(row, E.y), E.x);
+    const Mask code = branch_code(pixel.miss, pixel.dark, pixel.non_finite);
+    p.sum = p.sum + pixel.I_P;
+    p.branches += code;
+    const Mask nearer = E.d < p.nearest;
+    p.nearest = select(nearer, E.d, p.nearest);
+    p.centre = (code & nearer) | (p.centre & ~nearer);
 }
 
 // The row's pixels by branch, and those whose samples disagree, counted lane
@@ -154,14 +195,19 @@ PROMYK_LANES_INLINE void put_sampled(const SampledLanes<Vector>& p, int spp, con
     constexpr int width = LaneTraits<Vector>::width;
     const Vector mean = by_spp.divide(p.sum);  // sum / spp
     put_grey_levels(mean, out + j, n);
-    const Mask lit = spp - p.miss - p.dark - p.non_finite;  // samples lit
+    const Mask miss = branch_count(p.branches, miss_field), dark = branch_count(p.branches, dark_field),
+               not_finite = branch_count(p.branches, non_finite_field);
+    const Mask lit = spp - miss - dark - not_finite;  // samples lit
     const auto one_branch = [spp](Mask c) __attribute__((always_inline)) { return (c == 0) | (c == spp); };
-    const Mask agree = one_branch(p.miss) & one_branch(p.dark) & one_branch(p.non_finite) & one_branch(lit);
+    const Mask agree = one_branch(miss) & one_branch(dark) & one_branch(not_finite) & one_branch(lit);
     tally.disagreeing -= ~agree & kept;
+    const Mask centre_miss = branch_count(p.centre, miss_field) != 0,
+               centre_dark = branch_count(p.centre, dark_field) != 0,
+               centre_non_finite = branch_count(p.centre, non_finite_field) != 0;
     const Mask finite = mean * 0.0 == 0.0;  // finite_value
-    const Mask non_finite = (~finite | p.centre_non_finite) & kept;
-    tally.miss -= finite & p.centre_miss & kept;
-    tally.dark -= finite & p.centre_dark & kept;
+    const Mask non_finite = (~finite | centre_non_finite) & kept;
+    tally.miss -= finite & centre_miss & kept;
+    tally.dark -= finite & centre_dark & kept;
     tally.non_finite -= non_finite;
     if (tally.first_non_finite_j < 0 && any(non_finite))  // rare
         for (int k = width - 1; k >= 0; --k)
@@ -169,8 +215,8 @@ PROMYK_LANES_INLINE void put_sampled(const SampledLanes<Vector>& p, int spp, con
     if (I_P || branches) {
         for (int k = 0; k < n; ++k) {
             const Branch branch = non_finite[k]       ? Branch::non_finite
-                                  : p.centre_miss[k] ? Branch::miss
-                                  : p.centre_dark[k] ? Branch::dark
+                                  : centre_miss[k]   ? Branch::miss
+                                  : centre_dark[k]   ? Branch::dark
                                                      : Branch::lit;
             if (I_P) I_P[j + k] = mean[k];
             if (branches) branches[j + k] = static_cast<std::uint8_t>(branch);
@@ -187,43 +233,58 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, co
     constexpr int width = LaneTraits<Vector>::width;
     using U = typename SampleInts<Vector>::U;
     using Mask = MaskOf<Vector>;
-    const Divisor<Vector, Exact> by_n(grid.n), by_w(grid.w), by_spp(grid.spp);  // spp = n^2
+    // by_cell: 2^16 n, the jitter's denominator (take_sample); exact when n is.
+    // by_w and by_cell divide bounded numerators, never -0: WholeDivisor's
+    // fmas may stand for the division; by_spp divides any sum.
+    const Divisor<Vector, Exact, true> by_cell(65536 * grid.n), by_w(grid.w);
+    const Divisor<Vector, Exact> by_spp(grid.spp);  // spp = n^2
     RowTally<Vector> tally;
-    const auto s_hash = [](int s) __attribute__((always_inline)) {
-        return mix32_lanes(static_cast<std::uint32_t>(s) + hash_s);
-    };
-    const int w = grid.w, spp = grid.spp;
+    const int spp = grid.spp;
     RowCounts counts;
     counts.sphere_tests = static_cast<long long>(hi - lo) * spp;
+    U lane_numbers;  // 0, 1, .. width - 1
+    for (int k = 0; k < width; ++k) lane_numbers[k] = static_cast<std::uint32_t>(k);
     const auto pixels = [&](int j) __attribute__((always_inline)) {
         SampledLanes<Vector> p;
-        U j_lanes;
-        for (int k = 0; k < width; ++k) j_lanes[k] = static_cast<std::uint32_t>(j + k), p.x0[k] = 2.0 * (j + k) + 1.0;
+        const U j_lanes = static_cast<std::uint32_t>(j) + lane_numbers;
+        p.x0 = 2.0 * __builtin_convertvector(j_lanes, Vector) + 1.0;
         p.j_hash = j_lanes * hash_j;
         return p;
     };
-    (void)w;
+    const std::uint32_t n = static_cast<std::uint32_t>(grid.n);
+    // Each sample's points are computed a sample ahead, in the loop before
+    // the sample they lead: the hash and the divisions then run while the
+    // square roots before them wait (the last loop computes one unused).
     int j = lo;
     for (; j + 2 * width <= hi; j += 2 * width) {
         SampledLanes<Vector> p0 = pixels(j), p1 = pixels(j + width);
-        take_sample<Vector, Root, true>(row, grid, by_n, by_w, 0, s_hash(0), p0);
-        take_sample<Vector, Root, true>(row, grid, by_n, by_w, 0, s_hash(0), p1);
-        for (int s = 1; s < spp; ++s) {
-            const std::uint32_t h = s_hash(s);
-            take_sample<Vector, Root, false>(row, grid, by_n, by_w, s, h, p0);
-            take_sample<Vector, Root, false>(row, grid, by_n, by_w, s, h, p1);
+        SampleCounter c;
+        SamplePoint<Vector> E0 = sample_point_lanes(grid, by_cell, by_w, c, p0),
+                            E1 = sample_point_lanes(grid, by_cell, by_w, c, p1);
+        c.next(n);
+        SamplePoint<Vector> next0 = sample_point_lanes(grid, by_cell, by_w, c, p0),
+                            next1 = sample_point_lanes(grid, by_cell, by_w, c, p1);
+        take_sample<Vector, Root>(row, E0, p0);
+        take_sample<Vector, Root>(row, E1, p1);
+        while (c.s < spp) {
+            E0 = next0, E1 = next1;
+            c.next(n);
+            next0 = sample_point_lanes(grid, by_cell, by_w, c, p0);
+            next1 = sample_point_lanes(grid, by_cell, by_w, c, p1);
+            take_sample<Vector, Root>(row, E0, p0);
+            take_sample<Vector, Root>(row, E1, p1);
         }
         put_sampled(p0, spp, by_spp, j, width, ~Mask{}, out, tally, I_P, branches);
         put_sampled(p1, spp, by_spp, j + width, width, ~Mask{}, out, tally, I_P, branches);
     }
     for (; j < hi; j += width) {  // the last vector's lanes past hi are computed and dropped
         SampledLanes<Vector> p = pixels(j);
-        take_sample<Vector, Root, true>(row, grid, by_n, by_w, 0, s_hash(0), p);
-        for (int s = 1; s < spp; ++s) take_sample<Vector, Root, false>(row, grid, by_n, by_w, s, s_hash(s), p);
-        const int n = hi - j < width ? hi - j : width;
+        SampleCounter c;
+        for (; c.s < spp; c.next(n)) take_sample<Vector, Root>(row, sample_point_lanes(grid, by_cell, by_w, c, p), p);
+        const int kept_lanes = hi - j < width ? hi - j : width;
         Mask kept{};
-        for (int k = 0; k < n; ++k) kept[k] = -1;
-        put_sampled(p, spp, by_spp, j, n, kept, out, tally, I_P, branches);
+        for (int k = 0; k < kept_lanes; ++k) kept[k] = -1;
+        put_sampled(p, spp, by_spp, j, kept_lanes, kept, out, tally, I_P, branches);
     }
     int miss = 0, dark = 0, non_finite = 0;
     for (int k = 0; k < width; ++k) {
@@ -250,7 +311,7 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, in
     grid.i = i, grid.w = w, grid.spp = spp;
     grid.n = 1;
     while ((grid.n + 1) * (grid.n + 1) <= spp) ++grid.n;  // spp_side (not compiled here)
-    grid.y0 = 2.0 * i + 1.0;
+    grid.minus_y0 = -(2.0 * i + 1.0);
     grid.i_hash = static_cast<std::uint32_t>(i) * hash_i;
     const bool exact = power_of_two(grid.n) && power_of_two(w);
     return with_root(formula, [&](auto root) {
