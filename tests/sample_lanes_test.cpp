@@ -152,13 +152,14 @@ TEST_CASE("Sampled rows in lanes: every pixel's mean, branch, grey level and the
         PathForced forced(isa);
         for (const Formula formula : lane_formulas) {
             for (const NamedWorld& named : worlds) {
-                // Panes of a power of two (the reciprocal's multiplication) and
-                // not, whole vectors of 2, 4 and 8 pixels and not; the hard
-                // case's own pane (its tangent pixel centres).
+                // Panes and cells (n x n a pixel) of a power of two (the
+                // reciprocal's multiplication) and not (the division, or two
+                // fmas), each with each; whole vectors of 2, 4 and 8 pixels
+                // and not; the hard case's own pane (its tangent pixel centres).
                 struct Run {
                     int w, spp;
                 };
-                std::vector<Run> runs = {{64, 4}, {61, 9}, {67, 16}, {32, 16}, {8, 1024}, {5, 1024}};
+                std::vector<Run> runs = {{64, 4}, {61, 9}, {67, 16}, {32, 16}, {64, 9}, {8, 1024}, {5, 1024}};
                 if (named.w > 0) runs.push_back({named.w, 4}), runs.push_back({named.w, 9});
                 for (const Run run : runs) {
                     INFO(isa_name(isa) << ", " << formula_name(formula) << ", " << named.name << ", w = " << run.w

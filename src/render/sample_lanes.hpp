@@ -71,8 +71,8 @@ struct SampleRow {
 // the same bits (subnormal results too: IEEE rounds both the same way; the
 // product cannot overflow, and a NaN or infinity stays what it was).
 // Otherwise a division, or for the samples' coordinates (Whole) two fmas
-// (render/whole_divisor.hpp). Chosen once a row, so the sample loop has no
-// branch on it.
+// (render/whole_divisor.hpp). Chosen once a row (a template argument, so the
+// sample loop has no branch on it), or once a pixel for the mean (exact).
 PROMYK_LANES_INLINE bool power_of_two(int n) { return n > 0 && (n & (n - 1)) == 0; }
 template <class Vector, bool Exact, bool Whole = false>
 struct Divisor {
@@ -83,6 +83,13 @@ struct Divisor {
         if constexpr (Exact) return x * reciprocal;
         else return whole.divide(x);
     }
+};
+template <class Vector>
+struct MeanDivisor {
+    double d, reciprocal;
+    bool exact;
+    explicit MeanDivisor(int n) : d(n), reciprocal(1.0 / n), exact(power_of_two(n)) {}
+    PROMYK_LANES_INLINE Vector divide(Vector x) const { return exact ? x * reciprocal : x / d; }
 };
 
 // A sample's branch as one integer a lane, its fields 16 bits wide (spp is
@@ -95,11 +102,6 @@ template <class Mask>
 PROMYK_LANES_INLINE Mask branch_code(Mask miss, Mask dark, Mask non_finite) {
     constexpr std::int64_t one = 1;
     return (miss & (one << miss_field)) | (dark & (one << dark_field)) | (non_finite & (one << non_finite_field));
-}
-// The field at bit `field` of summed codes: that branch's count.
-template <class Mask>
-PROMYK_LANES_INLINE Mask branch_count(Mask codes, int field) {
-    return (codes >> field) & 0xffff;
 }
 
 // The pixels of one vector: their sums, branch counts and centre samples.
@@ -143,8 +145,9 @@ struct SamplePoint {
 };
 
 // Sample c.s's point for the vector's pixels, as sample_point computes it.
-template <class Vector, class Div>
-PROMYK_LANES_INLINE SamplePoint<Vector> sample_point_lanes(const SampleGrid& grid, const Div& by_cell, const Div& by_w,
+template <class Vector, class CellDivisor, class WDivisor>
+PROMYK_LANES_INLINE SamplePoint<Vector> sample_point_lanes(const SampleGrid& grid, const CellDivisor& by_cell,
+                                                           const WDivisor& by_w,
                                                            const SampleCounter& c, const SampledLanes<Vector>& p) {
     using I = typename SampleInts<Vector>::I;
     // sample_offset_on: the hash's 16 bits of jitter along each axis. Its
@@ -195,15 +198,15 @@ PROMYK_LANES_INLINE void put_sampled(const SampledLanes<Vector>& p, int spp, con
     constexpr int width = LaneTraits<Vector>::width;
     const Vector mean = by_spp.divide(p.sum);  // sum / spp
     put_grey_levels(mean, out + j, n);
-    const Mask miss = branch_count(p.branches, miss_field), dark = branch_count(p.branches, dark_field),
-               not_finite = branch_count(p.branches, non_finite_field);
-    const Mask lit = spp - miss - dark - not_finite;  // samples lit
-    const auto one_branch = [spp](Mask c) __attribute__((always_inline)) { return (c == 0) | (c == spp); };
-    const Mask agree = one_branch(miss) & one_branch(dark) & one_branch(not_finite) & one_branch(lit);
+    // The samples agree when all took one branch: their codes' sum is spp
+    // times that branch's code (0 where all are lit).
+    const std::int64_t all = spp, one = 1;
+    const Mask sum = p.branches;
+    const Mask agree = (sum == 0) | (sum == all << miss_field) | (sum == all << dark_field) |
+                       (sum == all << non_finite_field);
     tally.disagreeing -= ~agree & kept;
-    const Mask centre_miss = branch_count(p.centre, miss_field) != 0,
-               centre_dark = branch_count(p.centre, dark_field) != 0,
-               centre_non_finite = branch_count(p.centre, non_finite_field) != 0;
+    const Mask centre_miss = p.centre == one << miss_field, centre_dark = p.centre == one << dark_field,
+               centre_non_finite = p.centre == one << non_finite_field;
     const Mask finite = mean * 0.0 == 0.0;  // finite_value
     const Mask non_finite = (~finite | centre_non_finite) & kept;
     tally.miss -= finite & centre_miss & kept;
@@ -227,7 +230,7 @@ PROMYK_LANES_INLINE void put_sampled(const SampledLanes<Vector>& p, int spp, con
 // Row grid.i into out[0 .. w) from grid.spp samples a pixel, with the
 // formula Root: two vectors of pixels in flight (two independent chains of
 // square roots and divisions), then one for the rest.
-template <class Vector, template <class> class Root, bool Exact>
+template <class Vector, template <class> class Root, bool ExactCell, bool ExactW>
 PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, const SampleGrid& grid, int lo, int hi,
                                                std::uint8_t* out, double* I_P, std::uint8_t* branches) {
     constexpr int width = LaneTraits<Vector>::width;
@@ -236,8 +239,9 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, co
     // by_cell: 2^16 n, the jitter's denominator (take_sample); exact when n is.
     // by_w and by_cell divide bounded numerators, never -0: WholeDivisor's
     // fmas may stand for the division; by_spp divides any sum.
-    const Divisor<Vector, Exact, true> by_cell(65536 * grid.n), by_w(grid.w);
-    const Divisor<Vector, Exact> by_spp(grid.spp);  // spp = n^2
+    const Divisor<Vector, ExactCell, true> by_cell(65536 * grid.n);
+    const Divisor<Vector, ExactW, true> by_w(grid.w);
+    const MeanDivisor<Vector> by_spp(grid.spp);
     RowTally<Vector> tally;
     const int spp = grid.spp;
     RowCounts counts;
@@ -252,30 +256,36 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, co
         return p;
     };
     const std::uint32_t n = static_cast<std::uint32_t>(grid.n);
-    // Each sample's points are computed a sample ahead, in the loop before
-    // the sample they lead: the hash and the divisions then run while the
-    // square roots before them wait (the last loop computes one unused).
+    const auto points = [&](const SampleCounter& c, const SampledLanes<Vector>& p) __attribute__((always_inline)) {
+        return sample_point_lanes(grid, by_cell, by_w, c, p);
+    };
+    // Each sample's points are computed a sample ahead, in the step before
+    // the sample they lead (the pair's last sample computes the next pair's
+    // first): their hash and divisions then run while the square roots
+    // before them wait, the loop being bound by the latency of a sample's
+    // chain rather than by its work. The last pair computes one unused.
     int j = lo;
-    for (; j + 2 * width <= hi; j += 2 * width) {
+    if (j + 2 * width <= hi) {
         SampledLanes<Vector> p0 = pixels(j), p1 = pixels(j + width);
-        SampleCounter c;
-        SamplePoint<Vector> E0 = sample_point_lanes(grid, by_cell, by_w, c, p0),
-                            E1 = sample_point_lanes(grid, by_cell, by_w, c, p1);
-        c.next(n);
-        SamplePoint<Vector> next0 = sample_point_lanes(grid, by_cell, by_w, c, p0),
-                            next1 = sample_point_lanes(grid, by_cell, by_w, c, p1);
-        take_sample<Vector, Root>(row, E0, p0);
-        take_sample<Vector, Root>(row, E1, p1);
-        while (c.s < spp) {
-            E0 = next0, E1 = next1;
-            c.next(n);
-            next0 = sample_point_lanes(grid, by_cell, by_w, c, p0);
-            next1 = sample_point_lanes(grid, by_cell, by_w, c, p1);
+        SamplePoint<Vector> E0 = points(SampleCounter{}, p0), E1 = points(SampleCounter{}, p1);
+        for (; j + 2 * width <= hi; j += 2 * width) {
+            SampleCounter c;
+            for (; c.s + 1 < spp; ) {
+                SampleCounter c_next = c;
+                c_next.next(n);
+                const SamplePoint<Vector> next0 = points(c_next, p0), next1 = points(c_next, p1);
+                take_sample<Vector, Root>(row, E0, p0);
+                take_sample<Vector, Root>(row, E1, p1);
+                c = c_next, E0 = next0, E1 = next1;
+            }
+            const SampledLanes<Vector> q0 = pixels(j + 2 * width), q1 = pixels(j + 3 * width);
+            const SamplePoint<Vector> next0 = points(SampleCounter{}, q0), next1 = points(SampleCounter{}, q1);
             take_sample<Vector, Root>(row, E0, p0);
             take_sample<Vector, Root>(row, E1, p1);
+            put_sampled(p0, spp, by_spp, j, width, ~Mask{}, out, tally, I_P, branches);
+            put_sampled(p1, spp, by_spp, j + width, width, ~Mask{}, out, tally, I_P, branches);
+            p0 = q0, p1 = q1, E0 = next0, E1 = next1;
         }
-        put_sampled(p0, spp, by_spp, j, width, ~Mask{}, out, tally, I_P, branches);
-        put_sampled(p1, spp, by_spp, j + width, width, ~Mask{}, out, tally, I_P, branches);
     }
     for (; j < hi; j += width) {  // the last vector's lanes past hi are computed and dropped
         SampledLanes<Vector> p = pixels(j);
@@ -313,11 +323,14 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, in
     while ((grid.n + 1) * (grid.n + 1) <= spp) ++grid.n;  // spp_side (not compiled here)
     grid.minus_y0 = -(2.0 * i + 1.0);
     grid.i_hash = static_cast<std::uint32_t>(i) * hash_i;
-    const bool exact = power_of_two(grid.n) && power_of_two(w);
+    const bool cell_exact = power_of_two(grid.n), w_exact = power_of_two(w);
     return with_root(formula, [&](auto root) {
         using R = decltype(root);
-        return exact ? draw_sampled_row<Vector, R::template Root, true>(row, grid, lo, hi, out, I_P, branches)
-                     : draw_sampled_row<Vector, R::template Root, false>(row, grid, lo, hi, out, I_P, branches);
+        if (cell_exact)
+            return w_exact ? draw_sampled_row<Vector, R::template Root, true, true>(row, grid, lo, hi, out, I_P, branches)
+                           : draw_sampled_row<Vector, R::template Root, true, false>(row, grid, lo, hi, out, I_P, branches);
+        return w_exact ? draw_sampled_row<Vector, R::template Root, false, true>(row, grid, lo, hi, out, I_P, branches)
+                       : draw_sampled_row<Vector, R::template Root, false, false>(row, grid, lo, hi, out, I_P, branches);
     });
 }
 
