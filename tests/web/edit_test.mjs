@@ -191,6 +191,9 @@ try {
   await page.fill('#field-lights-0-I', '1');
   await page.waitForFunction(() => document.getElementById('error-lights').hidden && document.getElementById('error-lights-0-I').hidden);
   await page.waitForFunction((h) => location.hash === h, sceneBefore);
+  // The light's fields were valid scenes on the way: a render of one may
+  // still be under way (on a busy machine), and would count below.
+  await page.waitForFunction(() => !/…/.test(document.getElementById('render-status').textContent), null, { timeout: 120000 });
 
   // In Polish: the panel's words and the loader's Polish message, for the
   // invalid value on screen when the language is switched (no edit since).
