@@ -4,7 +4,8 @@
 // line of sight (nothing can be proven there), every drawn row equals the
 // traced path pixel for pixel on every instruction-set path, and the
 // proven columns really are misses of the kernel, with each formula that
-// skips (the article's and stable: the program's Δ/4; geometric: its delta_g).
+// skips (the article's and stable: the program's Δ/4; fma: Kahan's Δ/4;
+// geometric: its delta_g), and the bounds the proofs rest on hold against quad.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -29,7 +30,7 @@ using namespace promyk;
 
 namespace {
 
-constexpr Formula formulas[] = {Formula::article, Formula::stable, Formula::geometric};
+constexpr Formula formulas[] = {Formula::article, Formula::stable, Formula::fma, Formula::geometric};
 
 // The traced path's pixel with the formula.
 PixelResult<double> traced(const ArticleWorld<double>& world, Formula formula, const Vec3d& E) {
@@ -39,6 +40,8 @@ PixelResult<double> traced(const ArticleWorld<double>& world, Formula formula, c
             return trace_ray<SphereFormula<Formula::stable>>(world, E, none);
         case Formula::geometric:
             return trace_ray<SphereFormula<Formula::geometric>>(world, E, none);
+        case Formula::fma:
+            return trace_ray<SphereFormula<Formula::fma>>(world, E, none);
         default:
             return trace_ray<SphereFormula<Formula::article>>(world, E, none);
     }
@@ -165,48 +168,104 @@ TEST_CASE("skipping never changes a pixel: random spheres, tangent silhouettes, 
     CHECK(skipped > 100000);
 }
 
+namespace {
+
+// A ray of the pane through (x, y) at z_E, random or grazing a random
+// sphere (y chosen so that the exact Δ is about 0, where it cancels most),
+// at scales from 1e-30 to 1e30 a third of the time.
+struct Case {
+    ArticleWorld<double> world;
+    double x, y;
+    bool grazing;
+};
+
+Case random_case(std::mt19937_64& random, int s) {
+    std::uniform_real_distribution<double> unit(-1, 1), depth(1.5, 40), radius(0.01, 3), eye(0.2, 4);
+    const double scale = s % 3 == 0 ? 1 : std::pow(10.0, unit(random) * 30);
+    Case c{world_of(unit(random) * 3 * scale, unit(random) * 3 * scale, depth(random) * scale,
+                    radius(random) * scale, eye(random)),
+           unit(random), unit(random), false};
+    if (s % 2 != 0) return c;
+    const Vec3d S = c.world.S;
+    // A direction at angle a = asin(r/|S|) from S: the sphere's rim.
+    const double len = std::sqrt(S.x * S.x + S.y * S.y + S.z * S.z);
+    const double sin_a = c.world.r / len;
+    if (!(sin_a < 1)) return c;
+    const double ux = unit(random), uy = unit(random);
+    // A random direction perpendicular to S, then the rim's direction
+    // S/|S| cos a + perp/|perp| sin a, through the pane at z_E.
+    const Vec3d perp{ux * S.z, uy * S.z, -(ux * S.x + uy * S.y)};
+    const double p_len = std::sqrt(perp.x * perp.x + perp.y * perp.y + perp.z * perp.z);
+    if (!(p_len > 0)) return c;
+    const double cos_a = std::sqrt(1 - sin_a * sin_a);
+    const Vec3d d{S.x / len * cos_a + perp.x / p_len * sin_a, S.y / len * cos_a + perp.y / p_len * sin_a,
+                  S.z / len * cos_a + perp.z / p_len * sin_a};
+    if (!(d.z > 0)) return c;
+    c.x = d.x / d.z * c.world.z_E, c.y = d.y / d.z * c.world.z_E, c.grazing = true;
+    return c;
+}
+
+// The exact Δ/4 = C² − |E|²(|S|² − r²) at the case's E, in quad.
+quad exact_delta(const Case& c) {
+    const quad xq = c.x, yq = c.y, zq = c.world.z_E, Sx = c.world.S.x, Sy = c.world.S.y, Sz = c.world.S.z,
+               rq = c.world.r;
+    const quad Cq = xq * Sx + yq * Sy + zq * Sz, EEq = xq * xq + yq * yq + zq * zq;
+    return Cq * Cq - EEq * (Sx * Sx + Sy * Sy + Sz * Sz - rq * rq);
+}
+
+}  // namespace
+
+// The article's, stable and fma skipping rest on one bound: the kernel's Δ̂,
+// the article's products or Kahan's fmas, is within e = row_error of the
+// exact Δ for |x| ≤ 1 (render/silhouette.hpp).
+TEST_CASE("skipping: the article's and Kahan's delta are within the row's bound of the exact one", "[silhouette]") {
+    std::mt19937_64 random(29);
+    double worst_article = 0, worst_fma = 0;  // the largest |computed − exact| / e
+    int grazing = 0, checked = 0;
+    for (int s = 0; s < 200000; ++s) {
+        const Case c = random_case(random, s);
+        if (!(std::fabs(c.x) <= 1)) continue;  // the bound is the pane's, |x| ≤ 1
+        grazing += c.grazing, ++checked;
+        const lanes::ArticleRow<double> row(c.world, c.y);
+        const double EE = (c.x * c.x + row.yy) + row.zz;
+        const double C = (c.x * c.world.S.x + row.ySy) + row.zSz;
+        const lanes::FmaRoot<double> kahan(row, c.x, EE, C);
+        const quad exact = exact_delta(c);
+        const double e = silhouette_detail::row_error(row);
+        REQUIRE(std::isfinite(e));
+        const auto off = [&](double computed) {
+            return static_cast<double>(quad_math::fabs(static_cast<quad>(computed) - exact)) / e;
+        };
+        worst_article = std::max(worst_article, off(silhouette_detail::delta_hat(row, c.x)));
+        worst_fma = std::max(worst_fma, off(kahan.delta));
+    }
+    INFO("largest errors " << worst_article << " (article) and " << worst_fma << " (fma) of the bound, " << checked
+                           << " rays, " << grazing << " grazing");
+    CHECK(grazing > 20000);
+    CHECK(worst_article <= 1);
+    CHECK(worst_fma <= 1);
+    // Not a bound so loose that any error would pass.
+    CHECK(worst_article > 1.0 / 64);
+    CHECK(worst_fma > 1.0 / 256);
+}
+
 // The geometric formula's skipping rests on one bound: its computed delta_g
 // is within g = 64u(|S|² + r²) of the exact Δ/|E|² (render/silhouette.hpp).
 // Checked against quad on random spheres and rays, on rays that graze the
 // sphere (where delta_g is nearly 0 and cancels most) and on far spheres.
 TEST_CASE("skipping: the geometric formula's delta_g is within its bound of the exact one", "[silhouette]") {
     std::mt19937_64 random(23);
-    std::uniform_real_distribution<double> unit(-1, 1), depth(1.5, 40), radius(0.01, 3), eye(0.2, 4);
     double worst = 0;  // the largest |computed − exact| / g
     int grazing = 0;
     for (int s = 0; s < 200000; ++s) {
-        const double scale = s % 3 == 0 ? 1 : std::pow(10.0, unit(random) * 30);
-        const ArticleWorld<double> world = world_of(unit(random) * 3 * scale, unit(random) * 3 * scale,
-                                                    depth(random) * scale, radius(random) * scale, eye(random));
-        double x = unit(random), y = unit(random);
-        if (s % 2 == 0) {
-            // A ray grazing the sphere: y chosen so that the exact Δ is about 0.
-            const Vec3d S = world.S;
-            const double z = world.z_E;
-            // A direction at angle a = asin(r/|S|) from S: the sphere's rim.
-            const double len = std::sqrt(S.x * S.x + S.y * S.y + S.z * S.z);
-            const double sin_a = world.r / len;
-            if (!(sin_a < 1)) continue;
-            const double ux = unit(random), uy = unit(random);
-            // A random direction perpendicular to S, then the rim's direction
-            // S/|S| cos a + perp/|perp| sin a, through the pane at z_E.
-            const Vec3d perp{ux * S.z, uy * S.z, -(ux * S.x + uy * S.y)};
-            const double p_len = std::sqrt(perp.x * perp.x + perp.y * perp.y + perp.z * perp.z);
-            if (!(p_len > 0)) continue;
-            const double cos_a = std::sqrt(1 - sin_a * sin_a);
-            const Vec3d d{S.x / len * cos_a + perp.x / p_len * sin_a, S.y / len * cos_a + perp.y / p_len * sin_a,
-                          S.z / len * cos_a + perp.z / p_len * sin_a};
-            if (!(d.z > 0)) continue;
-            x = d.x / d.z * z, y = d.y / d.z * z;
-            ++grazing;
-        }
-        const lanes::ArticleRow<double> row(world, y);
-        const double EE = (x * x + row.yy) + row.zz;
-        const double C = (x * world.S.x + row.ySy) + row.zSz;
-        const lanes::GeometricRoot<double> root(row, x, EE, C);
-        const quad xq = x, yq = y, zq = world.z_E, Sx = world.S.x, Sy = world.S.y, Sz = world.S.z, rq = world.r;
-        const quad Cq = xq * Sx + yq * Sy + zq * Sz, EEq = xq * xq + yq * yq + zq * zq;
-        const quad exact = (Cq * Cq - EEq * (Sx * Sx + Sy * Sy + Sz * Sz - rq * rq)) / EEq;
+        const Case c = random_case(random, s);
+        grazing += c.grazing;
+        const lanes::ArticleRow<double> row(c.world, c.y);
+        const double EE = (c.x * c.x + row.yy) + row.zz;
+        const double C = (c.x * c.world.S.x + row.ySy) + row.zSz;
+        const lanes::GeometricRoot<double> root(row, c.x, EE, C);
+        const quad exact = exact_delta(c) / ((static_cast<quad>(c.x) * c.x + static_cast<quad>(c.y) * c.y) +
+                                             static_cast<quad>(c.world.z_E) * c.world.z_E);
         const double g = silhouette_detail::geometric_error(row);
         const double off = static_cast<double>(quad_math::fabs(static_cast<quad>(root.delta_g) - exact)) / g;
         if (off > worst) worst = off;

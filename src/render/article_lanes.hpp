@@ -89,14 +89,28 @@ PROMYK_LANES_INLINE MaskOf<Lane> nearer_root_proven(Lane q, Lane t_c, Real c_0, 
     return both(ordered, both(t_c_fine, t_q_finite));
 }
 
-// The stable and geometric formulas' roots q / |E|^2 and c_0 / q, with
-// q = C + sign(C) root_term, and the engine's choice between them
-// (geometry/sphere_stable.hpp's cancellation_free_roots and sphere.hpp's
+// Of two roots t_a and t_b, the engine's choice (geometry/sphere.hpp's
 // nearest_root_ahead): the nearer if > 0, else the farther if > 0, else a
 // miss (behind the eye); a root that is NaN or infinite is taken.
 template <class Lane, class Real = typename LaneTraits<Lane>::Real>
-PROMYK_LANES_INLINE Lane cancellation_free_root(Lane C, Lane root_term, Real c_0, Lane EE, MaskOf<Lane>& missed) {
+PROMYK_LANES_INLINE Lane nearest_ahead(Lane t_a, Lane t_b, MaskOf<Lane>& missed) {
     using Mask = MaskOf<Lane>;
+    const Mask finite_a = t_a * Real(0) == Real(0), finite_b = t_b * Real(0) == Real(0);
+    const Mask finite = both(finite_a, finite_b);
+    const Mask a_first = t_a < t_b;
+    const Lane near = select(finite, select(a_first, t_a, t_b), select(finite_a, t_b, t_a));
+    const Lane far = select(a_first, t_b, t_a);
+    const Mask take_near = either(lane_not(finite), lane_not(near <= Real(0)));
+    const Mask take_far = both(lane_not(take_near), far > Real(0));
+    missed = either(missed, lane_not(either(take_near, take_far)));  // behind the eye
+    return select(take_near, near, far);
+}
+
+// The stable and geometric formulas' roots q / |E|^2 and c_0 / q, with
+// q = C + sign(C) root_term (geometry/sphere_stable.hpp's
+// cancellation_free_roots), and the engine's choice between them.
+template <class Lane, class Real = typename LaneTraits<Lane>::Real>
+PROMYK_LANES_INLINE Lane cancellation_free_root(Lane C, Lane root_term, Real c_0, Lane EE, MaskOf<Lane>& missed) {
     const Lane q = select(C >= Real(0), C + root_term, C - root_term);
     const Lane t_c = c_0 / q;
     // Where every lane's c_0 / q is proven the nearer root and ahead of the
@@ -104,16 +118,7 @@ PROMYK_LANES_INLINE Lane cancellation_free_root(Lane C, Lane root_term, Real c_0
     // q / |E|^2, a second division, is not needed (nearer_root_proven).
     if constexpr (LaneTraits<Lane>::width > 1)
         if (c_0 > Real(0) && all(either(missed, nearer_root_proven(q, t_c, c_0, EE)))) return t_c;
-    const Lane t_q = q / EE;
-    const Mask finite_q = t_q * Real(0) == Real(0), finite_c = t_c * Real(0) == Real(0);
-    const Mask finite = both(finite_q, finite_c);
-    const Mask q_first = t_q < t_c;
-    const Lane near = select(finite, select(q_first, t_q, t_c), select(finite_q, t_c, t_q));
-    const Lane far = select(q_first, t_c, t_q);
-    const Mask take_near = either(lane_not(finite), lane_not(near <= Real(0)));
-    const Mask take_far = both(lane_not(take_near), far > Real(0));
-    missed = either(missed, lane_not(either(take_near, take_far)));  // behind the eye
-    return select(take_near, near, far);
+    return nearest_ahead(q / EE, t_c, missed);
 }
 
 // The stable formula (geometry/sphere_stable.hpp): the program's delta, the
@@ -163,9 +168,45 @@ struct GeometricRoot {
     }
 };
 
-// Calls visit(RootOf<Root>{}) with the root step of `formula` (the article's,
-// stable or geometric; fma has no lanes): the one place a formula chosen at
-// run time becomes a template argument.
+// Kahan's discriminant (geometry/sphere_fma.hpp): w = |E|^2 c_0, e =
+// fma(-|E|^2, c_0, w), delta = fma(C, C, -w) + e; the article's two roots,
+// and the engine's choice between them.
+template <class Lane>
+struct FmaRoot {
+    using Real = typename LaneTraits<Lane>::Real;
+    using Mask = MaskOf<Lane>;
+    Lane EE, C, delta;
+    Mask miss;
+
+    template <class Row>
+    PROMYK_LANES_INLINE FmaRoot(const Row& row, Lane x_E, Lane EE_, Lane C_) : EE(EE_), C(C_) {
+        (void)x_E;
+        const Lane c_0 = splat<Lane>(row.SS_rr);
+        const Lane w = EE * c_0;
+        const Lane e = lane_fma(-EE, c_0, w);
+        delta = lane_fma(C, C, -w) + e;
+        miss = both(delta <= Real(0), delta >= std::numeric_limits<Real>::lowest());
+    }
+    PROMYK_LANES_INLINE Lane t(Mask& missed) const {
+        const Lane root = lane_sqrt(delta);
+        const Lane t_near = (C - root) / EE, C_far = C + root;
+        // Where every lane's t_near is finite and > 0 (or the lane missed
+        // already) and C + root < |E|^2 2^1018 (a product exact or
+        // infinite: the far root is finite), the far root is at least
+        // t_near (C + root >= C - root, divided alike) and nearest_ahead
+        // would take t_near: the far root's division is not needed.
+        if constexpr (LaneTraits<Lane>::width > 1) {
+            constexpr Real huge = Real(1) / (std::numeric_limits<Real>::min() * Real(16));
+            const Mask near_ahead =
+                both(both(t_near > Real(0), t_near <= std::numeric_limits<Real>::max()), C_far < EE * huge);
+            if (all(either(missed, near_ahead))) return t_near;
+        }
+        return nearest_ahead(t_near, C_far / EE, missed);
+    }
+};
+
+// Calls visit(RootOf<Root>{}) with the root step of `formula`: the one place
+// a formula chosen at run time becomes a template argument.
 template <template <class> class R>
 struct RootOf {
     template <class Lane>
@@ -178,6 +219,8 @@ PROMYK_LANES_INLINE decltype(auto) with_root(Formula formula, Visit&& visit) {
             return visit(RootOf<StableRoot>{});
         case Formula::geometric:
             return visit(RootOf<GeometricRoot>{});
+        case Formula::fma:
+            return visit(RootOf<FmaRoot>{});
         default:
             return visit(RootOf<ArticleRoot>{});
     }

@@ -129,8 +129,6 @@ ArticleRowCounts row_intensities(const ArticleWorld<Real>& world, int w, int i, 
 
 }  // namespace
 
-bool has_lanes(Formula formula) { return formula != Formula::fma; }
-
 PixelResult<double> article_pixel_one_lane(const ArticleWorld<double>& world, int w, int i, int j, Formula formula) {
     return one_lane(world, w, i, j, formula);
 }
@@ -256,7 +254,7 @@ RowCounts one_pixel_row(const ArticleWorld<double>& world, int w, int i, std::ui
 bool sampled_row_in_lanes(const ArticleWorld<double>& world, int w, int i, int spp, std::uint8_t* out, Formula formula,
                           RowCounts& counts, double* I_P, std::uint8_t* branches) {
 #if defined(PROMYK_ISA_KERNELS)
-    if (!has_lanes(formula) || spp <= 1) return false;
+    if (spp <= 1) return false;
     // A skipped pixel: spp misses, each the background, summed in sample
     // order as sample_pixel sums them (not always the background itself).
     double background = world.background;
@@ -307,8 +305,8 @@ RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8
 
 RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out, Formula formula) {
 #if defined(PROMYK_ISA_KERNELS)
-    if (has_lanes(formula)) return lanes_row(world, w, i, out, formula);
-#endif
+    return lanes_row(world, w, i, out, formula);
+#else
     switch (formula) {
         case Formula::stable:
             return one_pixel_row<SphereFormula<Formula::stable>>(world, w, i, out);
@@ -320,6 +318,7 @@ RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8
             break;
     }
     return one_pixel_row<SphereFormula<Formula::article>>(world, w, i, out);
+#endif
 }
 
 }  // namespace promyk

@@ -17,13 +17,9 @@ struct ArticleRowCounts {
     int miss = 0, dark = 0, non_finite = 0;
 };
 
-// Whether the formula has a lane kernel (article, stable, geometric; fma
-// needs fused multiply-adds and stays one pixel at a time).
-bool has_lanes(Formula formula);
-
 // Row i of a w-pixel pane of the article's scene into out[0 .. w), with the
-// sphere's formula: in lanes on the path render/isa.hpp chose (the wasm, and
-// fma: one pixel at a time through trace_ray). Each grey level is to_byte of
+// sphere's formula: in lanes on the path render/isa.hpp chose (the wasm: one
+// pixel at a time through trace_ray). Each grey level is to_byte of
 // trace_ray's intensity, each branch trace_ray's. render/renderer.hpp's
 // render_row is this with the article's formula.
 RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out, Formula formula);

@@ -15,7 +15,6 @@ namespace promyk {
 bool float_row_in_lanes(const ArticleWorld<float>& world, int w, int i, std::uint8_t* out, Formula formula,
                         RowCounts& counts) {
 #if defined(PROMYK_ISA_KERNELS)
-    if (!has_lanes(formula)) return false;
     const lanes::ArticleRow<float> row(world, pane_y<float>(i, w));
     const float* x_E = pane_columns_float(w);
     switch (article_isa()) {

@@ -96,11 +96,11 @@ struct IgnoreSample {
 template <class Real, class F>
 class ArticleKernel final : public Kernel {
     static constexpr bool literal = std::is_same_v<Real, double> && F::id == Formula::article;
-    // Drawn in lanes (render/article_row.hpp): double with the article's,
-    // stable or geometric formula; float and fma a pixel at a time below.
-    static constexpr bool in_lanes = std::is_same_v<Real, double> && F::id != Formula::fma;
-    // float with those formulas: in float lanes (render/float_row.hpp).
-    static constexpr bool in_float_lanes = std::is_same_v<Real, float> && F::id != Formula::fma;
+    // Drawn in lanes (render/article_row.hpp): double, every formula; float
+    // in float lanes (render/float_row.hpp, spp 1); the rest a pixel at a
+    // time below.
+    static constexpr bool in_lanes = std::is_same_v<Real, double>;
+    static constexpr bool in_float_lanes = std::is_same_v<Real, float>;
 
 public:
     ArticleKernel(const Stages& stages, const ArticleWorld<double>& world, int spp)

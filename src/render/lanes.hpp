@@ -221,13 +221,16 @@ PROMYK_LANES_INLINE Vector lane_sqrt(Vector x) {
 }
 
 // a b + c rounded once, lane by lane: one vfmadd where the instruction set
-// has it (__FP_FAST_FMA: AVX2's and AVX-512's translation units), else the C
-// library's exact fma, much slower (render/whole_divisor.hpp then divides).
+// has it (__FP_FAST_FMA: AVX2's and AVX-512's translation units, both given
+// -mfma: -mavx512f alone does not define it), else the
+// C library's fma, exact too but a call a lane (render/whole_divisor.hpp
+// then divides instead).
 PROMYK_LANES_INLINE double lane_fma(double a, double b, double c) { return __builtin_fma(a, b, c); }
+PROMYK_LANES_INLINE float lane_fma(float a, float b, float c) { return __builtin_fmaf(a, b, c); }
 template <class Vector, class = std::enable_if_t<(LaneTraits<Vector>::width > 1)>>
-PROMYK_LANES_INLINE Vector lane_fma(Vector a, double b, Vector c) {
+PROMYK_LANES_INLINE Vector lane_fma(Vector a, Vector b, Vector c) {
     Vector s;
-    for (int k = 0; k < LaneTraits<Vector>::width; ++k) s[k] = __builtin_fma(a[k], b, c[k]);
+    for (int k = 0; k < LaneTraits<Vector>::width; ++k) s[k] = lane_fma(a[k], b[k], c[k]);
     return s;
 }
 

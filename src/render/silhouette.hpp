@@ -26,6 +26,14 @@
 // size; tests/silhouette_test.cpp checks the bound against quad). So
 // Δ(x) < −|E|²_max·g proves delta_g < 0, a miss: the test above takes that
 // extra margin, |E|² being at most 1 + y_E² + z_E² on the pane.
+//
+// Kahan's discriminant (the fma formula) is within the same e: it computes
+// C, |E|² and |S|² − r² as the article does, then w = fl(|E|²·c0), the
+// exact rest ε = |E|²·c0 − w (one fma, exact but for underflow, which the
+// bound's last term covers) and fl(fl(C² − w) + ε): two roundings, of at
+// most u|C² − w| ≤ u(C² + |E|²·c0) and u|result|, where the article has
+// three (C², |E|²·c0 and their difference) of at least as much. So the
+// article's proof, with the article's Δ̂ at x_j, proves Kahan's misses too.
 #pragma once
 
 #include <algorithm>
@@ -89,9 +97,10 @@ inline double geometric_margin(const lanes::ArticleRow<double>& row) {
 }  // namespace silhouette_detail
 
 // The columns of a w-pixel row (x_E[j] = pane_x(j, w)) that may be hit with
-// the formula (the article's and stable: the program's Δ/4; geometric:
-// delta_g); the whole row when nothing can be proven (a sphere around the
-// line of sight, numbers near the ends of double's range).
+// the formula (the article's, stable and fma: the program's Δ/4, fma's
+// computed with Kahan's fmas; geometric: delta_g); the whole row when nothing
+// can be proven (a sphere around the line of sight, numbers near the ends of
+// double's range).
 inline RowSpan row_hit_span(const lanes::ArticleRow<double>& row, const double* x_E, int w,
                             Formula formula = Formula::article) {
     using namespace silhouette_detail;

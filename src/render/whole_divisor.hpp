@@ -29,7 +29,7 @@ inline namespace PROMYK_LANES_ISA {
 // Whether this translation unit's instruction set fuses a multiply-add in
 // one instruction: without it the fma is a slow library call, and the
 // division is cheaper.
-#if defined(__FP_FAST_FMA)  // GCC and clang: an fma instruction (-mfma, -mavx512f)
+#if defined(__FP_FAST_FMA)  // GCC and clang: an fma instruction (-mfma)
 inline constexpr bool fused_multiply_add = true;
 #else
 inline constexpr bool fused_multiply_add = false;
@@ -43,8 +43,8 @@ struct WholeDivisor {
     PROMYK_LANES_INLINE Lane divide(Lane A) const {
         if constexpr (Fused) {
             const Lane q0 = A * y;
-            const Lane r = lane_fma(-q0, b, A);
-            return lane_fma(r, y, q0);
+            const Lane r = lane_fma(-q0, splat<Lane>(b), A);
+            return lane_fma(r, splat<Lane>(y), q0);
         } else {
             return A / b;
         }
