@@ -17,10 +17,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "hard_cases_support.hpp"
+#include "lane_worlds_support.hpp"
 #include "image/quantize.hpp"
 #include "isa_forced.hpp"
 #include "render/article_row.hpp"
+#include "render/float_row.hpp"
 #include "render/isa.hpp"
 #include "render/sampling.hpp"
 #include "render/stages.hpp"
@@ -32,96 +33,52 @@
 namespace {
 
 using namespace promyk;
+using namespace lane_worlds_support;
 
-struct NamedWorld {
-    std::string name;
-    ArticleWorld<double> world;
-    int w;  // the hard case's own pane, or 0
-};
-
+// The example scenes, hard cases and non-finite worlds, and random spheres.
 std::vector<NamedWorld> sample_worlds() {
-    std::vector<NamedWorld> worlds;
-    auto add = [&](const std::string& name, const Scene& scene, int w) {
-        if (!plan_stages(scene).article) return;
-        worlds.push_back({name, article_world(scene), w});
-    };
-    for (const auto& entry : std::filesystem::directory_iterator(PROMYK_SOURCE_DIR "/lessons/scenes")) {
-        const std::string path = entry.path().string();
-        if (entry.path().extension() != ".json" || path.find("schema") != std::string::npos) continue;
-        add(entry.path().filename().string(), load_scene_file(path), 0);
-    }
-    for (const auto& c : hard_cases_support::hard_cases_reference().at("cases")) {
-        const std::string id = c.at("id").get<std::string>();
-        add("hard case " + id, parse_scene(c.at("scene").dump(), id), c.at("pixel").at("w").get<int>());
-    }
-    ArticleWorld<double> base = worlds.front().world;
-    for (const auto& named : worlds)
-        if (named.name == "article.json") base = named.world;
-    ArticleWorld<double> negative_zero = base;
-    negative_zero.background = -0.0;
-    worlds.push_back({"background -0", negative_zero, 0});
-    ArticleWorld<double> bright = base;
-    bright.I = 1e308;  // I D overflows: non-finite samples, and means
-    worlds.push_back({"I = 1e308", bright, 0});
-    ArticleWorld<double> far_light = base;
-    far_light.L = {1e200, 1e200, 1e200};  // |K|^2 overflows
-    worlds.push_back({"light at 1e200", far_light, 0});
-    std::mt19937_64 random(18);
-    std::uniform_real_distribution<double> position(-3, 3), depth(-4, 14), light(-6, 6), unit(0, 1);
-    for (int s = 0; s < 12; ++s) {
-        ArticleWorld<double> world{2, {position(random), position(random), depth(random)}, 0, {}, 1, 0.25};
-        world.r = s % 5 == 0 ? std::pow(10.0, -3 * unit(random)) : 0.05 + 3 * unit(random);
-        world.L = {light(random), light(random), light(random)};
-        if (s % 4 == 0) world.S = {position(random) / 8, position(random) / 8, position(random) / 8};
-        worlds.push_back({"random " + std::to_string(s), world, 0});
-    }
+    std::vector<NamedWorld> worlds = article_worlds();
+    int s = 0;
+    for (const ArticleWorld<double>& world : random_worlds(12)) worlds.push_back({"random " + std::to_string(s++), world, 0});
     return worlds;
 }
-
-constexpr Formula lane_formulas[] = {Formula::article, Formula::stable, Formula::geometric, Formula::fma};
-
-PixelResult<double> traced_ray(const ArticleWorld<double>& world, const Vec3<double>& E, Formula formula) {
-    NullRecorder none;
-    switch (formula) {
-        case Formula::stable:
-            return trace_ray<SphereFormula<Formula::stable>>(world, E, none);
-        case Formula::geometric:
-            return trace_ray<SphereFormula<Formula::geometric>>(world, E, none);
-        case Formula::fma:
-            return trace_ray<SphereFormula<Formula::fma>>(world, E, none);
-        default:
-            return trace_ray(world, E, none);
-    }
-}
-
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 struct PaneCheck {
     int mismatches = 0, count_mismatches = 0;
     long long disagreeing = 0, non_finite = 0, skipped = 0;
 };
 
+bool sampled_in_lanes(const ArticleWorld<double>& world, int w, int i, int spp, std::uint8_t* grey, Formula formula,
+                      RowCounts& drawn, double* I_P, std::uint8_t* branches) {
+    return sampled_row_in_lanes(world, w, i, spp, grey, formula, drawn, I_P, branches);
+}
+bool sampled_in_lanes(const ArticleWorld<float>& world, int w, int i, int spp, std::uint8_t* grey, Formula formula,
+                      RowCounts& drawn, float* I_P, std::uint8_t* branches) {
+    return sampled_float_row_in_lanes(world, w, i, spp, grey, formula, drawn, I_P, branches);
+}
+
 // Every pixel of the w x w pane at spp samples: the lanes' row against
-// sample_pixel over trace_ray.
-PaneCheck check_pane(const ArticleWorld<double>& world, int w, int spp, Formula formula) {
+// sample_pixel over trace_ray, in double or in float.
+template <class Real>
+PaneCheck check_pane(const ArticleWorld<Real>& world, int w, int spp, Formula formula) {
     PaneCheck check;
     std::vector<std::uint8_t> grey(static_cast<std::size_t>(w)), branches(static_cast<std::size_t>(w));
-    std::vector<double> I_P(static_cast<std::size_t>(w));
+    std::vector<Real> I_P(static_cast<std::size_t>(w));
     for (int i = 0; i < w; ++i) {
         RowCounts drawn;
-        REQUIRE(sampled_row_in_lanes(world, w, i, spp, grey.data(), formula, drawn, I_P.data(), branches.data()));
+        REQUIRE(sampled_in_lanes(world, w, i, spp, grey.data(), formula, drawn, I_P.data(), branches.data()));
         RowCounts traced;
         traced.sphere_tests = static_cast<long long>(w) * spp;
         for (int j = 0; j < w; ++j) {
-            const SampledPixel<double> pixel = sample_pixel<double>(
-                w, i, j, spp, world.z_E, [&](int, const Vec3<double>& E) { return traced_ray(world, E, formula); },
-                [](int, const PixelResult<double>&) {});
+            const SampledPixel<Real> pixel = sample_pixel<Real>(
+                w, i, j, spp, world.z_E, [&](int, const Vec3<Real>& E) { return traced_ray(world, E, formula); },
+                [](int, const PixelResult<Real>&) {});
             ++traced.branches[static_cast<int>(pixel.branch)];
             if (!pixel.agree()) ++traced.disagreeing;
             if (pixel.branch == Branch::non_finite && traced.first_non_finite_j < 0) traced.first_non_finite_j = j;
             const auto k = static_cast<std::size_t>(j);
             const bool same = same_bits(pixel.I_P, I_P[k]) && static_cast<std::uint8_t>(pixel.branch) == branches[k] &&
-                              to_byte(pixel.I_P) == grey[k];
+                              to_byte(static_cast<double>(pixel.I_P)) == grey[k];
             if (!same && ++check.mismatches <= 3) {
                 INFO("pixel (" << i << ", " << j << "), spp " << spp << ": traced " << pixel.I_P << " ("
                                << branch_name(pixel.branch) << "), lanes " << I_P[k] << " ("
@@ -185,9 +142,67 @@ TEST_CASE("Sampled rows in lanes: every pixel's mean, branch, grey level and the
     CHECK(non_finite > 100);
 }
 
+// --real float's samples in float lanes: their points computed in double,
+// as many doubles as floats, rounded to float where sample_point rounds.
+// No skipping in float. The panes are smaller: the float lanes are as wide
+// as sixteen, so every path still meets whole vectors and a remainder.
+TEST_CASE("Sampled rows in float lanes: every pixel's mean, branch, grey level and the row's counts bit-identical to "
+          "the traced samples in float, every instruction-set path, each formula",
+          "[sample_lanes][isa][float]") {
+    const std::vector<NamedWorld> worlds = sample_worlds();
+    long long disagreeing = 0, non_finite = 0;
+    for (const Isa isa : supported_isas()) {
+        PathForced forced(isa);
+        for (const Formula formula : lane_formulas) {
+            for (const NamedWorld& named : worlds) {
+                const ArticleWorld<float> world = in_type<float>(named.world);
+                struct Run {
+                    int w, spp;
+                };
+                std::vector<Run> runs = {{64, 4}, {61, 9}, {35, 16}, {32, 16}, {5, 1024}};
+                if (named.w > 0) runs.push_back({named.w, 4});
+                for (const Run run : runs) {
+                    INFO(isa_name(isa) << ", " << formula_name(formula) << ", " << named.name << ", w = " << run.w
+                                       << ", spp " << run.spp);
+                    const PaneCheck check = check_pane(world, run.w, run.spp, formula);
+                    CHECK(check.mismatches == 0);
+                    CHECK(check.count_mismatches == 0);
+                    CHECK(check.skipped == 0);
+                    disagreeing += check.disagreeing;
+                    non_finite += check.non_finite;
+                }
+            }
+        }
+    }
+    CHECK(disagreeing > 1000);
+    CHECK(non_finite > 100);
+}
+
+// 1024 samples that all fail to be finite: float's branch codes have 32
+// bits, and the sum of 1024 non-finite codes wraps to the sum of 1024 lit
+// ones; both agree, and the pixel's branch is the centre sample's.
+TEST_CASE("Sampled rows in float lanes: 1024 non-finite samples a pixel agree and are counted non-finite",
+          "[sample_lanes][float]") {
+    ArticleWorld<double> base = sample_worlds().front().world;
+    for (const NamedWorld& named : sample_worlds())
+        if (named.name == "article.json") base = named.world;
+    ArticleWorld<float> world = in_type<float>(base);
+    world.r = NAN;  // Δ is not a number in every sample: none is a miss, none finite
+    for (const Isa isa : supported_isas()) {
+        PathForced forced(isa);
+        INFO(isa_name(isa));
+        const int w = 20;
+        const PaneCheck check = check_pane(world, w, 1024, Formula::article);
+        CHECK(check.mismatches == 0);
+        CHECK(check.count_mismatches == 0);
+        CHECK(check.non_finite == static_cast<long long>(w) * w);
+    }
+}
+
 TEST_CASE("Sampled rows in lanes: one sample is not drawn in lanes", "[sample_lanes]") {
     const NamedWorld named = sample_worlds().front();
     std::vector<std::uint8_t> grey(16);
     RowCounts counts;
     CHECK_FALSE(sampled_row_in_lanes(named.world, 16, 3, 1, grey.data(), Formula::article, counts));
+    CHECK_FALSE(sampled_float_row_in_lanes(in_type<float>(named.world), 16, 3, 1, grey.data(), Formula::article, counts));
 }

@@ -15,6 +15,7 @@
 
 #include "image/quantize.hpp"
 #include "isa_forced.hpp"
+#include "lane_worlds_support.hpp"
 #include "math/real.hpp"
 #include "render/article_lanes.hpp"
 #include "render/article_row.hpp"
@@ -27,25 +28,10 @@
 #include "trace/recorder.hpp"
 
 using namespace promyk;
+using lane_worlds_support::lane_formulas;
+using lane_worlds_support::traced_ray;
 
 namespace {
-
-constexpr Formula formulas[] = {Formula::article, Formula::stable, Formula::fma, Formula::geometric};
-
-// The traced path's pixel with the formula.
-PixelResult<double> traced(const ArticleWorld<double>& world, Formula formula, const Vec3d& E) {
-    NullRecorder none;
-    switch (formula) {
-        case Formula::stable:
-            return trace_ray<SphereFormula<Formula::stable>>(world, E, none);
-        case Formula::geometric:
-            return trace_ray<SphereFormula<Formula::geometric>>(world, E, none);
-        case Formula::fma:
-            return trace_ray<SphereFormula<Formula::fma>>(world, E, none);
-        default:
-            return trace_ray<SphereFormula<Formula::article>>(world, E, none);
-    }
-}
 
 // Rows drawn against the traced path on every path, with every formula
 // that has lanes; returns the pixels skipped.
@@ -54,12 +40,12 @@ long long check_world(const ArticleWorld<double>& world, int w, int& mismatches)
     long long skipped = 0;
     for (const Isa isa : supported_isas()) {
       PathForced forced(isa);
-      for (const Formula formula : formulas) {
+      for (const Formula formula : lane_formulas) {
         for (int i = 0; i < w; ++i) {
             const RowCounts drawn = render_row(world, w, i, grey.data(), formula);
             int misses = 0;
             for (int j = 0; j < w; ++j) {
-                const PixelResult<double> pixel = traced(world, formula, pane_point(i, j, w, world.z_E));
+                const PixelResult<double> pixel = traced_ray(world, pane_point(i, j, w, world.z_E), formula);
                 misses += pixel.branch == Branch::miss;
                 if (grey[static_cast<std::size_t>(j)] != to_byte(pixel.I_P)) {
                     if (mismatches++ < 5)
@@ -94,7 +80,7 @@ TEST_CASE("skipping: the proven columns are misses of the kernel's own delta", "
         for (int j = 0; j < w; ++j) x_E[static_cast<std::size_t>(j)] = pane_x<double>(j, w);
         for (int i = 0; i < w; ++i) {
             const lanes::ArticleRow<double> row(world, pane_y<double>(i, w));
-            for (const Formula formula : formulas) {
+            for (const Formula formula : lane_formulas) {
                 const RowSpan span = row_hit_span(row, x_E.data(), w, formula);
                 REQUIRE(0 <= span.lo);
                 REQUIRE(span.lo <= span.hi);

@@ -1,7 +1,8 @@
 // The article's drawn rows compiled for each wider instruction set
 // (render/article_row_lanes.hpp in render/article_row_avx2.cpp and
 // ..._avx512.cpp; sampled rows, render/sample_lanes.hpp, there too; float
-// rows in render/float_row_avx2.cpp and ..._avx512.cpp); render_row and
+// rows, sampled ones too, in render/float_row_avx2.cpp and ..._avx512.cpp);
+// render_row and
 // sampled_row_in_lanes (render/article_row.cpp) and float_row_in_lanes
 // (render/float_row.cpp) call the one render/isa.hpp chose. Declared in each set's own namespace, which is
 // part of every symbol those files define.
@@ -38,6 +39,9 @@ RowCounts draw_sampled_article_row(const ArticleRow<double>& row, int w, int i, 
                                    std::uint8_t* out, double* I_P, std::uint8_t* branches, Formula formula);
 // The row in float (--real float); x_E[j] = pane_x<float>(j, w).
 RowCounts draw_float_row(const ArticleRow<float>& row, const float* x_E, int w, std::uint8_t* out, Formula formula);
+// Row i in float from spp > 1 samples a pixel, every column.
+RowCounts draw_sampled_float_row(const ArticleRow<float>& row, int w, int i, int spp, std::uint8_t* out, float* I_P,
+                                 std::uint8_t* branches, Formula formula);
 }
 namespace avx512 {
 RowCounts draw_article_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out,
@@ -50,6 +54,9 @@ RowCounts draw_sampled_article_row(const ArticleRow<double>& row, int w, int i, 
                                    std::uint8_t* out, double* I_P, std::uint8_t* branches, Formula formula);
 // The row in float (--real float); x_E[j] = pane_x<float>(j, w).
 RowCounts draw_float_row(const ArticleRow<float>& row, const float* x_E, int w, std::uint8_t* out, Formula formula);
+// Row i in float from spp > 1 samples a pixel, every column.
+RowCounts draw_sampled_float_row(const ArticleRow<float>& row, int w, int i, int spp, std::uint8_t* out, float* I_P,
+                                 std::uint8_t* branches, Formula formula);
 }
 #if defined(__clang__)
 #pragma clang diagnostic pop

@@ -4,12 +4,18 @@
 // First: it opens the inline namespace the declarations below extend.
 #include "render/article_row_lanes.hpp"
 #include "render/article_row_isa.hpp"
+#include "render/sample_lanes.hpp"
 
 namespace promyk::lanes {
 inline namespace avx512 {  // inline, as lanes.hpp opened it in this file
 
 RowCounts draw_float_row(const ArticleRow<float>& row, const float* x_E, int w, std::uint8_t* out, Formula formula) {
     return draw_row<Float16>(row, x_E, w, out, formula);
+}
+
+RowCounts draw_sampled_float_row(const ArticleRow<float>& row, int w, int i, int spp, std::uint8_t* out, float* I_P,
+                                 std::uint8_t* branches, Formula formula) {
+    return draw_sampled_row<Float16>(row, w, i, spp, 0, w, out, I_P, branches, formula);
 }
 
 }  // namespace avx512

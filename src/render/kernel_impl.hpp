@@ -97,7 +97,7 @@ template <class Real, class F>
 class ArticleKernel final : public Kernel {
     static constexpr bool literal = std::is_same_v<Real, double> && F::id == Formula::article;
     // Drawn in lanes (render/article_row.hpp): double, every formula; float
-    // in float lanes (render/float_row.hpp, spp 1); the rest a pixel at a
+    // in float lanes (render/float_row.hpp), samples too; the rest a pixel at a
     // time below.
     static constexpr bool in_lanes = std::is_same_v<Real, double>;
     static constexpr bool in_float_lanes = std::is_same_v<Real, float>;
@@ -202,6 +202,9 @@ private:
         if constexpr (in_lanes) {
             // The samples in lanes (render/sample_lanes.hpp), the same bits.
             if (sampled_row_in_lanes(world_, w, i, spp(), out, F::id, counts)) return counts;
+        }
+        if constexpr (in_float_lanes) {
+            if (sampled_float_row_in_lanes(world_, w, i, spp(), out, F::id, counts)) return counts;
         }
         NullRecorder none;
         counts.sphere_tests = static_cast<long long>(w) * spp();

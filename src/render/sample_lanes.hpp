@@ -4,13 +4,18 @@
 // intensities in sample order, counts its branches and keeps its centre
 // sample's, as render/sampling.hpp's sample_pixel does, and the sample's
 // point is computed by the same operations as sample_point, so every pixel
-// has the one-pixel path's bits (tests/sample_lanes_test.cpp). Included by
+// has the one-pixel path's bits (tests/sample_lanes_test.cpp). In double or
+// in float (--real float): a float kernel's points are computed in double
+// lanes, as many as its float lanes, as sample_point computes them, and
+// rounded to float where it does. Included by
 // one translation unit per instruction set, like render/article_row_lanes.hpp;
 // calls nothing that is not inlined.
 #pragma once
 
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
+#include <utility>
 
 #include "render/article_lanes.hpp"
 #include "render/article_row_lanes.hpp"
@@ -21,25 +26,103 @@
 namespace promyk::lanes {
 inline namespace PROMYK_LANES_ISA {
 
-// A vector's lanes as unsigned 32-bit integers (the hash) and as signed
-// ones (to convert the jitter to double: it is below 2^16).
-template <class Vector>
+// n lanes as unsigned 32-bit integers (the hash) and as signed ones (to
+// convert the jitter to double: it is below 2^16).
+template <int n>
 struct SampleInts;
 template <>
-struct SampleInts<Double2> {
+struct SampleInts<2> {
     typedef std::uint32_t U __attribute__((vector_size(8)));
     typedef std::int32_t I __attribute__((vector_size(8)));
 };
 template <>
-struct SampleInts<Double4> {
+struct SampleInts<4> {
     typedef std::uint32_t U __attribute__((vector_size(16)));
     typedef std::int32_t I __attribute__((vector_size(16)));
 };
 template <>
-struct SampleInts<Double8> {
+struct SampleInts<8> {
     typedef std::uint32_t U __attribute__((vector_size(32)));
     typedef std::int32_t I __attribute__((vector_size(32)));
 };
+template <>
+struct SampleInts<16> {
+    typedef std::uint32_t U __attribute__((vector_size(64)));
+    typedef std::int32_t I __attribute__((vector_size(64)));
+};
+template <class Vector>
+using UintsOf = typename SampleInts<LaneTraits<Vector>::width>::U;
+template <class Vector>
+using IntsOf = typename SampleInts<LaneTraits<Vector>::width>::I;
+
+// The double vector a kernel's samples are placed in (sample_point computes
+// in double): the kernel's own in double; in float, a register of doubles,
+// half as many as the floats, so a float vector's points are two of them
+// (a vector of sixteen doubles, wider than any register, GCC keeps in
+// memory and compares lane by lane).
+// `real`: a part's coordinates rounded to the kernel's Real.
+template <class Lane>
+struct PointLanes {
+    using type = Lane;
+    using real = Lane;
+};
+template <>
+struct PointLanes<Float4> {
+    using type = Double2;
+    using real = Float2;
+};
+template <>
+struct PointLanes<Float8> {
+    using type = Double4;
+    using real = Float4;
+};
+template <>
+struct PointLanes<Float16> {
+    using type = Double8;
+    using real = Float8;
+};
+template <class Lane>
+using PointsOf = typename PointLanes<Lane>::type;
+// How many point vectors a kernel's vector has: 1 in double, 2 in float.
+template <class Lane>
+inline constexpr int parts_of = LaneTraits<Lane>::width / LaneTraits<PointsOf<Lane>>::width;
+
+// Part k of a vector v of `parts` parts (a half, a register's worth): by
+// memcpy, which GCC compiles to an extract. A vector joined from its parts:
+// by a shuffle of the two registers (through memory, GCC stored the halves
+// and loaded them as one, a store-forwarding stall a sample).
+template <class Part, class Vector>
+PROMYK_LANES_INLINE Part part_of(const Vector& v, int k) {
+    Part part;
+    std::memcpy(&part, reinterpret_cast<const char*>(&v) + k * sizeof part, sizeof part);
+    return part;
+}
+template <class Part, std::size_t... k>
+PROMYK_LANES_INLINE auto joined_lanes(Part low, Part high, std::index_sequence<k...>) {
+    return __builtin_shufflevector(low, high, k...);
+}
+template <class Vector, class Part, int parts>
+PROMYK_LANES_INLINE Vector joined(const Part (&p)[parts]) {
+    static_assert(parts == 1 || parts == 2);
+    static_assert(sizeof(Vector) == parts * sizeof(Part));
+    if constexpr (parts == 1) {
+        return p[0];
+    } else {
+        constexpr std::size_t n = sizeof(Part) / sizeof(p[0][0]);
+        return joined_lanes(p[0], p[1], std::make_index_sequence<2 * n>{});
+    }
+}
+
+// A sample's branch code a lane: unsigned integers as wide as the kernel's
+// masks (64 bits in double, 32 in float).
+template <class Lane>
+struct CodeLanes {
+    using Mask = MaskOf<Lane>;
+    using Element = std::make_unsigned_t<std::remove_cv_t<std::remove_reference_t<decltype(Mask{}[0])>>>;
+    typedef Element type __attribute__((vector_size(sizeof(Mask))));
+};
+template <class Lane>
+using CodeOf = typename CodeLanes<Lane>::type;
 
 // render/samples.hpp's mix32, on one integer or on lanes (its own copy:
 // the shared inline one must not be compiled here).
@@ -70,52 +153,66 @@ struct SampleRow {
 // exact, so both are the correctly rounded value of the same exact x / d,
 // the same bits (subnormal results too: IEEE rounds both the same way; the
 // product cannot overflow, and a NaN or infinity stays what it was).
-// Otherwise a division, or for the samples' coordinates (Whole) two fmas
-// (render/whole_divisor.hpp). Chosen once a row (a template argument, so the
-// sample loop has no branch on it), or once a pixel for the mean (exact).
+// Otherwise a division, or for the samples' coordinates in double (Whole)
+// two fmas (render/whole_divisor.hpp). Chosen once a row (a template
+// argument, so the sample loop has no branch on it), or once a pixel for
+// the mean (exact). d is n in the lanes' own precision, as sample_point's
+// Real(w) and sample_pixel's Real(spp).
 PROMYK_LANES_INLINE bool power_of_two(int n) { return n > 0 && (n & (n - 1)) == 0; }
 template <class Vector, bool Exact, bool Whole = false>
 struct Divisor {
-    double d, reciprocal;
-    WholeDivisor<Vector, Whole && fused_multiply_add> whole;
-    explicit Divisor(int n) : d(n), reciprocal(1.0 / n), whole(n) {}
+    using Real = typename LaneTraits<Vector>::Real;
+    static constexpr bool fused = Whole && fused_multiply_add && std::is_same_v<Real, double>;
+    Real d, reciprocal;
+    WholeDivisor<Vector, fused> whole;
+    explicit Divisor(int n) : d(Real(n)), reciprocal(Real(1) / Real(n)), whole(n) {}
     PROMYK_LANES_INLINE Vector divide(Vector x) const {
         if constexpr (Exact) return x * reciprocal;
-        else return whole.divide(x);
+        else if constexpr (fused) return whole.divide(x);
+        else return x / d;
     }
 };
 template <class Vector>
 struct MeanDivisor {
-    double d, reciprocal;
+    using Real = typename LaneTraits<Vector>::Real;
+    Real d, reciprocal;
     bool exact;
-    explicit MeanDivisor(int n) : d(n), reciprocal(1.0 / n), exact(power_of_two(n)) {}
+    explicit MeanDivisor(int n) : d(Real(n)), reciprocal(Real(1) / Real(n)), exact(power_of_two(n)) {}
     PROMYK_LANES_INLINE Vector divide(Vector x) const { return exact ? x * reciprocal : x / d; }
 };
 
-// A sample's branch as one integer a lane, its fields 16 bits wide (spp is
-// at most 1024): 1 at bit 0 if it missed, at bit 16 if dark, at bit 32 if
-// non-finite (lit: none; the branches exclude each other). Summed, the fields
-// count a pixel's samples per branch; the centre sample's is kept whole. One
-// vector where three masks were: a third of the selects and registers.
-constexpr int miss_field = 0, dark_field = 16, non_finite_field = 32;
-template <class Mask>
-PROMYK_LANES_INLINE Mask branch_code(Mask miss, Mask dark, Mask non_finite) {
-    constexpr std::int64_t one = 1;
-    return (miss & (one << miss_field)) | (dark & (one << dark_field)) | (non_finite & (one << non_finite_field));
+// A sample's branch as one unsigned integer a lane, its fields 11 bits wide
+// (spp is at most 1024 = 2^10): 1 at bit 0 if it missed, at bit 11 if dark,
+// at bit 22 if non-finite (lit: none; the branches exclude each other).
+// Summed, the fields count a pixel's samples per branch; the centre sample's
+// is kept whole. One vector where three masks were: a third of the selects
+// and registers. In 32 bits the non-finite field holds 1023: 1024 such
+// samples wrap the sum to 0, "all lit", which agrees as "all non-finite"
+// does, and the sums serve only to tell whether the samples agree.
+constexpr int miss_field = 0, dark_field = 11, non_finite_field = 22;
+template <class Code, class Mask>
+PROMYK_LANES_INLINE Code branch_code(Mask miss, Mask dark, Mask non_finite) {
+    using Element = std::remove_reference_t<decltype(Code{}[0])>;
+    constexpr Element one = 1;
+    return (reinterpret_cast<Code>(miss) & (one << miss_field)) | (reinterpret_cast<Code>(dark) & (one << dark_field)) |
+           (reinterpret_cast<Code>(non_finite) & (one << non_finite_field));
 }
 
-// The pixels of one vector: their sums, branch counts and centre samples.
-template <class Vector>
+// The pixels of one vector of the kernel's lanes: their sums, branch counts
+// and centre samples.
+template <class Lane>
 struct SampledLanes {
-    using Mask = MaskOf<Vector>;
-    using U = typename SampleInts<Vector>::U;
-    Vector x0;  // 2 j + 1, each lane's pixel
-    U j_hash;   // j hash_j
+    using Points = PointsOf<Lane>;
+    static constexpr int parts = parts_of<Lane>;
+    using Code = CodeOf<Lane>;
+    Points x0[parts];     // 2 j + 1, each lane's pixel
+    UintsOf<Lane> j_hash;  // j hash_j
     // The first sample's intensity x is -0 + x, all of x's bits (+0 + x
     // would make a -0 +0), and its d is below infinity.
-    Vector sum = splat<Vector>(-0.0), nearest = splat<Vector>(INFINITY);
-    Mask branches{};  // samples per branch, summed branch_codes
-    Mask centre{};    // the centre sample's branch_code
+    Lane sum = splat<Lane>(-0.0);
+    Points nearest[parts];  // each part's from splat<Points>(INFINITY)
+    Code branches{};  // samples per branch, summed branch_codes
+    Code centre{};    // the centre sample's branch_code
 };
 
 // The row's numbers that do not change from sample to sample.
@@ -138,42 +235,70 @@ struct SampleCounter {
 };
 
 // A sample's point E = (x, y, z_E) in each lane, and d, its offset's squared
-// distance from the pixel's centre.
-template <class Vector>
+// distance from the pixel's centre (in double, as sample_pixel compares it).
+template <class Lane>
 struct SamplePoint {
-    Vector x, y, d;
+    Lane x, y;
+    PointsOf<Lane> d[parts_of<Lane>];
 };
 
-// Sample c.s's point for the vector's pixels, as sample_point computes it.
-template <class Vector, class CellDivisor, class WDivisor>
-PROMYK_LANES_INLINE SamplePoint<Vector> sample_point_lanes(const SampleGrid& grid, const CellDivisor& by_cell,
-                                                           const WDivisor& by_w,
-                                                           const SampleCounter& c, const SampledLanes<Vector>& p) {
-    using I = typename SampleInts<Vector>::I;
+// Sample c.s's point for the vector's pixels, as sample_point computes it:
+// in double, x's and y's numerators rounded to the kernel's Real before
+// by_w divides them by Real(w).
+template <class Lane, class CellDivisor, class WDivisor>
+PROMYK_LANES_INLINE SamplePoint<Lane> sample_point_lanes(const SampleGrid& grid, const CellDivisor& by_cell,
+                                                         const WDivisor& by_w, const SampleCounter& c,
+                                                         const SampledLanes<Lane>& p) {
+    using Points = PointsOf<Lane>;
+    using RealPart = typename PointLanes<Lane>::real;
+    using Real = typename LaneTraits<Lane>::Real;
+    using I = IntsOf<Lane>;
+    constexpr int parts = parts_of<Lane>;
     // sample_offset_on: the hash's 16 bits of jitter along each axis. Its
     // (s mod n + jitter_u) / n is (2^16 (s mod n) + h_u) / (2^16 n), the same
     // exact quotient rounded once (the numerator, below 2^31, and 2^16 n are
     // exact in double), so one conversion and one division give its bits.
     const auto h = mix32_lanes(grid.i_hash ^ mix32_lanes(p.j_hash ^ c.hash));
-    const Vector u = by_cell.divide(__builtin_convertvector(reinterpret_cast<I>((h & 0xffffU) | (c.column << 16)), Vector)) - 0.5;
-    const Vector v = by_cell.divide(__builtin_convertvector(reinterpret_cast<I>((h >> 16) | (c.row << 16)), Vector)) - 0.5;
-    // sample_point. -(y0 + 2 v) is (-y0) - 2 v but for a zero's sign, which
-    // adding 1 erases.
-    return {by_w.divide(p.x0 + 2.0 * u) - 1.0, by_w.divide(grid.minus_y0 - 2.0 * v) + 1.0, u * u + v * v};
+    const I h_u = reinterpret_cast<I>((h & 0xffffU) | (c.column << 16));
+    const I h_v = reinterpret_cast<I>((h >> 16) | (c.row << 16));
+    SamplePoint<Lane> E;
+    RealPart x[parts], y[parts];  // the numerators of sample_point's divisions
+    for (int k = 0; k < parts; ++k) {
+        const Points u = by_cell.divide(__builtin_convertvector(part_of<IntsOf<Points>>(h_u, k), Points)) - 0.5;
+        const Points v = by_cell.divide(__builtin_convertvector(part_of<IntsOf<Points>>(h_v, k), Points)) - 0.5;
+        // sample_point. -(y0 + 2 v) is (-y0) - 2 v but for a zero's sign,
+        // which adding 1 erases (rounding to float is symmetric:
+        // -Real(y0 + 2 v) is Real(-(y0 + 2 v)), the same bits).
+        x[k] = __builtin_convertvector(p.x0[k] + 2.0 * u, RealPart);
+        y[k] = __builtin_convertvector(grid.minus_y0 - 2.0 * v, RealPart);
+        E.d[k] = u * u + v * v;
+    }
+    E.x = by_w.divide(joined<Lane>(x)) - Real(1);
+    E.y = by_w.divide(joined<Lane>(y)) + Real(1);
+    return E;
 }
 
 // A sample of the vector's pixels at its points E, traced with the formula
 // Root and taken into the pixels' sums and counts.
-template <class Vector, template <class> class Root>
-PROMYK_LANES_INLINE void take_sample(const ArticleRow<double>& row, const SamplePoint<Vector>& E,
-                                     SampledLanes<Vector>& p) {
-    using Mask = MaskOf<Vector>;
-    const LanePixel<Vector> pixel = article_lanes<Root, false>(SampleRow<Vector>(row, E.y), E.x);
-    const Mask code = branch_code(pixel.miss, pixel.dark, pixel.non_finite);
+template <class Lane, template <class> class Root, class Real = typename LaneTraits<Lane>::Real>
+PROMYK_LANES_INLINE void take_sample(const ArticleRow<Real>& row, const SamplePoint<Lane>& E, SampledLanes<Lane>& p) {
+    using Code = CodeOf<Lane>;
+    const LanePixel<Lane> pixel = article_lanes<Root, false>(SampleRow<Lane>(row, E.y), E.x);
+    const Code code = branch_code<Code>(pixel.miss, pixel.dark, pixel.non_finite);
     p.sum = p.sum + pixel.I_P;
     p.branches += code;
-    const Mask nearer = E.d < p.nearest;
-    p.nearest = select(nearer, E.d, p.nearest);
+    // Whether the sample is the nearest yet to its pixel's centre, compared
+    // in double, part by part; -1 (true) stays all ones in the code's width.
+    using Points = PointsOf<Lane>;
+    UintsOf<Points> nearer_32[parts_of<Lane>];
+    Code nearer{};
+    for (int k = 0; k < parts_of<Lane>; ++k) {
+        const auto d_nearer = E.d[k] < p.nearest[k];
+        p.nearest[k] = select(d_nearer, E.d[k], p.nearest[k]);
+        if constexpr (parts_of<Lane> == 1) nearer = __builtin_convertvector(d_nearer, Code);
+        else nearer_32[k] = __builtin_convertvector(d_nearer, UintsOf<Points>);
+    }
+    if constexpr (parts_of<Lane> > 1) nearer = joined<Code>(nearer_32);
     p.centre = (code & nearer) | (p.centre & ~nearer);
 }
 
@@ -190,24 +315,27 @@ struct RowTally {
 // levels into out, their branches into the tally (and, for the tests, I_P
 // and branches). A pixel's branch is its centre sample's, or non-finite when
 // its mean is; its samples agree when each branch took none or all of them.
-template <class Vector, class Div>
-PROMYK_LANES_INLINE void put_sampled(const SampledLanes<Vector>& p, int spp, const Div& by_spp, int j, int n,
-                                     MaskOf<Vector> kept, std::uint8_t* out, RowTally<Vector>& tally, double* I_P,
+template <class Lane, class Div, class Real = typename LaneTraits<Lane>::Real>
+PROMYK_LANES_INLINE void put_sampled(const SampledLanes<Lane>& p, int spp, const Div& by_spp, int j, int n,
+                                     MaskOf<Lane> kept, std::uint8_t* out, RowTally<Lane>& tally, Real* I_P,
                                      std::uint8_t* branches) {
-    using Mask = MaskOf<Vector>;
-    constexpr int width = LaneTraits<Vector>::width;
-    const Vector mean = by_spp.divide(p.sum);  // sum / spp
+    using Mask = MaskOf<Lane>;
+    using Code = CodeOf<Lane>;
+    using Element = std::remove_reference_t<decltype(Code{}[0])>;
+    constexpr int width = LaneTraits<Lane>::width;
+    const Lane mean = by_spp.divide(p.sum);  // sum / spp
     put_grey_levels(mean, out + j, n);
     // The samples agree when all took one branch: their codes' sum is spp
     // times that branch's code (0 where all are lit).
-    const std::int64_t all = spp, one = 1;
-    const Mask sum = p.branches;
-    const Mask agree = (sum == 0) | (sum == all << miss_field) | (sum == all << dark_field) |
-                       (sum == all << non_finite_field);
+    const Element all = static_cast<Element>(spp), one = 1;
+    const Code sum = p.branches;
+    const Mask agree = reinterpret_cast<Mask>((sum == 0) | (sum == all << miss_field) | (sum == all << dark_field) |
+                                              (sum == all << non_finite_field));
     tally.disagreeing -= ~agree & kept;
-    const Mask centre_miss = p.centre == one << miss_field, centre_dark = p.centre == one << dark_field,
-               centre_non_finite = p.centre == one << non_finite_field;
-    const Mask finite = mean * 0.0 == 0.0;  // finite_value
+    const Mask centre_miss = reinterpret_cast<Mask>(p.centre == one << miss_field),
+               centre_dark = reinterpret_cast<Mask>(p.centre == one << dark_field),
+               centre_non_finite = reinterpret_cast<Mask>(p.centre == one << non_finite_field);
+    const Mask finite = mean * Real(0) == Real(0);  // finite_value
     const Mask non_finite = (~finite | centre_non_finite) & kept;
     tally.miss -= finite & centre_miss & kept;
     tally.dark -= finite & centre_dark & kept;
@@ -230,33 +358,38 @@ PROMYK_LANES_INLINE void put_sampled(const SampledLanes<Vector>& p, int spp, con
 // Row grid.i into out[0 .. w) from grid.spp samples a pixel, with the
 // formula Root: two vectors of pixels in flight (two independent chains of
 // square roots and divisions), then one for the rest.
-template <class Vector, template <class> class Root, bool ExactCell, bool ExactW>
-PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, const SampleGrid& grid, int lo, int hi,
-                                               std::uint8_t* out, double* I_P, std::uint8_t* branches) {
-    constexpr int width = LaneTraits<Vector>::width;
-    using U = typename SampleInts<Vector>::U;
-    using Mask = MaskOf<Vector>;
+template <class Lane, template <class> class Root, bool ExactCell, bool ExactW,
+          class Real = typename LaneTraits<Lane>::Real>
+PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<Real>& row, const SampleGrid& grid, int lo, int hi,
+                                               std::uint8_t* out, Real* I_P, std::uint8_t* branches) {
+    using Points = PointsOf<Lane>;
+    constexpr int width = LaneTraits<Lane>::width;
+    using U = UintsOf<Lane>;
+    using Mask = MaskOf<Lane>;
     // by_cell: 2^16 n, the jitter's denominator (take_sample); exact when n is.
     // by_w and by_cell divide bounded numerators, never -0: WholeDivisor's
-    // fmas may stand for the division; by_spp divides any sum.
-    const Divisor<Vector, ExactCell, true> by_cell(65536 * grid.n);
-    const Divisor<Vector, ExactW, true> by_w(grid.w);
-    const MeanDivisor<Vector> by_spp(grid.spp);
-    RowTally<Vector> tally;
+    // fmas may stand for the division (in double); by_spp divides any sum.
+    const Divisor<Points, ExactCell, true> by_cell(65536 * grid.n);
+    const Divisor<Lane, ExactW, true> by_w(grid.w);
+    const MeanDivisor<Lane> by_spp(grid.spp);
+    RowTally<Lane> tally;
     const int spp = grid.spp;
     RowCounts counts;
     counts.sphere_tests = static_cast<long long>(hi - lo) * spp;
     U lane_numbers;  // 0, 1, .. width - 1
     for (int k = 0; k < width; ++k) lane_numbers[k] = static_cast<std::uint32_t>(k);
     const auto pixels = [&](int j) __attribute__((always_inline)) {
-        SampledLanes<Vector> p;
+        SampledLanes<Lane> p;
         const U j_lanes = static_cast<std::uint32_t>(j) + lane_numbers;
-        p.x0 = 2.0 * __builtin_convertvector(j_lanes, Vector) + 1.0;
+        for (int k = 0; k < parts_of<Lane>; ++k) {
+            p.x0[k] = 2.0 * __builtin_convertvector(part_of<UintsOf<Points>>(j_lanes, k), Points) + 1.0;
+            p.nearest[k] = splat<Points>(INFINITY);
+        }
         p.j_hash = j_lanes * hash_j;
         return p;
     };
     const std::uint32_t n = static_cast<std::uint32_t>(grid.n);
-    const auto points = [&](const SampleCounter& c, const SampledLanes<Vector>& p) __attribute__((always_inline)) {
+    const auto points = [&](const SampleCounter& c, const SampledLanes<Lane>& p) __attribute__((always_inline)) {
         return sample_point_lanes(grid, by_cell, by_w, c, p);
     };
     // Each sample's points are computed a sample ahead, in the step before
@@ -266,31 +399,31 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, co
     // chain rather than by its work. The last pair computes one unused.
     int j = lo;
     if (j + 2 * width <= hi) {
-        SampledLanes<Vector> p0 = pixels(j), p1 = pixels(j + width);
-        SamplePoint<Vector> E0 = points(SampleCounter{}, p0), E1 = points(SampleCounter{}, p1);
+        SampledLanes<Lane> p0 = pixels(j), p1 = pixels(j + width);
+        SamplePoint<Lane> E0 = points(SampleCounter{}, p0), E1 = points(SampleCounter{}, p1);
         for (; j + 2 * width <= hi; j += 2 * width) {
             SampleCounter c;
             for (; c.s + 1 < spp; ) {
                 SampleCounter c_next = c;
                 c_next.next(n);
-                const SamplePoint<Vector> next0 = points(c_next, p0), next1 = points(c_next, p1);
-                take_sample<Vector, Root>(row, E0, p0);
-                take_sample<Vector, Root>(row, E1, p1);
+                const SamplePoint<Lane> next0 = points(c_next, p0), next1 = points(c_next, p1);
+                take_sample<Lane, Root>(row, E0, p0);
+                take_sample<Lane, Root>(row, E1, p1);
                 c = c_next, E0 = next0, E1 = next1;
             }
-            const SampledLanes<Vector> q0 = pixels(j + 2 * width), q1 = pixels(j + 3 * width);
-            const SamplePoint<Vector> next0 = points(SampleCounter{}, q0), next1 = points(SampleCounter{}, q1);
-            take_sample<Vector, Root>(row, E0, p0);
-            take_sample<Vector, Root>(row, E1, p1);
+            const SampledLanes<Lane> q0 = pixels(j + 2 * width), q1 = pixels(j + 3 * width);
+            const SamplePoint<Lane> next0 = points(SampleCounter{}, q0), next1 = points(SampleCounter{}, q1);
+            take_sample<Lane, Root>(row, E0, p0);
+            take_sample<Lane, Root>(row, E1, p1);
             put_sampled(p0, spp, by_spp, j, width, ~Mask{}, out, tally, I_P, branches);
             put_sampled(p1, spp, by_spp, j + width, width, ~Mask{}, out, tally, I_P, branches);
             p0 = q0, p1 = q1, E0 = next0, E1 = next1;
         }
     }
     for (; j < hi; j += width) {  // the last vector's lanes past hi are computed and dropped
-        SampledLanes<Vector> p = pixels(j);
+        SampledLanes<Lane> p = pixels(j);
         SampleCounter c;
-        for (; c.s < spp; c.next(n)) take_sample<Vector, Root>(row, sample_point_lanes(grid, by_cell, by_w, c, p), p);
+        for (; c.s < spp; c.next(n)) take_sample<Lane, Root>(row, sample_point_lanes(grid, by_cell, by_w, c, p), p);
         const int kept_lanes = hi - j < width ? hi - j : width;
         Mask kept{};
         for (int k = 0; k < kept_lanes; ++k) kept[k] = -1;
@@ -312,10 +445,10 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, co
 }
 
 // Columns [lo, hi) of row i of a w-pixel pane, spp > 1 samples a pixel, the
-// formula chosen at run time (once a row).
-template <class Vector>
-PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, int w, int i, int spp, int lo, int hi,
-                                               std::uint8_t* out, double* I_P, std::uint8_t* branches,
+// formula chosen at run time (once a row); Lane: doubles or floats.
+template <class Lane, class Real = typename LaneTraits<Lane>::Real>
+PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<Real>& row, int w, int i, int spp, int lo, int hi,
+                                               std::uint8_t* out, Real* I_P, std::uint8_t* branches,
                                                Formula formula) {
     SampleGrid grid;
     grid.i = i, grid.w = w, grid.spp = spp;
@@ -327,10 +460,10 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<double>& row, in
     return with_root(formula, [&](auto root) {
         using R = decltype(root);
         if (cell_exact)
-            return w_exact ? draw_sampled_row<Vector, R::template Root, true, true>(row, grid, lo, hi, out, I_P, branches)
-                           : draw_sampled_row<Vector, R::template Root, true, false>(row, grid, lo, hi, out, I_P, branches);
-        return w_exact ? draw_sampled_row<Vector, R::template Root, false, true>(row, grid, lo, hi, out, I_P, branches)
-                       : draw_sampled_row<Vector, R::template Root, false, false>(row, grid, lo, hi, out, I_P, branches);
+            return w_exact ? draw_sampled_row<Lane, R::template Root, true, true>(row, grid, lo, hi, out, I_P, branches)
+                           : draw_sampled_row<Lane, R::template Root, true, false>(row, grid, lo, hi, out, I_P, branches);
+        return w_exact ? draw_sampled_row<Lane, R::template Root, false, true>(row, grid, lo, hi, out, I_P, branches)
+                       : draw_sampled_row<Lane, R::template Root, false, false>(row, grid, lo, hi, out, I_P, branches);
     });
 }
 
