@@ -78,29 +78,16 @@ ArticleRowCounts article_chunk(const ArticleWorld<Real>& world, int w, int i, in
     return counts;
 }
 
-// to_byte (image/quantize.hpp) two pixels at a time, the same steps: clamp
-// to [0, 1] (NaN to 0), scale by 255, truncate, and round a half up. As a
-// loop of scalar to_byte, GCC makes the rounding a branch, mispredicted
-// along every gradient.
-void put_bytes(lanes::Double2 v, std::uint8_t* out) {
-    typedef std::int32_t Int2 __attribute__((vector_size(8)));
-    using lanes::select, lanes::splat, lanes::Double2;
-    const Double2 positive = select(v > 0.0, v, splat<Double2>(0.0));  // also NaN -> 0
-    const Double2 clamped = select(positive < 1.0, positive, splat<Double2>(1.0));
-    const Double2 y = clamped * 255.0;
-    const Int2 q = __builtin_convertvector(y, Int2);  // truncation; y - q is then exact
-    const auto half_up = (y - __builtin_convertvector(q, Double2)) >= 0.5;
-    out[0] = static_cast<std::uint8_t>(q[0] + (half_up[0] ? 1 : 0));
-    out[1] = static_cast<std::uint8_t>(q[1] + (half_up[1] ? 1 : 0));
-}
-
-// n grey levels of I_P[0 .. n) into out.
+// n grey levels of I_P[0 .. n) into out: to_byte (image/quantize.hpp) two
+// pixels at a time, by the drawn rows' put_grey_levels (as a loop of scalar
+// to_byte, GCC makes the rounding a branch, mispredicted along every
+// gradient).
 void put_row_bytes(const double* I_P, int n, std::uint8_t* out) {
     int k = 0;
     for (; k + 2 <= n; k += 2) {
         lanes::Double2 v;
         std::memcpy(&v, I_P + k, sizeof v);
-        put_bytes(v, out + k);
+        lanes::put_grey_levels(v, out + k, 2);
     }
     for (; k < n; ++k) out[k] = to_byte(I_P[k]);
 }
