@@ -163,6 +163,7 @@ template <class Vector, bool Exact, bool Whole = false>
 struct Divisor {
     using Real = typename LaneTraits<Vector>::Real;
     static constexpr bool fused = Whole && fused_multiply_add && std::is_same_v<Real, double>;
+    static constexpr bool exact = Exact;
     Real d, reciprocal;
     WholeDivisor<Vector, fused> whole;
     explicit Divisor(int n) : d(Real(n)), reciprocal(Real(1) / Real(n)), whole(n) {}
@@ -206,6 +207,10 @@ struct SampledLanes {
     static constexpr int parts = parts_of<Lane>;
     using Code = CodeOf<Lane>;
     Points x0[parts];     // 2 j + 1, each lane's pixel
+    Lane x0_real;         // the same in the lanes' Real
+    // The nearest sample yet when the points are in float (nearer_in_real):
+    // its float d (infinite before the first sample), u and v.
+    Lane nearest_real = splat<Lane>(INFINITY), nearest_u{}, nearest_v{};
     UintsOf<Lane> j_hash;  // j hash_j
     // The first sample's intensity x is -0 + x, all of x's bits (+0 + x
     // would make a -0 +0), and its d is below infinity.
@@ -236,17 +241,24 @@ struct SampleCounter {
 
 // A sample's point E = (x, y, z_E) in each lane, and d, its offset's squared
 // distance from the pixel's centre (in double, as sample_pixel compares it).
-template <class Lane>
+// InReal: the point was computed in float lanes (sample_point_lanes), its
+// offset (u, v) is exact in them and d is their float u² + v², compared
+// with a margin (take_sample).
+template <class Lane, bool InReal = false>
 struct SamplePoint {
     Lane x, y;
     PointsOf<Lane> d[parts_of<Lane>];
+};
+template <class Lane>
+struct SamplePoint<Lane, true> {
+    Lane x, y, u, v, d;
 };
 
 // Sample c.s's point for the vector's pixels, as sample_point computes it:
 // in double, x's and y's numerators rounded to the kernel's Real before
 // by_w divides them by Real(w).
 template <class Lane, class CellDivisor, class WDivisor>
-PROMYK_LANES_INLINE SamplePoint<Lane> sample_point_lanes(const SampleGrid& grid, const CellDivisor& by_cell,
+PROMYK_LANES_INLINE auto sample_point_lanes(const SampleGrid& grid, const CellDivisor& by_cell,
                                                          const WDivisor& by_w, const SampleCounter& c,
                                                          const SampledLanes<Lane>& p) {
     using Points = PointsOf<Lane>;
@@ -261,44 +273,108 @@ PROMYK_LANES_INLINE SamplePoint<Lane> sample_point_lanes(const SampleGrid& grid,
     const auto h = mix32_lanes(grid.i_hash ^ mix32_lanes(p.j_hash ^ c.hash));
     const I h_u = reinterpret_cast<I>((h & 0xffffU) | (c.column << 16));
     const I h_v = reinterpret_cast<I>((h >> 16) | (c.row << 16));
-    SamplePoint<Lane> E;
-    RealPart x[parts], y[parts];  // the numerators of sample_point's divisions
-    for (int k = 0; k < parts; ++k) {
-        const Points u = by_cell.divide(__builtin_convertvector(part_of<IntsOf<Points>>(h_u, k), Points)) - 0.5;
-        const Points v = by_cell.divide(__builtin_convertvector(part_of<IntsOf<Points>>(h_v, k), Points)) - 0.5;
-        // sample_point. -(y0 + 2 v) is (-y0) - 2 v but for a zero's sign,
-        // which adding 1 erases (rounding to float is symmetric:
-        // -Real(y0 + 2 v) is Real(-(y0 + 2 v)), the same bits).
-        x[k] = __builtin_convertvector(p.x0[k] + 2.0 * u, RealPart);
-        y[k] = __builtin_convertvector(grid.minus_y0 - 2.0 * v, RealPart);
-        E.d[k] = u * u + v * v;
+    if constexpr (parts > 1 && CellDivisor::exact) {
+        // Float lanes, n a power of two: u = (2^16 (s mod n) + h_u) / (2^16 n)
+        // - 1/2 is exact in float as in double (a numerator below 2^21, a
+        // power of two, and a multiple of 2^-21 below 1/2), and so are
+        // x0 = 2 j + 1 and -y0 (below 2^23: draw_sampled_row checks w);
+        // x0 + 2 u is exact in double (at most 53 bits from 2w down to
+        // 2^-20), so float's x0 + 2 u, rounded once, is sample_point's
+        // Real(x0 + 2 u): the point in float lanes, d in double from the
+        // same exact u and v.
+        SamplePoint<Lane, true> E;
+        const Real cell = static_cast<Real>(by_cell.reciprocal);  // 2^-16 / n, exact
+        E.u = __builtin_convertvector(h_u, Lane) * cell - Real(0.5);
+        E.v = __builtin_convertvector(h_v, Lane) * cell - Real(0.5);
+        E.x = by_w.divide(p.x0_real + Real(2) * E.u) - Real(1);
+        E.y = by_w.divide(static_cast<Real>(grid.minus_y0) - Real(2) * E.v) + Real(1);
+        E.d = E.u * E.u + E.v * E.v;
+        return E;
+    } else {
+        SamplePoint<Lane> E;
+        RealPart x[parts], y[parts];  // the numerators of sample_point's divisions
+        for (int k = 0; k < parts; ++k) {
+            const Points u = by_cell.divide(__builtin_convertvector(part_of<IntsOf<Points>>(h_u, k), Points)) - 0.5;
+            const Points v = by_cell.divide(__builtin_convertvector(part_of<IntsOf<Points>>(h_v, k), Points)) - 0.5;
+            // sample_point. -(y0 + 2 v) is (-y0) - 2 v but for a zero's sign,
+            // which adding 1 erases (rounding to float is symmetric:
+            // -Real(y0 + 2 v) is Real(-(y0 + 2 v)), the same bits).
+            x[k] = __builtin_convertvector(p.x0[k] + 2.0 * u, RealPart);
+            y[k] = __builtin_convertvector(grid.minus_y0 - 2.0 * v, RealPart);
+            E.d[k] = u * u + v * v;
+        }
+        E.x = by_w.divide(joined<Lane>(x)) - Real(1);
+        E.y = by_w.divide(joined<Lane>(y)) + Real(1);
+        return E;
     }
-    E.x = by_w.divide(joined<Lane>(x)) - Real(1);
-    E.y = by_w.divide(joined<Lane>(y)) + Real(1);
-    return E;
 }
 
 // A sample of the vector's pixels at its points E, traced with the formula
 // Root and taken into the pixels' sums and counts.
-template <class Lane, template <class> class Root, class Real = typename LaneTraits<Lane>::Real>
-PROMYK_LANES_INLINE void take_sample(const ArticleRow<Real>& row, const SamplePoint<Lane>& E, SampledLanes<Lane>& p) {
+// Whether each lane's sample (u, v exact floats) is nearer its pixel's
+// centre than the nearest yet, d = u² + v² < d_nearest exactly, as
+// sample_pixel compares them in double (where both are exact). Float's
+// d = fl(fl(u²) + fl(v²)) is within a relative 3·2^-24 of the exact one (u
+// and v are multiples of 2^-21: no underflow), so a float d below
+// d_nearest (1 - 2^-19) or above d_nearest (1 + 2^-19), the products
+// rounded too, decides it; a lane between (a tie, or nearly) is compared in
+// double: rare. The nearest's u, v and float d kept.
+template <class Lane>
+PROMYK_LANES_INLINE MaskOf<Lane> nearer_in_real(const SamplePoint<Lane, true>& E, SampledLanes<Lane>& p) {
+    using Real = typename LaneTraits<Lane>::Real;
+    using Mask = MaskOf<Lane>;
+    using Points = PointsOf<Lane>;
+    using RealPart = typename PointLanes<Lane>::real;
+    constexpr Real margin = Real(1) / Real(1 << 19);
+    Mask nearer = E.d < p.nearest_real * (Real(1) - margin);
+    const Mask decided = either(nearer, E.d > p.nearest_real * (Real(1) + margin));
+    if (!all(decided)) [[unlikely]] {
+        UintsOf<Points> exact[parts_of<Lane>];
+        for (int k = 0; k < parts_of<Lane>; ++k) {
+            const auto wide = [&](Lane x) __attribute__((always_inline)) {
+                return __builtin_convertvector(part_of<RealPart>(x, k), Points);
+            };
+            const Points u = wide(E.u), v = wide(E.v), u_n = wide(p.nearest_u), v_n = wide(p.nearest_v);
+            exact[k] = __builtin_convertvector(u * u + v * v < u_n * u_n + v_n * v_n, UintsOf<Points>);
+        }
+        // Only the undecided lanes: a decided one may have no nearest yet
+        // (its d infinite, its u and v not a sample's).
+        nearer = either(both(decided, nearer), both(lane_not(decided), reinterpret_cast<Mask>(joined<CodeOf<Lane>>(exact))));
+    }
+    p.nearest_real = select(nearer, E.d, p.nearest_real);
+    p.nearest_u = select(nearer, E.u, p.nearest_u);
+    p.nearest_v = select(nearer, E.v, p.nearest_v);
+    return nearer;
+}
+
+template <class Lane, template <class> class Root, bool InReal, class Real = typename LaneTraits<Lane>::Real>
+PROMYK_LANES_INLINE void take_sample(const ArticleRow<Real>& row, const SamplePoint<Lane, InReal>& E,
+                                     SampledLanes<Lane>& p) {
     using Code = CodeOf<Lane>;
-    const LanePixel<Lane> pixel = article_lanes<Root, false>(SampleRow<Lane>(row, E.y), E.x);
+    // Early outs (article_lanes) pay in float: its sixteen lanes are often
+    // all background or all dark (bench accuracy --real float --spp 4,16:
+    // 9.66 -> 8.05 and 33.66 -> 27.47 x base), not in double's eight.
+    const LanePixel<Lane> pixel = article_lanes<Root, std::is_same_v<Real, float>>(SampleRow<Lane>(row, E.y), E.x);
     const Code code = branch_code<Code>(pixel.miss, pixel.dark, pixel.non_finite);
     p.sum = p.sum + pixel.I_P;
     p.branches += code;
-    // Whether the sample is the nearest yet to its pixel's centre, compared
-    // in double, part by part; -1 (true) stays all ones in the code's width.
+    // Whether the sample is the nearest yet to its pixel's centre; -1
+    // (true) stays all ones in the code's width.
     using Points = PointsOf<Lane>;
-    UintsOf<Points> nearer_32[parts_of<Lane>];
     Code nearer{};
-    for (int k = 0; k < parts_of<Lane>; ++k) {
-        const auto d_nearer = E.d[k] < p.nearest[k];
-        p.nearest[k] = select(d_nearer, E.d[k], p.nearest[k]);
-        if constexpr (parts_of<Lane> == 1) nearer = __builtin_convertvector(d_nearer, Code);
-        else nearer_32[k] = __builtin_convertvector(d_nearer, UintsOf<Points>);
+    if constexpr (InReal) {
+        nearer = reinterpret_cast<Code>(nearer_in_real(E, p));
+    } else {
+        // Compared in double, part by part.
+        UintsOf<Points> nearer_32[parts_of<Lane>];
+        for (int k = 0; k < parts_of<Lane>; ++k) {
+            const auto d_nearer = E.d[k] < p.nearest[k];
+            p.nearest[k] = select(d_nearer, E.d[k], p.nearest[k]);
+            if constexpr (parts_of<Lane> == 1) nearer = __builtin_convertvector(d_nearer, Code);
+            else nearer_32[k] = __builtin_convertvector(d_nearer, UintsOf<Points>);
+        }
+        if constexpr (parts_of<Lane> > 1) nearer = joined<Code>(nearer_32);
     }
-    if constexpr (parts_of<Lane> > 1) nearer = joined<Code>(nearer_32);
     p.centre = (code & nearer) | (p.centre & ~nearer);
 }
 
@@ -385,6 +461,7 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<Real>& row, cons
             p.x0[k] = 2.0 * __builtin_convertvector(part_of<UintsOf<Points>>(j_lanes, k), Points) + 1.0;
             p.nearest[k] = splat<Points>(INFINITY);
         }
+        p.x0_real = Real(2) * __builtin_convertvector(j_lanes, Lane) + Real(1);
         p.j_hash = j_lanes * hash_j;
         return p;
     };
@@ -400,19 +477,19 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<Real>& row, cons
     int j = lo;
     if (j + 2 * width <= hi) {
         SampledLanes<Lane> p0 = pixels(j), p1 = pixels(j + width);
-        SamplePoint<Lane> E0 = points(SampleCounter{}, p0), E1 = points(SampleCounter{}, p1);
+        auto E0 = points(SampleCounter{}, p0), E1 = points(SampleCounter{}, p1);
         for (; j + 2 * width <= hi; j += 2 * width) {
             SampleCounter c;
             for (; c.s + 1 < spp; ) {
                 SampleCounter c_next = c;
                 c_next.next(n);
-                const SamplePoint<Lane> next0 = points(c_next, p0), next1 = points(c_next, p1);
+                const auto next0 = points(c_next, p0), next1 = points(c_next, p1);
                 take_sample<Lane, Root>(row, E0, p0);
                 take_sample<Lane, Root>(row, E1, p1);
                 c = c_next, E0 = next0, E1 = next1;
             }
             const SampledLanes<Lane> q0 = pixels(j + 2 * width), q1 = pixels(j + 3 * width);
-            const SamplePoint<Lane> next0 = points(SampleCounter{}, q0), next1 = points(SampleCounter{}, q1);
+            const auto next0 = points(SampleCounter{}, q0), next1 = points(SampleCounter{}, q1);
             take_sample<Lane, Root>(row, E0, p0);
             take_sample<Lane, Root>(row, E1, p1);
             put_sampled(p0, spp, by_spp, j, width, ~Mask{}, out, tally, I_P, branches);
@@ -456,7 +533,10 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<Real>& row, int 
     while ((grid.n + 1) * (grid.n + 1) <= spp) ++grid.n;  // spp_side (not compiled here)
     grid.minus_y0 = -(2.0 * i + 1.0);
     grid.i_hash = static_cast<std::uint32_t>(i) * hash_i;
-    const bool cell_exact = power_of_two(grid.n), w_exact = power_of_two(w);
+    // In float, an exact cell also takes the points in float lanes
+    // (sample_point_lanes), which needs 2 w + 1 below 2^24.
+    const bool cell_exact = power_of_two(grid.n) && (std::is_same_v<Real, double> || w <= (1 << 22));
+    const bool w_exact = power_of_two(w);
     return with_root(formula, [&](auto root) {
         using R = decltype(root);
         if (cell_exact)
