@@ -34,6 +34,7 @@ set(PROMYK_PORTABLE_SOURCES
   render/float_row.cpp
   render/general_row.cpp
   render/pane_columns.cpp
+  render/sample_hashes.cpp
   render/isa.cpp
   render/skipping.cpp
   render/maps.cpp

@@ -23,6 +23,7 @@
 #include "render/article_row.hpp"
 #include "render/float_row.hpp"
 #include "render/isa.hpp"
+#include "render/sample_hashes.hpp"
 #include "render/sampling.hpp"
 #include "render/stages.hpp"
 #include "render/tracer.hpp"
@@ -60,11 +61,13 @@ bool sampled_in_lanes(const ArticleWorld<float>& world, int w, int i, int spp, s
 // Every pixel of the w x w pane at spp samples: the lanes' row against
 // sample_pixel over trace_ray, in double or in float.
 template <class Real>
-PaneCheck check_pane(const ArticleWorld<Real>& world, int w, int spp, Formula formula) {
+PaneCheck check_pane(const ArticleWorld<Real>& world, int w, int spp, Formula formula, std::vector<int> rows = {}) {
     PaneCheck check;
     std::vector<std::uint8_t> grey(static_cast<std::size_t>(w)), branches(static_cast<std::size_t>(w));
     std::vector<Real> I_P(static_cast<std::size_t>(w));
-    for (int i = 0; i < w; ++i) {
+    if (rows.empty())
+        for (int i = 0; i < w; ++i) rows.push_back(i);
+    for (const int i : rows) {
         RowCounts drawn;
         REQUIRE(sampled_in_lanes(world, w, i, spp, grey.data(), formula, drawn, I_P.data(), branches.data()));
         RowCounts traced;
@@ -197,6 +200,33 @@ TEST_CASE("Sampled rows in float lanes: 1024 non-finite samples a pixel agree an
         CHECK(check.count_mismatches == 0);
         CHECK(check.non_finite == static_cast<long long>(w) * w);
     }
+}
+
+// The hash's (j, s) part comes from a table per pane (render/sample_hashes.hpp)
+// unless the table would be too large: then each row computes it. Both ways
+// give the same samples: rows of a pane too wide for the table at spp 1024.
+TEST_CASE("Sampled rows in lanes: a pane too wide for the column hashes' table gives the traced samples too",
+          "[sample_lanes][float]") {
+    const int w = 1100, spp = 1024;
+    CHECK(sample_column_hashes(w, spp).hashes == nullptr);
+    CHECK(sample_column_hashes(64, 16).hashes != nullptr);
+    ArticleWorld<double> base = sample_worlds().front().world;
+    for (const NamedWorld& named : sample_worlds())
+        if (named.name == "article.json") base = named.world;
+    long long disagreeing = 0;
+    for (const Isa isa : supported_isas()) {
+        PathForced forced(isa);
+        INFO(isa_name(isa));
+        // The rows through the sphere's middle and near its top edge.
+        const PaneCheck in_double = check_pane(base, w, spp, Formula::article, {w / 2, w / 4 + 40});
+        const PaneCheck in_float = check_pane(in_type<float>(base), w, spp, Formula::article, {w / 2, w / 4 + 40});
+        CHECK(in_double.mismatches == 0);
+        CHECK(in_double.count_mismatches == 0);
+        CHECK(in_float.mismatches == 0);
+        CHECK(in_float.count_mismatches == 0);
+        disagreeing += in_double.disagreeing + in_float.disagreeing;
+    }
+    CHECK(disagreeing > 0);  // the rows cross the silhouette
 }
 
 TEST_CASE("Sampled rows in lanes: one sample is not drawn in lanes", "[sample_lanes]") {

@@ -20,6 +20,7 @@
 #include "render/article_lanes.hpp"
 #include "render/article_row_lanes.hpp"
 #include "render/kernel.hpp"
+#include "render/sample_hashes.hpp"
 #include "render/samples.hpp"
 #include "render/whole_divisor.hpp"
 
@@ -206,6 +207,7 @@ struct SampledLanes {
     using Points = PointsOf<Lane>;
     static constexpr int parts = parts_of<Lane>;
     using Code = CodeOf<Lane>;
+    int j;                // the first lane's column
     Points x0[parts];     // 2 j + 1, each lane's pixel
     Lane x0_real;         // the same in the lanes' Real
     // The nearest sample yet when the points are in float (nearer_in_real):
@@ -225,6 +227,7 @@ struct SampleGrid {
     int i, w, spp, n;
     double minus_y0;  // -(2 i + 1)
     std::uint32_t i_hash;
+    ColumnHashes columns;  // the hash's (j, s) part (render/sample_hashes.hpp), or null
 };
 
 // Sample s, its cell (column, row) = (s mod n, s div n), counted along (no
@@ -270,7 +273,13 @@ PROMYK_LANES_INLINE auto sample_point_lanes(const SampleGrid& grid, const CellDi
     // (s mod n + jitter_u) / n is (2^16 (s mod n) + h_u) / (2^16 n), the same
     // exact quotient rounded once (the numerator, below 2^31, and 2^16 n are
     // exact in double), so one conversion and one division give its bits.
-    const auto h = mix32_lanes(grid.i_hash ^ mix32_lanes(p.j_hash ^ c.hash));
+    UintsOf<Lane> column;  // mix32(j hash_j ^ mix32(s + hash_s)): the same in every row
+    if (grid.columns.hashes)
+        std::memcpy(&column, grid.columns.hashes + static_cast<std::ptrdiff_t>(c.s) * grid.columns.stride + p.j,
+                    sizeof column);
+    else
+        column = mix32_lanes(p.j_hash ^ c.hash);
+    const auto h = mix32_lanes(grid.i_hash ^ column);
     const I h_u = reinterpret_cast<I>((h & 0xffffU) | (c.column << 16));
     const I h_v = reinterpret_cast<I>((h >> 16) | (c.row << 16));
     if constexpr (parts > 1 && CellDivisor::exact) {
@@ -461,6 +470,7 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<Real>& row, cons
             p.x0[k] = 2.0 * __builtin_convertvector(part_of<UintsOf<Points>>(j_lanes, k), Points) + 1.0;
             p.nearest[k] = splat<Points>(INFINITY);
         }
+        p.j = j;
         p.x0_real = Real(2) * __builtin_convertvector(j_lanes, Lane) + Real(1);
         p.j_hash = j_lanes * hash_j;
         return p;
@@ -533,6 +543,7 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<Real>& row, int 
     while ((grid.n + 1) * (grid.n + 1) <= spp) ++grid.n;  // spp_side (not compiled here)
     grid.minus_y0 = -(2.0 * i + 1.0);
     grid.i_hash = static_cast<std::uint32_t>(i) * hash_i;
+    grid.columns = sample_column_hashes(w, spp);
     // In float, an exact cell also takes the points in float lanes
     // (sample_point_lanes), which needs 2 w + 1 below 2^24.
     const bool cell_exact = power_of_two(grid.n) && (std::is_same_v<Real, double> || w <= (1 << 22));
