@@ -5,11 +5,13 @@
 // sample's, as render/sampling.hpp's sample_pixel does, and the sample's
 // point is computed by the same operations as sample_point, so every pixel
 // has the one-pixel path's bits (tests/sample_lanes_test.cpp). In double or
-// in float (--real float): a float kernel's points are computed in double
-// lanes, as many as its float lanes, as sample_point computes them, and
-// rounded to float where it does. Included by
-// one translation unit per instruction set, like render/article_row_lanes.hpp;
-// calls nothing that is not inlined.
+// in float (--real float): a float kernel's points are computed in float
+// lanes where n is a power of two (every number exact, sample_point_lanes),
+// else in two registers of doubles as sample_point computes them, rounded
+// to float where it does. Included by one translation unit per instruction
+// set, like render/article_row_lanes.hpp; calls nothing that is not inlined
+// but sample_column_hashes, once a row (render/sample_hashes.cpp, compiled
+// for the baseline).
 #pragma once
 
 #include <cstdint>
@@ -56,11 +58,11 @@ using UintsOf = typename SampleInts<LaneTraits<Vector>::width>::U;
 template <class Vector>
 using IntsOf = typename SampleInts<LaneTraits<Vector>::width>::I;
 
-// The double vector a kernel's samples are placed in (sample_point computes
-// in double): the kernel's own in double; in float, a register of doubles,
-// half as many as the floats, so a float vector's points are two of them
-// (a vector of sixteen doubles, wider than any register, GCC keeps in
-// memory and compares lane by lane).
+// The double vector a kernel's samples are placed in where they are
+// computed in double (sample_point computes in double): the kernel's own in
+// double; in float, a register of doubles, half as many as the floats, so a
+// float vector's points are two of them (a vector of sixteen doubles, wider
+// than any register, GCC keeps in memory and compares lane by lane).
 // `real`: a part's coordinates rounded to the kernel's Real.
 template <class Lane>
 struct PointLanes {
