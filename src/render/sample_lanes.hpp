@@ -320,8 +320,6 @@ PROMYK_LANES_INLINE auto sample_point_lanes(const SampleGrid& grid, const CellDi
     }
 }
 
-// A sample of the vector's pixels at its points E, traced with the formula
-// Root and taken into the pixels' sums and counts.
 // Whether each lane's sample (u, v exact floats) is nearer its pixel's
 // centre than the nearest yet, d = u² + v² < d_nearest exactly, as
 // sample_pixel compares them in double (where both are exact). Float's
@@ -358,6 +356,8 @@ PROMYK_LANES_INLINE MaskOf<Lane> nearer_in_real(const SamplePoint<Lane, true>& E
     return nearer;
 }
 
+// A sample of the vector's pixels at its points E, traced with the formula
+// Root and taken into the pixels' sums and counts.
 template <class Lane, template <class> class Root, bool InReal, class Real = typename LaneTraits<Lane>::Real>
 PROMYK_LANES_INLINE void take_sample(const ArticleRow<Real>& row, const SamplePoint<Lane, InReal>& E,
                                      SampledLanes<Lane>& p) {
