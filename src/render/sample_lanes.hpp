@@ -210,8 +210,8 @@ struct SampledLanes {
     static constexpr int parts = parts_of<Lane>;
     using Code = CodeOf<Lane>;
     int j;                // the first lane's column
-    Points x0[parts];     // 2 j + 1, each lane's pixel
-    Lane x0_real;         // the same in the lanes' Real
+    Points x0[parts]{};   // 2 j + 1, each lane's pixel
+    Lane x0_real{};       // the same in the lanes' Real (each set only where it is read)
     // The nearest sample yet when the points are in float (nearer_in_real):
     // its float d (infinite before the first sample), u and v.
     Lane nearest_real = splat<Lane>(INFINITY), nearest_u{}, nearest_v{};
@@ -219,7 +219,7 @@ struct SampledLanes {
     // The first sample's intensity x is -0 + x, all of x's bits (+0 + x
     // would make a -0 +0), and its d is below infinity.
     Lane sum = splat<Lane>(-0.0);
-    Points nearest[parts];  // each part's from splat<Points>(INFINITY)
+    Points nearest[parts]{};  // each part's from splat<Points>(INFINITY)
     Code branches{};  // samples per branch, summed branch_codes
     Code centre{};    // the centre sample's branch_code
 };
@@ -465,15 +465,21 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<Real>& row, cons
     counts.sphere_tests = static_cast<long long>(hi - lo) * spp;
     U lane_numbers;  // 0, 1, .. width - 1
     for (int k = 0; k < width; ++k) lane_numbers[k] = static_cast<std::uint32_t>(k);
+    // Float lanes with an exact cell compute their points in float
+    // (sample_point_lanes) and read x0_real; the rest x0 and nearest, in double.
+    constexpr bool points_in_real = parts_of<Lane> > 1 && ExactCell;
     const auto pixels = [&](int j) __attribute__((always_inline)) {
         SampledLanes<Lane> p;
         const U j_lanes = static_cast<std::uint32_t>(j) + lane_numbers;
-        for (int k = 0; k < parts_of<Lane>; ++k) {
-            p.x0[k] = 2.0 * __builtin_convertvector(part_of<UintsOf<Points>>(j_lanes, k), Points) + 1.0;
-            p.nearest[k] = splat<Points>(INFINITY);
+        if constexpr (points_in_real) {
+            p.x0_real = Real(2) * __builtin_convertvector(j_lanes, Lane) + Real(1);
+        } else {
+            for (int k = 0; k < parts_of<Lane>; ++k) {
+                p.x0[k] = 2.0 * __builtin_convertvector(part_of<UintsOf<Points>>(j_lanes, k), Points) + 1.0;
+                p.nearest[k] = splat<Points>(INFINITY);
+            }
         }
         p.j = j;
-        p.x0_real = Real(2) * __builtin_convertvector(j_lanes, Lane) + Real(1);
         p.j_hash = j_lanes * hash_j;
         return p;
     };
