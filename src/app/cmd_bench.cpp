@@ -179,9 +179,13 @@ std::function<int()> setup_bench(CLI::App& app) {
         ->type_name("N")
         ->check(whole_number(1, 1000))
         ->capture_default_str();
+    add_spp_option(*effects_cmd, effects->spp);
     effects_cmd->footer(
         "Each timed run renders the pane again and again until it lasts at least 20 ms; × article is\n"
-        "a scene's time per pixel over the article's scene's.");
+        "a scene's time per pixel over the article's scene's. With --spp N above 1, every scene is\n"
+        "also timed at spp 1 in the same rounds, and \"a sample × spp 1\" is its time per sample over\n"
+        "its own time per pixel at spp 1 (the target: at most 1.5).\n"
+        "Example: promyk bench effects --w 256 --spp 4");
     auto accuracy = std::make_shared<AccuracyCommand>();
     CLI::App* accuracy_cmd = cmd->add_subcommand(
         "accuracy",

@@ -67,14 +67,22 @@ std::string stage_list(const Scene& scene) {
 int run_effects_bench(const EffectsOptions& options) {
     const std::vector<Scene> scenes = example_scenes();
     const int w = options.w;
+    const int spp = options.spp;
     const double pixels = static_cast<double>(w) * w;
+    // One thread, spp samples a pixel (or n).
+    const auto settings = [&](int n) {
+        RenderSettings s;
+        s.w = w, s.threads = 1, s.spp = n;
+        return s;
+    };
     std::vector<RenderStats> stats(scenes.size());
 
     std::vector<int> cpus = allowed_cpus();
     std::optional<PinnedToCpu> pin;
     if (!cpus.empty()) pin.emplace(cpus.front());  // one core for every run: like with like
-    print_standard_output("{}\n\n", wrap_text(ui_message("bench_effects_title",
+    print_standard_output("{}\n\n", wrap_text(ui_message(spp > 1 ? "bench_effects_title_spp" : "bench_effects_title",
                                                       {{"w", std::to_string(w)},
+                                                       {"spp", std::to_string(spp)},
                                                        {"pixels", counted(w * static_cast<long long>(w), "bench_pixels")},
                                                        {"rounds", counted(options.repetitions, "bench_rounds")},
                                                        {"ms", fixed(TimingPolicy{}.min_run_seconds * 1e3, 0)}}),
@@ -83,17 +91,18 @@ int run_effects_bench(const EffectsOptions& options) {
     std::vector<TimedWork> jobs;
     for (std::size_t k = 0; k < scenes.size(); ++k) {
         NullSink sink;
-        render(scenes[k], {w, 1}, PixelSelection{}, sink, &stats[k]);  // the work columns (untimed)
+        render(scenes[k], settings(spp), PixelSelection{}, sink, &stats[k]);  // the work columns (untimed)
         jobs.push_back(repeated([&, k] {
             NullSink timed_sink;
-            render(scenes[k], {w, 1}, PixelSelection{}, timed_sink);
+            render(scenes[k], settings(spp), PixelSelection{}, timed_sink);
         }));
     }
     // The article's scene twice more, both computing every pixel (no
     // background skipping): through the article's kernel, and forced through
     // the general tracer, which should cost it only the stages it uses.
     const Scene& article_scene = scenes.front();
-    const std::unique_ptr<Kernel> general = make_general_kernel(article_scene);
+    const std::unique_ptr<Kernel> general =
+        make_general_kernel(article_scene, RealType::double_, Formula::article, spp);
     const std::size_t no_skipping = jobs.size(), forced_general = jobs.size() + 1;
     std::vector<std::string> names;
     for (const Scene& scene : scenes) names.push_back(scene.name);
@@ -104,43 +113,76 @@ int run_effects_bench(const EffectsOptions& options) {
     set_background_skipping(false);
     {
         NullSink sink;
-        render(article_scene, {w, 1}, PixelSelection{}, sink, &stats[no_skipping]);
-        render(*general, article_scene, {w, 1}, PixelSelection{}, sink, &stats[forced_general]);
+        render(article_scene, settings(spp), PixelSelection{}, sink, &stats[no_skipping]);
+        render(*general, article_scene, settings(spp), PixelSelection{}, sink, &stats[forced_general]);
     }
     set_background_skipping(skipping);
     jobs.push_back(repeated([&] {
         NullSink timed_sink;
         set_background_skipping(false);
-        render(article_scene, {w, 1}, PixelSelection{}, timed_sink);
+        render(article_scene, settings(spp), PixelSelection{}, timed_sink);
         set_background_skipping(skipping);
     }));
     jobs.push_back(repeated([&] {
         NullSink timed_sink;
-        render(*general, article_scene, {w, 1}, PixelSelection{}, timed_sink);
+        render(*general, article_scene, settings(spp), PixelSelection{}, timed_sink);
     }));
+    // With samples, each row's scene once more at spp 1 (the two kernels'
+    // too), in the same rounds: a sample's cost against its own pixel's.
+    const std::size_t rows = jobs.size();
+    const std::unique_ptr<Kernel> general_1 = make_general_kernel(article_scene);
+    if (spp > 1) {
+        for (std::size_t k = 0; k < scenes.size(); ++k)
+            jobs.push_back(repeated([&, k] {
+                NullSink timed_sink;
+                render(scenes[k], settings(1), PixelSelection{}, timed_sink);
+            }));
+        jobs.push_back(repeated([&] {
+            NullSink timed_sink;
+            set_background_skipping(false);
+            render(article_scene, settings(1), PixelSelection{}, timed_sink);
+            set_background_skipping(skipping);
+        }));
+        jobs.push_back(repeated([&] {
+            NullSink timed_sink;
+            render(*general_1, article_scene, settings(1), PixelSelection{}, timed_sink);
+        }));
+    }
     TimingPolicy policy;
     policy.rounds = options.repetitions;
     const std::vector<Timing> timings = time_side_by_side(jobs, policy);
 
     const Timing& article = timings.front();
-    TextTable table({{ui_message("bench_col_scene"), true},
-                     {ui_message("bench_col_ns_pixel")},
-                     {ui_message("bench_col_x_article")},
-                     {ui_message("bench_col_shadow_rays")},
-                     {ui_message("bench_col_sphere_tests")},
-                     {ui_message("bench_col_plane_tests")},
-                     {ui_message("bench_col_skipped")}});
+    std::vector<TextColumn> columns = {{ui_message("bench_col_scene"), true},
+                                              {ui_message("bench_col_ns_pixel")},
+                                              {ui_message("bench_col_x_article")},
+                                              {ui_message("bench_col_shadow_rays")},
+                                              {ui_message("bench_col_sphere_tests")},
+                                              {ui_message("bench_col_plane_tests")},
+                                              {ui_message("bench_col_skipped")}};
+    if (spp > 1) columns.push_back({ui_message("bench_col_sample_x_spp1")});
+    TextTable table(columns);
     std::vector<std::string> problems;
-    for (std::size_t k = 0; k < timings.size(); ++k) {
+    for (std::size_t k = 0; k < rows; ++k) {
         const Timing& t = timings[k];
         const RenderStats& s = stats[k];
         if (!t.timed) problems.push_back(ui_message("bench_effects_untimed", {{"scene", names[k]}, {"why", t.problem}}));
-        table.add_row({names[k], t.timed ? fixed(t.median_seconds_per_unit / pixels * 1e9, 2) : "-",
-                       t.timed && article.timed ? fixed(t.median_seconds_per_unit / article.median_seconds_per_unit, 2) : "-",
-                       fixed(static_cast<double>(s.shadow_rays) / pixels, 3),
-                       fixed(static_cast<double>(s.sphere_tests) / pixels, 3),
-                       fixed(static_cast<double>(s.plane_tests) / pixels, 3),
-                       fixed(static_cast<double>(s.skipped) / pixels, 3)});
+        std::vector<std::string> cells = {
+            names[k], t.timed ? fixed(t.median_seconds_per_unit / pixels * 1e9, 2) : "-",
+            t.timed && article.timed ? fixed(t.median_seconds_per_unit / article.median_seconds_per_unit, 2) : "-",
+            fixed(static_cast<double>(s.shadow_rays) / pixels, 3),
+            fixed(static_cast<double>(s.sphere_tests) / pixels, 3),
+            fixed(static_cast<double>(s.plane_tests) / pixels, 3),
+            fixed(static_cast<double>(s.skipped) / pixels, 3)};
+        if (spp > 1) {
+            // Its time a sample over its own time a pixel at spp 1.
+            const Timing& one = timings[rows + k];
+            if (!one.timed) problems.push_back(ui_message("bench_effects_untimed", {{"scene", names[k]}, {"why", one.problem}}));
+            cells.push_back(t.timed && one.timed
+                                ? fixed(t.median_seconds_per_unit / (spp * one.median_seconds_per_unit), 2)
+                                : "-");
+        }
+        table.add_row(cells);
     }
     print_standard_output("{}", table.text());
     const Timing& article_kernel = timings[no_skipping];
@@ -161,7 +203,9 @@ int run_effects_bench(const EffectsOptions& options) {
         const std::string line = "    " + scene.name + std::string(name_width - display_width(scene.name) + 2, ' ') + stage_list(scene);
         print_standard_output("{}\n", wrap_text(line, 6 + name_width));
     }
-    print_standard_output("\n{}\n", wrap_text("  " + ui_message("bench_effects_explained"), 2));
+    print_standard_output("\n{}\n", wrap_text("  " + ui_message(spp > 1 ? "bench_effects_explained_spp" : "bench_effects_explained",
+                                                                {{"spp", std::to_string(spp)}}),
+                                                2));
     return 0;
 }
 

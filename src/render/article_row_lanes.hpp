@@ -101,6 +101,25 @@ PROMYK_LANES_INLINE void put_grey_levels(Floats v, std::uint8_t* out, int n) {
     if (n > half) put_grey_levels(__builtin_convertvector(high, Doubles), out + half, n - half);
 }
 
+// Pixels j .. j + n - 1 (n <= the width) into out: grey levels, or r, g, b.
+template <class Vector>
+PROMYK_LANES_INLINE void put_intensities(Vector I_P, std::uint8_t* out, int j, int n) {
+    put_grey_levels(I_P, out + j, n);
+}
+template <class Vector>
+PROMYK_LANES_INLINE void put_intensities(const Vec3<Vector>& I_P, std::uint8_t* out, int j, int n) {
+    constexpr int width = LaneTraits<Vector>::width;
+    std::uint8_t r[width], g[width], b[width];
+    put_grey_levels(I_P.x, r, n);
+    put_grey_levels(I_P.y, g, n);
+    put_grey_levels(I_P.z, b, n);
+    for (int k = 0; k < n; ++k) {
+        out[3 * (j + k)] = r[k];
+        out[3 * (j + k) + 1] = g[k];
+        out[3 * (j + k) + 2] = b[k];
+    }
+}
+
 // Row `row` of a w-pixel pane into out[0 .. w), with the sphere's formula
 // Root (render/article_lanes.hpp): x_E[j] is pane_x(j, w), given for the
 // whole pane (columns share it; computing it here would cost each pixel a

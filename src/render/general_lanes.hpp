@@ -14,6 +14,7 @@
 #include <limits>
 #include <vector>
 
+#include "render/intensity_lanes.hpp"
 #include "render/lanes.hpp"
 #include "render/world.hpp"
 #include "util/interrupt.hpp"
@@ -105,75 +106,6 @@ private:
 
 inline namespace PROMYK_LANES_ISA {
 
-// An intensity in lanes: one grey level, or r, g, b.
-template <class Lane, bool Rgb>
-using LaneIntensity = std::conditional_t<Rgb, Vec3<Lane>, Lane>;
-
-template <class Lane, class Real>
-PROMYK_LANES_INLINE Lane splat_of(Real x) {
-    return splat<Lane>(x);
-}
-template <class Lane, class Real>
-PROMYK_LANES_INLINE Vec3<Lane> splat_of(const Vec3<Real>& v) {
-    return {splat<Lane>(v.x), splat<Lane>(v.y), splat<Lane>(v.z)};
-}
-template <class Lane>
-PROMYK_LANES_INLINE Lane pick(MaskOf<Lane> m, Lane a, Lane b) {
-    return select(m, a, b);
-}
-template <class Lane>
-PROMYK_LANES_INLINE Vec3<Lane> pick(MaskOf<Lane> m, const Vec3<Lane>& a, const Vec3<Lane>& b) {
-    return {select(m, a.x, b.x), select(m, a.y, b.y), select(m, a.z, b.z)};
-}
-// Intensities' arithmetic, written out here (not Vec3's operators): every
-// function these templates call is this instruction set's own copy.
-template <class Lane>
-PROMYK_LANES_INLINE Lane times(Lane a, Lane b) {
-    return a * b;
-}
-template <class Lane>
-PROMYK_LANES_INLINE Vec3<Lane> times(Lane a, const Vec3<Lane>& b) {  // a b: a number times a colour
-    return {a * b.x, a * b.y, a * b.z};
-}
-template <class Lane>
-PROMYK_LANES_INLINE Vec3<Lane> times(const Vec3<Lane>& a, const Vec3<Lane>& b) {  // channel by channel
-    return {a.x * b.x, a.y * b.y, a.z * b.z};
-}
-template <class Lane>
-PROMYK_LANES_INLINE Lane plus(Lane a, Lane b) {
-    return a + b;
-}
-template <class Lane>
-PROMYK_LANES_INLINE Vec3<Lane> plus(const Vec3<Lane>& a, const Vec3<Lane>& b) {
-    return {a.x + b.x, a.y + b.y, a.z + b.z};
-}
-// Every channel of an intensity: 0, or NaN (a non-finite pixel's).
-template <class Lane, bool Rgb>
-PROMYK_LANES_INLINE LaneIntensity<Lane, Rgb> every_channel(double x) {
-    if constexpr (Rgb)
-        return {splat<Lane>(x), splat<Lane>(x), splat<Lane>(x)};
-    else
-        return splat<Lane>(x);
-}
-// A mask's a where m, else b.
-template <class Mask>
-PROMYK_LANES_INLINE Mask pick_mask(Mask m, Mask a, Mask b) {
-    return either(both(m, a), both(lane_not(m), b));
-}
-// x * 0 is 0 only for a finite x.
-template <class Lane>
-PROMYK_LANES_INLINE MaskOf<Lane> finite_lanes(Lane x) {
-    return x * 0.0 == 0.0;
-}
-template <class Lane>
-PROMYK_LANES_INLINE MaskOf<Lane> below_max_lanes(Lane x) {
-    return x <= std::numeric_limits<double>::max();
-}
-template <class Lane>
-PROMYK_LANES_INLINE MaskOf<Lane> below_max_lanes(const Vec3<Lane>& v) {
-    return both(both(below_max_lanes(v.x), below_max_lanes(v.y)), below_max_lanes(v.z));
-}
-
 template <class Lane, bool Rgb>
 struct GeneralLanePixel {
     using Mask = MaskOf<Lane>;
@@ -221,11 +153,12 @@ struct NearestLanes {
 // geometry/sphere.hpp's intersect_sphere with the article's formula
 // (geometry/sphere_article.hpp), then trace_general's test of its root.
 // Only: the scene's only object (its root, if finite, is the nearest).
-template <bool Rgb, bool Only, class Lane>
-PROMYK_LANES_INLINE void test_sphere(const typename GeneralRow<Rgb>::Ball& ball, Lane x_E, Lane EE, double id,
+// ySy: y_E y_S, the row's (a double) or each sample's (lanes).
+template <bool Rgb, bool Only, class Lane, class Y>
+PROMYK_LANES_INLINE void test_sphere(const typename GeneralRow<Rgb>::Ball& ball, Lane x_E, Y ySy, Lane EE, double id,
                                      NearestLanes<Lane>& nearest) {
     using Mask = MaskOf<Lane>;
-    const Lane C = (x_E * ball.S.x + ball.ySy) + ball.zSz;  // E.S
+    const Lane C = (x_E * ball.S.x + ySy) + ball.zSz;  // E.S
     const Lane delta = C * C - EE * ball.SS_rr;
     const Mask miss = both(delta <= 0.0, delta >= std::numeric_limits<double>::lowest());
     if (all(miss)) return;  // (not !any(!miss): GCC makes that integer code lane by lane)
@@ -250,11 +183,12 @@ PROMYK_LANES_INLINE void test_sphere(const typename GeneralRow<Rgb>::Ball& ball,
 }
 
 // geometry/plane.hpp's intersect_plane, then trace_general's test of its root.
-template <bool Rgb, bool Only, class Lane>
-PROMYK_LANES_INLINE void test_plane(const typename GeneralRow<Rgb>::Flat& flat, Lane x_E, double id,
+// yn: n_y y_E, the row's or each sample's.
+template <bool Rgb, bool Only, class Lane, class Y>
+PROMYK_LANES_INLINE void test_plane(const typename GeneralRow<Rgb>::Flat& flat, Lane x_E, Y yn, double id,
                                     NearestLanes<Lane>& nearest) {
     using Mask = MaskOf<Lane>;
-    const Lane NE = (flat.n_hat.x * x_E + flat.yn) + flat.zn;  // n_hat.E
+    const Lane NE = (flat.n_hat.x * x_E + yn) + flat.zn;  // n_hat.E
     const Mask crosses = lane_not(NE == 0.0);                  // parallel: a miss
     const Lane t = flat.NQ / NE;
     // n_hat.Q or n_hat.E beyond the range: a NaN root (nothing decided).
@@ -297,10 +231,33 @@ PROMYK_LANES_INLINE void plane_blocks_lanes(const Vec3<Lane>& P, const Vec3<Lane
     yes = both(both(crosses, lane_not(undecided)), both(s > 0.0, s < 1.0));
 }
 
-// Pixels E = (x_E, y_E, z_E), one a lane; `kept`: the lanes whose work counts.
-template <class Sw, bool Rgb, class Lane>
-PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> general_lanes(const GeneralRow<Rgb>& row, Lane x_E, MaskOf<Lane> kept,
-                                                             LaneWork<Lane>& work) {
+// The eye's heights y_E: the row's, every lane's the same, its products
+// with y_E computed once a row (GeneralRow); or each lane's own (a sample's
+// point, render/general_sample_lanes.hpp), the same products in lanes.
+template <bool Rgb>
+struct RowHeights {
+    const GeneralRow<Rgb>& row;
+    PROMYK_LANES_INLINE double y_E() const { return row.y_E; }
+    PROMYK_LANES_INLINE double yy() const { return row.yy; }
+    PROMYK_LANES_INLINE double ySy(int k) const { return row.spheres[k].ySy; }
+    PROMYK_LANES_INLINE double yn(int k) const { return row.planes[k].yn; }
+};
+template <bool Rgb, class Lane>
+struct LaneHeights {
+    const GeneralRow<Rgb>& row;
+    Lane y, y_y;
+    PROMYK_LANES_INLINE LaneHeights(const GeneralRow<Rgb>& r, Lane y_E) : row(r), y(y_E), y_y(y_E * y_E) {}
+    PROMYK_LANES_INLINE Lane y_E() const { return y; }
+    PROMYK_LANES_INLINE Lane yy() const { return y_y; }
+    PROMYK_LANES_INLINE Lane ySy(int k) const { return y * row.spheres[k].S.y; }   // as GeneralRow's y S_y
+    PROMYK_LANES_INLINE Lane yn(int k) const { return row.planes[k].n_hat.y * y; }  // and n_y y
+};
+
+// Pixels E = (x_E, y_E, z_E), one a lane, y_E the heights'; `kept`: the
+// lanes whose work counts.
+template <class Sw, bool Rgb, class Lane, class Heights>
+PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> general_lanes(const GeneralRow<Rgb>& row, const Heights& y, Lane x_E,
+                                                             MaskOf<Lane> kept, LaneWork<Lane>& work) {
     using Mask = MaskOf<Lane>;
     using Intensity = LaneIntensity<Lane, Rgb>;
     GeneralLanePixel<Lane, Rgb> pixel;
@@ -308,16 +265,18 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> general_lanes(const GeneralRow<R
     pixel.non_finite = pixel.lit = pixel.shadowed = Mask{};
 
     // The nearest hit with t > 0 over every object, ties to the earlier one.
-    const Lane EE = (x_E * x_E + row.yy) + row.zz;  // |E|^2
+    const Lane EE = (x_E * x_E + y.yy()) + row.zz;  // |E|^2
     NearestLanes<Lane> nearest;
     const double sphere_count = row.sphere_count;
     if constexpr (Sw::many) {
-        for (int k = 0; k < row.sphere_count; ++k) test_sphere<Rgb, false>(row.spheres[k], x_E, EE, k, nearest);
-        for (int k = 0; k < row.plane_count; ++k) test_plane<Rgb, false>(row.planes[k], x_E, sphere_count + k, nearest);
+        for (int k = 0; k < row.sphere_count; ++k)
+            test_sphere<Rgb, false>(row.spheres[k], x_E, y.ySy(k), EE, k, nearest);
+        for (int k = 0; k < row.plane_count; ++k)
+            test_plane<Rgb, false>(row.planes[k], x_E, y.yn(k), sphere_count + k, nearest);
     } else if (row.sphere_count > 0) {
-        test_sphere<Rgb, true>(row.spheres[0], x_E, EE, 0.0, nearest);
+        test_sphere<Rgb, true>(row.spheres[0], x_E, y.ySy(0), EE, 0.0, nearest);
     } else {
-        test_plane<Rgb, true>(row.planes[0], x_E, 0.0, nearest);
+        test_plane<Rgb, true>(row.planes[0], x_E, y.yn(0), 0.0, nearest);
     }
     pixel.non_finite = nearest.undecided;
     pixel.miss = both(lane_not(nearest.undecided), nearest.id < 0.0);
@@ -329,7 +288,7 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> general_lanes(const GeneralRow<R
 
     // The hit: P, and the normal N facing the eye, of length r (1 for a plane).
     const Lane t = nearest.t;
-    const Vec3<Lane> P{t * x_E, t * row.y_E, t * row.z_E};
+    const Vec3<Lane> P{t * x_E, t * y.y_E(), t * row.z_E};
     Mask on_sphere;
     Vec3<Lane> N;
     Lane r;
@@ -452,6 +411,13 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> general_lanes(const GeneralRow<R
     const Mask stopped = both(lane_not(alive), pixel.non_finite);  // NaN
     pixel.I_P = pick(alive, I_P, pick(stopped, every_channel<Lane, Rgb>(std::numeric_limits<double>::quiet_NaN()), pixel.I_P));
     return pixel;
+}
+
+// A row's pixels: the heights the row's.
+template <class Sw, bool Rgb, class Lane>
+PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> general_lanes(const GeneralRow<Rgb>& row, Lane x_E, MaskOf<Lane> kept,
+                                                             LaneWork<Lane>& work) {
+    return general_lanes<Sw>(row, RowHeights<Rgb>{row}, x_E, kept, work);
 }
 
 }  // namespace PROMYK_LANES_ISA

@@ -12,6 +12,7 @@
 #if defined(PROMYK_ISA_KERNELS)
 #include "render/general_row_isa.hpp"
 #include "render/general_row_lanes.hpp"
+#include "render/general_sample_lanes.hpp"
 #include "render/isa.hpp"
 #include "render/pane.hpp"
 #include "render/pane_columns.hpp"
@@ -73,7 +74,46 @@ bool intensities(const World<double, Rgb>& world, GeneralLaneStages stages, int 
     return true;
 }
 
+// Row i from spp samples a pixel; I_P and branches for the tests, else null.
+template <bool Rgb, class Intensity>
+bool draw_sampled(const World<double, Rgb>& world, GeneralLaneStages stages, int w, int i, int spp, std::uint8_t* out,
+                  RowCounts& counts, Intensity* I_P, std::uint8_t* branches) {
+    if (spp <= 1) return false;
+    const lanes::GeneralRow<Rgb>& row = row_of(world, w, i);  // its heights unused: each sample's own
+    if (!has_object(row)) return false;
+    switch (article_isa()) {
+        case Isa::avx512:
+            counts = lanes::avx512::draw_sampled_general_row(row, stages, w, i, spp, out, I_P, branches);
+            break;
+        case Isa::avx2:
+            counts = lanes::avx2::draw_sampled_general_row(row, stages, w, i, spp, out, I_P, branches);
+            break;
+        default:
+            counts = lanes::draw_sampled_general_row<lanes::Double2>(row, stages, w, i, spp, out, I_P, branches);
+    }
+    return true;
+}
+
 }  // namespace
+
+bool general_sampled_row_in_lanes(const World<double, false>& world, GeneralLaneStages stages, int w, int i, int spp,
+                                  std::uint8_t* out, RowCounts& counts) {
+    return draw_sampled(world, stages, w, i, spp, out, counts, static_cast<double*>(nullptr), nullptr);
+}
+bool general_sampled_row_in_lanes(const World<double, true>& world, GeneralLaneStages stages, int w, int i, int spp,
+                                  std::uint8_t* out, RowCounts& counts) {
+    return draw_sampled(world, stages, w, i, spp, out, counts, static_cast<Vec3d*>(nullptr), nullptr);
+}
+bool general_sampled_row_intensities(const World<double, false>& world, GeneralLaneStages stages, int w, int i,
+                                     int spp, std::uint8_t* out, RowCounts& counts, double* I_P,
+                                     std::uint8_t* branches) {
+    return draw_sampled(world, stages, w, i, spp, out, counts, I_P, branches);
+}
+bool general_sampled_row_intensities(const World<double, true>& world, GeneralLaneStages stages, int w, int i,
+                                     int spp, std::uint8_t* out, RowCounts& counts, Vec3d* I_P,
+                                     std::uint8_t* branches) {
+    return draw_sampled(world, stages, w, i, spp, out, counts, I_P, branches);
+}
 
 bool general_row_in_lanes(const World<double, false>& world, GeneralLaneStages stages, int w, int i,
                           std::uint8_t* out, RowCounts& counts) {
@@ -93,6 +133,23 @@ bool general_row_intensities(const World<double, true>& world, GeneralLaneStages
 }
 
 #else  // no lanes in this build
+
+bool general_sampled_row_in_lanes(const World<double, false>&, GeneralLaneStages, int, int, int, std::uint8_t*,
+                                  RowCounts&) {
+    return false;
+}
+bool general_sampled_row_in_lanes(const World<double, true>&, GeneralLaneStages, int, int, int, std::uint8_t*,
+                                  RowCounts&) {
+    return false;
+}
+bool general_sampled_row_intensities(const World<double, false>&, GeneralLaneStages, int, int, int, std::uint8_t*,
+                                     RowCounts&, double*, std::uint8_t*) {
+    return false;
+}
+bool general_sampled_row_intensities(const World<double, true>&, GeneralLaneStages, int, int, int, std::uint8_t*,
+                                     RowCounts&, Vec3d*, std::uint8_t*) {
+    return false;
+}
 
 bool general_row_in_lanes(const World<double, false>&, GeneralLaneStages, int, int, std::uint8_t*, RowCounts&) {
     return false;

@@ -1,5 +1,6 @@
 // Rows of the general tracer (render/general_tracer.hpp) computed lanes at a
-// time (render/general_lanes.hpp), in double with the article's formula for
+// time (render/general_lanes.hpp), one sample a pixel or several
+// (render/general_sample_lanes.hpp), in double with the article's formula for
 // the eye's rays, for the stages the lanes cover: one or several spheres and
 // planes, several lights, ambient, shadows, grey or colour (not Phong). The
 // path is render/isa.hpp's; where there are no lanes (the wasm) these say
@@ -29,6 +30,24 @@ bool general_row_in_lanes(const World<double, false>& world, GeneralLaneStages s
                           std::uint8_t* out, RowCounts& counts);
 bool general_row_in_lanes(const World<double, true>& world, GeneralLaneStages stages, int w, int i,
                           std::uint8_t* out, RowCounts& counts);
+
+// Row i drawn from spp > 1 samples a pixel (render/general_sample_lanes.hpp):
+// each byte to_byte of sample_pixel over trace_general's mean, the row's
+// counts (branches, disagreeing pixels, first non-finite column, rays and
+// tests) as GeneralKernel counts them. False, with nothing drawn, where
+// this build has no lanes or the world no object.
+bool general_sampled_row_in_lanes(const World<double, false>& world, GeneralLaneStages stages, int w, int i, int spp,
+                                  std::uint8_t* out, RowCounts& counts);
+bool general_sampled_row_in_lanes(const World<double, true>& world, GeneralLaneStages stages, int w, int i, int spp,
+                                  std::uint8_t* out, RowCounts& counts);
+
+// For the tests: the same sampled row, with its pixels' means and branches.
+bool general_sampled_row_intensities(const World<double, false>& world, GeneralLaneStages stages, int w, int i,
+                                     int spp, std::uint8_t* out, RowCounts& counts, double* I_P,
+                                     std::uint8_t* branches);
+bool general_sampled_row_intensities(const World<double, true>& world, GeneralLaneStages stages, int w, int i,
+                                     int spp, std::uint8_t* out, RowCounts& counts, Vec3d* I_P,
+                                     std::uint8_t* branches);
 
 // For the tests: the same row's intensities and each pixel's Branch (as a
 // byte), every column computed. False where there are no lanes.

@@ -4,6 +4,7 @@
 // First: it opens the inline namespace the declarations below extend.
 #include "render/general_row_lanes.hpp"
 #include "render/general_row_isa.hpp"
+#include "render/general_sample_lanes.hpp"
 
 namespace promyk::lanes {
 inline namespace avx2 {  // inline, as lanes.hpp opened it in this file
@@ -23,6 +24,14 @@ void general_row_intensities(const GeneralRow<false>& row, GeneralLaneStages sta
 void general_row_intensities(const GeneralRow<true>& row, GeneralLaneStages stages, const double* x_E, int w,
                              Vec3d* I_P, std::uint8_t* branches) {
     general_row_intensities<Double4>(row, stages, x_E, w, I_P, branches);
+}
+RowCounts draw_sampled_general_row(const GeneralRow<false>& row, GeneralLaneStages stages, int w, int i, int spp,
+                                   std::uint8_t* out, double* I_P, std::uint8_t* branches) {
+    return draw_sampled_general_row<Double4>(row, stages, w, i, spp, out, I_P, branches);
+}
+RowCounts draw_sampled_general_row(const GeneralRow<true>& row, GeneralLaneStages stages, int w, int i, int spp,
+                                   std::uint8_t* out, Vec3d* I_P, std::uint8_t* branches) {
+    return draw_sampled_general_row<Double4>(row, stages, w, i, spp, out, I_P, branches);
 }
 
 }  // namespace avx2

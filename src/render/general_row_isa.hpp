@@ -20,7 +20,8 @@ struct GeneralRow;
 #pragma clang diagnostic ignored "-Winline-namespace-reopened-noninline"
 #endif
 // Row `row` (x_E[j] = pane_x(j, w)) drawn, and its intensities and branches
-// for the tests.
+// for the tests; row i drawn from spp samples a pixel (I_P and branches
+// for the tests, else null).
 namespace avx2 {
 RowCounts draw_general_row(const GeneralRow<false>& row, GeneralLaneStages stages, const double* x_E, int w,
                            std::uint8_t* out);
@@ -30,6 +31,10 @@ void general_row_intensities(const GeneralRow<false>& row, GeneralLaneStages sta
                              double* I_P, std::uint8_t* branches);
 void general_row_intensities(const GeneralRow<true>& row, GeneralLaneStages stages, const double* x_E, int w,
                              Vec3d* I_P, std::uint8_t* branches);
+RowCounts draw_sampled_general_row(const GeneralRow<false>& row, GeneralLaneStages stages, int w, int i, int spp,
+                                   std::uint8_t* out, double* I_P, std::uint8_t* branches);
+RowCounts draw_sampled_general_row(const GeneralRow<true>& row, GeneralLaneStages stages, int w, int i, int spp,
+                                   std::uint8_t* out, Vec3d* I_P, std::uint8_t* branches);
 }
 namespace avx512 {
 RowCounts draw_general_row(const GeneralRow<false>& row, GeneralLaneStages stages, const double* x_E, int w,
@@ -40,6 +45,10 @@ void general_row_intensities(const GeneralRow<false>& row, GeneralLaneStages sta
                              double* I_P, std::uint8_t* branches);
 void general_row_intensities(const GeneralRow<true>& row, GeneralLaneStages stages, const double* x_E, int w,
                              Vec3d* I_P, std::uint8_t* branches);
+RowCounts draw_sampled_general_row(const GeneralRow<false>& row, GeneralLaneStages stages, int w, int i, int spp,
+                                   std::uint8_t* out, double* I_P, std::uint8_t* branches);
+RowCounts draw_sampled_general_row(const GeneralRow<true>& row, GeneralLaneStages stages, int w, int i, int spp,
+                                   std::uint8_t* out, Vec3d* I_P, std::uint8_t* branches);
 }
 #if defined(__clang__)
 #pragma clang diagnostic pop

@@ -61,25 +61,6 @@ struct RowLanes<Sw, Rgb, Vector, true> {
     }
 };
 
-// Pixels j .. j + n - 1 (n <= the width) into out: grey levels, or r, g, b.
-template <class Vector>
-PROMYK_LANES_INLINE void put_intensities(Vector I_P, std::uint8_t* out, int j, int n) {
-    put_grey_levels(I_P, out + j, n);
-}
-template <class Vector>
-PROMYK_LANES_INLINE void put_intensities(const Vec3<Vector>& I_P, std::uint8_t* out, int j, int n) {
-    constexpr int width = LaneTraits<Vector>::width;
-    std::uint8_t r[width], g[width], b[width];
-    put_grey_levels(I_P.x, r, n);
-    put_grey_levels(I_P.y, g, n);
-    put_grey_levels(I_P.z, b, n);
-    for (int k = 0; k < n; ++k) {
-        out[3 * (j + k)] = r[k];
-        out[3 * (j + k) + 1] = g[k];
-        out[3 * (j + k) + 2] = b[k];
-    }
-}
-
 // Columns j .. j + n - 1 as a vector: the last one filled past n with
 // column j's x_E, its extra lanes computed and not kept.
 template <class Vector>

@@ -43,6 +43,11 @@ struct OneSphereRow {
           L_y(splat<Lane>(row.lights[0].L.y)), L_z(splat<Lane>(row.lights[0].L.z)),
           I(splat<Lane>(row.lights[0].I)), c(splat_of<Lane>(row.lights[0].c)),
           background(splat_of<Lane>(row.background)) {}
+    // The row's numbers with each lane's own height y (a sample's point):
+    // y_E and its products, computed as GeneralRow computes the row's.
+    PROMYK_LANES_INLINE OneSphereRow(const OneSphereRow& row, Lane y) : OneSphereRow(row) {
+        y_E = y, yy = y * y, ySy = y * S_y;
+    }
 };
 
 // True where the row is drawn by one_sphere_lanes.

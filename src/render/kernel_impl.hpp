@@ -242,7 +242,8 @@ class GeneralKernel final : public Kernel {
     using Result = GeneralResult<typename World<Real, Rgb>::Intensity>;
     using Pixel = SampledPixel<typename World<Real, Rgb>::Intensity>;
     // Drawn in lanes (render/general_row.hpp): double with the article's
-    // formula, without Phong, one sample a pixel; the rest a pixel at a time.
+    // formula, without Phong, one sample a pixel or several; the rest a
+    // pixel at a time.
     static constexpr bool in_lanes = std::is_same_v<Real, double> && F::id == Formula::article && !Sw::phong;
 
 public:
@@ -256,8 +257,9 @@ public:
         WorkCounts work;
         RowCounts counts;
         if constexpr (in_lanes) {
-            if (spp() == 1 &&
-                general_row_in_lanes(world_, GeneralLaneStages{Sw::shadows, Sw::ambient, Sw::many}, w, i, out, counts))
+            const GeneralLaneStages stages{Sw::shadows, Sw::ambient, Sw::many};
+            if (spp() == 1 ? general_row_in_lanes(world_, stages, w, i, out, counts)
+                           : general_sampled_row_in_lanes(world_, stages, w, i, spp(), out, counts))
                 return counts;
         }
         if (spp() > 1) {

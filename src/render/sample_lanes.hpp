@@ -21,6 +21,7 @@
 
 #include "render/article_lanes.hpp"
 #include "render/article_row_lanes.hpp"
+#include "render/intensity_lanes.hpp"
 #include "render/kernel.hpp"
 #include "render/sample_hashes.hpp"
 #include "render/samples.hpp"
@@ -187,13 +188,16 @@ struct MeanDivisor {
 
 // A sample's branch as one unsigned integer a lane, its fields 11 bits wide
 // (spp is at most 1024 = 2^10): 1 at bit 0 if it missed, at bit 11 if dark,
-// at bit 22 if non-finite (lit: none; the branches exclude each other).
+// at bit 22 if non-finite, at bit 33 if shadowed (the general tracer's, in
+// double: 64-bit codes), lit: none (the branches exclude each other).
 // Summed, the fields count a pixel's samples per branch; the centre sample's
 // is kept whole. One vector where three masks were: a third of the selects
 // and registers. In 32 bits the non-finite field holds 1023: 1024 such
 // samples wrap the sum to 0, "all lit", which agrees as "all non-finite"
 // does, and the sums serve only to tell whether the samples agree.
-constexpr int miss_field = 0, dark_field = 11, non_finite_field = 22;
+constexpr int miss_field = 0, dark_field = 11, non_finite_field = 22, shadowed_field = 33;
+template <class Code>
+inline constexpr bool has_shadowed_field = sizeof(Code{}[0]) == 8;
 template <class Code, class Mask>
 PROMYK_LANES_INLINE Code branch_code(Mask miss, Mask dark, Mask non_finite) {
     using Element = std::remove_reference_t<decltype(Code{}[0])>;
@@ -201,10 +205,17 @@ PROMYK_LANES_INLINE Code branch_code(Mask miss, Mask dark, Mask non_finite) {
     return (reinterpret_cast<Code>(miss) & (one << miss_field)) | (reinterpret_cast<Code>(dark) & (one << dark_field)) |
            (reinterpret_cast<Code>(non_finite) & (one << non_finite_field));
 }
+template <class Code, class Mask>
+PROMYK_LANES_INLINE Code branch_code(Mask miss, Mask dark, Mask non_finite, Mask shadowed) {
+    static_assert(has_shadowed_field<Code>);
+    using Element = std::remove_reference_t<decltype(Code{}[0])>;
+    constexpr Element one = 1;
+    return branch_code<Code>(miss, dark, non_finite) | (reinterpret_cast<Code>(shadowed) & (one << shadowed_field));
+}
 
-// The pixels of one vector of the kernel's lanes: their sums, branch counts
-// and centre samples.
-template <class Lane>
+// The pixels of one vector of the kernel's lanes: their sums (grey levels,
+// or r, g, b), branch counts and centre samples.
+template <class Lane, class Intensity = Lane>
 struct SampledLanes {
     using Points = PointsOf<Lane>;
     static constexpr int parts = parts_of<Lane>;
@@ -218,7 +229,7 @@ struct SampledLanes {
     UintsOf<Lane> j_hash;  // j hash_j
     // The first sample's intensity x is -0 + x, all of x's bits (+0 + x
     // would make a -0 +0), and its d is below infinity.
-    Lane sum = splat<Lane>(-0.0);
+    Intensity sum = every_channel<Lane, !std::is_same_v<Intensity, Lane>>(-0.0);
     Points nearest[parts]{};  // each part's from splat<Points>(INFINITY)
     Code branches{};  // samples per branch, summed branch_codes
     Code centre{};    // the centre sample's branch_code
@@ -248,7 +259,7 @@ struct SampleCounter {
 // distance from the pixel's centre (in double, as sample_pixel compares it).
 // InReal: the point was computed in float lanes (sample_point_lanes), its
 // offset (u, v) is exact in them and d is their float u² + v², compared
-// with a margin (take_sample).
+// with a margin (take_result).
 template <class Lane, bool InReal = false>
 struct SamplePoint {
     Lane x, y;
@@ -262,10 +273,10 @@ struct SamplePoint<Lane, true> {
 // Sample c.s's point for the vector's pixels, as sample_point computes it:
 // in double, x's and y's numerators rounded to the kernel's Real before
 // by_w divides them by Real(w).
-template <class Lane, class CellDivisor, class WDivisor>
+template <class Lane, class Intensity, class CellDivisor, class WDivisor>
 PROMYK_LANES_INLINE auto sample_point_lanes(const SampleGrid& grid, const CellDivisor& by_cell,
                                                          const WDivisor& by_w, const SampleCounter& c,
-                                                         const SampledLanes<Lane>& p) {
+                                                         const SampledLanes<Lane, Intensity>& p) {
     using Points = PointsOf<Lane>;
     using RealPart = typename PointLanes<Lane>::real;
     using Real = typename LaneTraits<Lane>::Real;
@@ -328,8 +339,8 @@ PROMYK_LANES_INLINE auto sample_point_lanes(const SampleGrid& grid, const CellDi
 // d_nearest (1 - 2^-19) or above d_nearest (1 + 2^-19), the products
 // rounded too, decides it; a lane between (a tie, or nearly) is compared in
 // double: rare. The nearest's u, v and float d kept.
-template <class Lane>
-PROMYK_LANES_INLINE MaskOf<Lane> nearer_in_real(const SamplePoint<Lane, true>& E, SampledLanes<Lane>& p) {
+template <class Lane, class Intensity>
+PROMYK_LANES_INLINE MaskOf<Lane> nearer_in_real(const SamplePoint<Lane, true>& E, SampledLanes<Lane, Intensity>& p) {
     using Real = typename LaneTraits<Lane>::Real;
     using Mask = MaskOf<Lane>;
     using Points = PointsOf<Lane>;
@@ -356,18 +367,13 @@ PROMYK_LANES_INLINE MaskOf<Lane> nearer_in_real(const SamplePoint<Lane, true>& E
     return nearer;
 }
 
-// A sample of the vector's pixels at its points E, traced with the formula
-// Root and taken into the pixels' sums and counts.
-template <class Lane, template <class> class Root, bool InReal, class Real = typename LaneTraits<Lane>::Real>
-PROMYK_LANES_INLINE void take_sample(const ArticleRow<Real>& row, const SamplePoint<Lane, InReal>& E,
-                                     SampledLanes<Lane>& p) {
+// A sample's intensities at the vector's points E, and its branch codes,
+// taken into the pixels' sums and counts.
+template <class Lane, bool InReal, class Intensity>
+PROMYK_LANES_INLINE void take_result(const Intensity& I_P, CodeOf<Lane> code, const SamplePoint<Lane, InReal>& E,
+                                     SampledLanes<Lane, Intensity>& p) {
     using Code = CodeOf<Lane>;
-    // Early outs (article_lanes) pay in float: its sixteen lanes are often
-    // all background or all dark (bench accuracy --real float --spp 4,16:
-    // 9.66 -> 8.05 and 33.66 -> 27.47 x base), not in double's eight.
-    const LanePixel<Lane> pixel = article_lanes<Root, std::is_same_v<Real, float>>(SampleRow<Lane>(row, E.y), E.x);
-    const Code code = branch_code<Code>(pixel.miss, pixel.dark, pixel.non_finite);
-    p.sum = p.sum + pixel.I_P;
+    p.sum = plus(p.sum, I_P);
     p.branches += code;
     // Whether the sample is the nearest yet to its pixel's centre; -1
     // (true) stays all ones in the code's width.
@@ -389,87 +395,123 @@ PROMYK_LANES_INLINE void take_sample(const ArticleRow<Real>& row, const SamplePo
     p.centre = (code & nearer) | (p.centre & ~nearer);
 }
 
+// The article's samples (render/article_lanes.hpp) with the formula Root:
+// each traced at its points E and taken into the pixels (a shooter of
+// draw_sampled_row: the general tracer's are render/general_sample_lanes.hpp's).
+template <template <class> class Root, class Real>
+struct ArticleSamples {
+    template <class Lane>
+    using Intensity = Lane;
+    const ArticleRow<Real>& row;
+    template <class Lane, bool InReal>
+    PROMYK_LANES_INLINE void operator()(const SamplePoint<Lane, InReal>& E, SampledLanes<Lane>& p, MaskOf<Lane>) {
+        // Early outs (article_lanes) pay in float: its sixteen lanes are often
+        // all background or all dark (bench accuracy --real float --spp 4,16:
+        // 9.66 -> 8.05 and 33.66 -> 27.47 x base), not in double's eight.
+        const LanePixel<Lane> pixel = article_lanes<Root, std::is_same_v<Real, float>>(SampleRow<Lane>(row, E.y), E.x);
+        take_result(pixel.I_P, branch_code<CodeOf<Lane>>(pixel.miss, pixel.dark, pixel.non_finite), E, p);
+    }
+    // The row's work beyond its branches: one test of the sphere a sample.
+    void count(RowCounts& counts, int pixels, int spp) const {
+        counts.sphere_tests = static_cast<long long>(pixels) * spp;
+    }
+};
+
 // The row's pixels by branch, and those whose samples disagree, counted lane
 // by lane (a mask is -1 where true) and summed once at the row's end.
 template <class Vector>
 struct RowTally {
     using Mask = MaskOf<Vector>;
-    Mask miss{}, dark{}, non_finite{}, disagreeing{};
+    Mask miss{}, dark{}, non_finite{}, shadowed{}, disagreeing{};
     int first_non_finite_j = -1;
 };
 
 // The vector's first n pixels (kept: their lanes), from column j: their grey
-// levels into out, their branches into the tally (and, for the tests, I_P
-// and branches). A pixel's branch is its centre sample's, or non-finite when
-// its mean is; its samples agree when each branch took none or all of them.
-template <class Lane, class Div, class Real = typename LaneTraits<Lane>::Real>
-PROMYK_LANES_INLINE void put_sampled(const SampledLanes<Lane>& p, int spp, const Div& by_spp, int j, int n,
-                                     MaskOf<Lane> kept, std::uint8_t* out, RowTally<Lane>& tally, Real* I_P,
+// levels (or r, g, b) into out, their branches into the tally (and, for the
+// tests, I_P and branches). A pixel's branch is its centre sample's, or
+// non-finite when its mean is; its samples agree when each branch took none
+// or all of them.
+template <class Lane, class Intensity, class Div, class Out>
+PROMYK_LANES_INLINE void put_sampled(const SampledLanes<Lane, Intensity>& p, int spp, const Div& by_spp, int j, int n,
+                                     MaskOf<Lane> kept, std::uint8_t* out, RowTally<Lane>& tally, Out* I_P,
                                      std::uint8_t* branches) {
     using Mask = MaskOf<Lane>;
     using Code = CodeOf<Lane>;
     using Element = std::remove_reference_t<decltype(Code{}[0])>;
     constexpr int width = LaneTraits<Lane>::width;
-    const Lane mean = by_spp.divide(p.sum);  // sum / spp
-    put_grey_levels(mean, out + j, n);
+    const Intensity mean = divided(by_spp, p.sum);  // sum / spp
+    put_intensities(mean, out, j, n);
     // The samples agree when all took one branch: their codes' sum is spp
     // times that branch's code (0 where all are lit).
     const Element all = static_cast<Element>(spp), one = 1;
     const Code sum = p.branches;
-    const Mask agree = reinterpret_cast<Mask>((sum == 0) | (sum == all << miss_field) | (sum == all << dark_field) |
-                                              (sum == all << non_finite_field));
+    Mask agree = reinterpret_cast<Mask>((sum == 0) | (sum == all << miss_field) | (sum == all << dark_field) |
+                                        (sum == all << non_finite_field));
+    Mask centre_shadowed{};
+    if constexpr (has_shadowed_field<Code>) {
+        agree |= reinterpret_cast<Mask>(sum == all << shadowed_field);
+        centre_shadowed = reinterpret_cast<Mask>(p.centre == one << shadowed_field);
+    }
     tally.disagreeing -= ~agree & kept;
     const Mask centre_miss = reinterpret_cast<Mask>(p.centre == one << miss_field),
                centre_dark = reinterpret_cast<Mask>(p.centre == one << dark_field),
                centre_non_finite = reinterpret_cast<Mask>(p.centre == one << non_finite_field);
-    const Mask finite = mean * Real(0) == Real(0);  // finite_value
+    const Mask finite = finite_channels(mean);  // finite_value
     const Mask non_finite = (~finite | centre_non_finite) & kept;
     tally.miss -= finite & centre_miss & kept;
     tally.dark -= finite & centre_dark & kept;
+    if constexpr (has_shadowed_field<Code>) tally.shadowed -= finite & centre_shadowed & kept;
     tally.non_finite -= non_finite;
     if (tally.first_non_finite_j < 0 && any(non_finite))  // rare
         for (int k = width - 1; k >= 0; --k)
             if (non_finite[k]) tally.first_non_finite_j = j + k;
     if (I_P || branches) {
         for (int k = 0; k < n; ++k) {
-            const Branch branch = non_finite[k]       ? Branch::non_finite
-                                  : centre_miss[k]   ? Branch::miss
-                                  : centre_dark[k]   ? Branch::dark
-                                                     : Branch::lit;
-            if (I_P) I_P[j + k] = mean[k];
+            const Branch branch = non_finite[k]        ? Branch::non_finite
+                                  : centre_miss[k]     ? Branch::miss
+                                  : centre_dark[k]     ? Branch::dark
+                                  : centre_shadowed[k] ? Branch::shadowed
+                                                       : Branch::lit;
+            if (I_P) {
+                if constexpr (std::is_same_v<Intensity, Lane>)
+                    I_P[j + k] = mean[k];
+                else
+                    I_P[j + k] = {mean.x[k], mean.y[k], mean.z[k]};
+            }
             if (branches) branches[j + k] = static_cast<std::uint8_t>(branch);
         }
     }
 }
 
-// Row grid.i into out[0 .. w) from grid.spp samples a pixel, with the
-// formula Root: two vectors of pixels in flight (two independent chains of
-// square roots and divisions), then one for the rest.
-template <class Lane, template <class> class Root, bool ExactCell, bool ExactW,
-          class Real = typename LaneTraits<Lane>::Real>
-PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<Real>& row, const SampleGrid& grid, int lo, int hi,
-                                               std::uint8_t* out, Real* I_P, std::uint8_t* branches) {
+// Columns [lo, hi) of row grid.i into out from grid.spp samples a pixel,
+// each traced by `shoot` (ArticleSamples, or the general tracer's): two
+// vectors of pixels in flight (two independent chains of square roots and
+// divisions), then one for the rest.
+template <class Lane, bool ExactCell, bool ExactW, class Shooter, class Out>
+PROMYK_LANES_INLINE RowCounts draw_sampled_row(Shooter& shoot, const SampleGrid& grid, int lo, int hi,
+                                               std::uint8_t* out, Out* I_P, std::uint8_t* branches) {
+    using Real = typename LaneTraits<Lane>::Real;
     using Points = PointsOf<Lane>;
+    using Pixels = SampledLanes<Lane, typename Shooter::template Intensity<Lane>>;
     constexpr int width = LaneTraits<Lane>::width;
     using U = UintsOf<Lane>;
     using Mask = MaskOf<Lane>;
-    // by_cell: 2^16 n, the jitter's denominator (take_sample); exact when n is.
-    // by_w and by_cell divide bounded numerators, never -0: WholeDivisor's
-    // fmas may stand for the division (in double); by_spp divides any sum.
+    // by_cell: 2^16 n, the jitter's denominator (sample_point_lanes); exact
+    // when n is. by_w and by_cell divide bounded numerators, never -0:
+    // WholeDivisor's fmas may stand for the division (in double); by_spp
+    // divides any sum.
     const Divisor<Points, ExactCell, true> by_cell(65536 * grid.n);
     const Divisor<Lane, ExactW, true> by_w(grid.w);
     const MeanDivisor<Lane> by_spp(grid.spp);
     RowTally<Lane> tally;
     const int spp = grid.spp;
-    RowCounts counts;
-    counts.sphere_tests = static_cast<long long>(hi - lo) * spp;
     U lane_numbers;  // 0, 1, .. width - 1
     for (int k = 0; k < width; ++k) lane_numbers[k] = static_cast<std::uint32_t>(k);
     // Float lanes with an exact cell compute their points in float
     // (sample_point_lanes) and read x0_real; the rest x0 and nearest, in double.
     constexpr bool points_in_real = parts_of<Lane> > 1 && ExactCell;
     const auto pixels = [&](int j) __attribute__((always_inline)) {
-        SampledLanes<Lane> p;
+        Pixels p;
         const U j_lanes = static_cast<std::uint32_t>(j) + lane_numbers;
         if constexpr (points_in_real) {
             p.x0_real = Real(2) * __builtin_convertvector(j_lanes, Lane) + Real(1);
@@ -484,9 +526,10 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<Real>& row, cons
         return p;
     };
     const std::uint32_t n = static_cast<std::uint32_t>(grid.n);
-    const auto points = [&](const SampleCounter& c, const SampledLanes<Lane>& p) __attribute__((always_inline)) {
+    const auto points = [&](const SampleCounter& c, const Pixels& p) __attribute__((always_inline)) {
         return sample_point_lanes(grid, by_cell, by_w, c, p);
     };
+    const Mask all_kept = ~Mask{};
     // Each sample's points are computed a sample ahead, in the step before
     // the sample they lead (the pair's last sample computes the next pair's
     // first): their hash and divisions then run while the square roots
@@ -494,7 +537,7 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<Real>& row, cons
     // chain rather than by its work. The last pair computes one unused.
     int j = lo;
     if (j + 2 * width <= hi) {
-        SampledLanes<Lane> p0 = pixels(j), p1 = pixels(j + width);
+        Pixels p0 = pixels(j), p1 = pixels(j + width);
         auto E0 = points(SampleCounter{}, p0), E1 = points(SampleCounter{}, p1);
         for (; j + 2 * width <= hi; j += 2 * width) {
             SampleCounter c;
@@ -502,41 +545,57 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<Real>& row, cons
                 SampleCounter c_next = c;
                 c_next.next(n);
                 const auto next0 = points(c_next, p0), next1 = points(c_next, p1);
-                take_sample<Lane, Root>(row, E0, p0);
-                take_sample<Lane, Root>(row, E1, p1);
+                shoot(E0, p0, all_kept);
+                shoot(E1, p1, all_kept);
                 c = c_next, E0 = next0, E1 = next1;
             }
-            const SampledLanes<Lane> q0 = pixels(j + 2 * width), q1 = pixels(j + 3 * width);
+            const Pixels q0 = pixels(j + 2 * width), q1 = pixels(j + 3 * width);
             const auto next0 = points(SampleCounter{}, q0), next1 = points(SampleCounter{}, q1);
-            take_sample<Lane, Root>(row, E0, p0);
-            take_sample<Lane, Root>(row, E1, p1);
-            put_sampled(p0, spp, by_spp, j, width, ~Mask{}, out, tally, I_P, branches);
-            put_sampled(p1, spp, by_spp, j + width, width, ~Mask{}, out, tally, I_P, branches);
+            shoot(E0, p0, all_kept);
+            shoot(E1, p1, all_kept);
+            put_sampled(p0, spp, by_spp, j, width, all_kept, out, tally, I_P, branches);
+            put_sampled(p1, spp, by_spp, j + width, width, all_kept, out, tally, I_P, branches);
             p0 = q0, p1 = q1, E0 = next0, E1 = next1;
         }
     }
     for (; j < hi; j += width) {  // the last vector's lanes past hi are computed and dropped
-        SampledLanes<Lane> p = pixels(j);
-        SampleCounter c;
-        for (; c.s < spp; c.next(n)) take_sample<Lane, Root>(row, sample_point_lanes(grid, by_cell, by_w, c, p), p);
+        Pixels p = pixels(j);
         const int kept_lanes = hi - j < width ? hi - j : width;
         Mask kept{};
         for (int k = 0; k < kept_lanes; ++k) kept[k] = -1;
+        SampleCounter c;
+        for (; c.s < spp; c.next(n)) shoot(sample_point_lanes(grid, by_cell, by_w, c, p), p, kept);
         put_sampled(p, spp, by_spp, j, kept_lanes, kept, out, tally, I_P, branches);
     }
-    int miss = 0, dark = 0, non_finite = 0;
+    RowCounts counts;
+    int miss = 0, dark = 0, non_finite = 0, shadowed = 0;
     for (int k = 0; k < width; ++k) {
         miss += static_cast<int>(tally.miss[k]);
         dark += static_cast<int>(tally.dark[k]);
         non_finite += static_cast<int>(tally.non_finite[k]);
+        shadowed += static_cast<int>(tally.shadowed[k]);
         counts.disagreeing += static_cast<int>(tally.disagreeing[k]);
     }
     counts.branches[static_cast<int>(Branch::miss)] = miss;
     counts.branches[static_cast<int>(Branch::dark)] = dark;
     counts.branches[static_cast<int>(Branch::non_finite)] = non_finite;
-    counts.branches[static_cast<int>(Branch::lit)] = (hi - lo) - miss - dark - non_finite;
+    counts.branches[static_cast<int>(Branch::shadowed)] = shadowed;
+    counts.branches[static_cast<int>(Branch::lit)] = (hi - lo) - miss - dark - non_finite - shadowed;
     counts.first_non_finite_j = tally.first_non_finite_j;
+    shoot.count(counts, hi - lo, spp);
     return counts;
+}
+
+// The numbers of row i's samples that do not change from sample to sample.
+PROMYK_LANES_INLINE SampleGrid sample_grid(int w, int i, int spp) {
+    SampleGrid grid;
+    grid.i = i, grid.w = w, grid.spp = spp;
+    grid.n = 1;
+    while ((grid.n + 1) * (grid.n + 1) <= spp) ++grid.n;  // spp_side (not compiled here)
+    grid.minus_y0 = -(2.0 * i + 1.0);
+    grid.i_hash = static_cast<std::uint32_t>(i) * hash_i;
+    grid.columns = sample_column_hashes(w, spp);
+    return grid;
 }
 
 // Columns [lo, hi) of row i of a w-pixel pane, spp > 1 samples a pixel, the
@@ -545,24 +604,19 @@ template <class Lane, class Real = typename LaneTraits<Lane>::Real>
 PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<Real>& row, int w, int i, int spp, int lo, int hi,
                                                std::uint8_t* out, Real* I_P, std::uint8_t* branches,
                                                Formula formula) {
-    SampleGrid grid;
-    grid.i = i, grid.w = w, grid.spp = spp;
-    grid.n = 1;
-    while ((grid.n + 1) * (grid.n + 1) <= spp) ++grid.n;  // spp_side (not compiled here)
-    grid.minus_y0 = -(2.0 * i + 1.0);
-    grid.i_hash = static_cast<std::uint32_t>(i) * hash_i;
-    grid.columns = sample_column_hashes(w, spp);
+    const SampleGrid grid = sample_grid(w, i, spp);
     // In float, an exact cell also takes the points in float lanes
     // (sample_point_lanes), which needs 2 w + 1 below 2^24.
     const bool cell_exact = power_of_two(grid.n) && (std::is_same_v<Real, double> || w <= (1 << 22));
     const bool w_exact = power_of_two(w);
     return with_root(formula, [&](auto root) {
         using R = decltype(root);
+        ArticleSamples<R::template Root, Real> shoot{row};
         if (cell_exact)
-            return w_exact ? draw_sampled_row<Lane, R::template Root, true, true>(row, grid, lo, hi, out, I_P, branches)
-                           : draw_sampled_row<Lane, R::template Root, true, false>(row, grid, lo, hi, out, I_P, branches);
-        return w_exact ? draw_sampled_row<Lane, R::template Root, false, true>(row, grid, lo, hi, out, I_P, branches)
-                       : draw_sampled_row<Lane, R::template Root, false, false>(row, grid, lo, hi, out, I_P, branches);
+            return w_exact ? draw_sampled_row<Lane, true, true>(shoot, grid, lo, hi, out, I_P, branches)
+                           : draw_sampled_row<Lane, true, false>(shoot, grid, lo, hi, out, I_P, branches);
+        return w_exact ? draw_sampled_row<Lane, false, true>(shoot, grid, lo, hi, out, I_P, branches)
+                       : draw_sampled_row<Lane, false, false>(shoot, grid, lo, hi, out, I_P, branches);
     });
 }
 

@@ -1,0 +1,99 @@
+// A row of the general tracer drawn from spp > 1 samples a pixel, in lanes:
+// render/sample_lanes.hpp's sampled row (each lane one pixel, all taking
+// sample s at once, summed in sample order, the centre sample's branch kept)
+// with the general tracer's pixel in place of the article's, its height
+// y_E each lane's own (LaneHeights, or OneSphereRow's for one sphere and one
+// light). Every pixel has sample_pixel over trace_general's bits and branch,
+// every row its counts (tests/general_sample_lanes_test.cpp). Included,
+// like render/general_row_lanes.hpp, by each instruction set's translation
+// unit (render/general_row.cpp, ..._avx2.cpp, ..._avx512.cpp), which
+// compiles it in its own namespace.
+#pragma once
+
+#include <cstdint>
+
+#include "render/general_lanes.hpp"
+#include "render/general_row.hpp"
+#include "render/general_row_lanes.hpp"  // with_switches
+#include "render/general_row_one_sphere.hpp"
+#include "render/kernel.hpp"
+#include "render/sample_lanes.hpp"
+
+namespace promyk::lanes {
+inline namespace PROMYK_LANES_ISA {
+
+// The general tracer's samples, a shooter of draw_sampled_row: each traced
+// at its points E and taken into the pixels, the work of the lanes kept
+// counted. Sw::one: one sphere and one light, from OneSphereRow's registers.
+template <class Sw, bool Rgb, class Lane, bool One = Sw::one>
+struct GeneralSamples {
+    template <class L>
+    using Intensity = LaneIntensity<L, Rgb>;
+    const GeneralRow<Rgb>& row;
+    LaneWork<Lane> work;
+    explicit GeneralSamples(const GeneralRow<Rgb>& r) : row(r) {}
+    PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> pixel(Lane x, Lane y, MaskOf<Lane> kept) {
+        return general_lanes<Sw>(row, LaneHeights<Rgb, Lane>(row, y), x, kept, work);
+    }
+};
+template <class Sw, bool Rgb, class Lane>
+struct GeneralSamples<Sw, Rgb, Lane, true> {
+    template <class L>
+    using Intensity = LaneIntensity<L, Rgb>;
+    const GeneralRow<Rgb>& row;
+    LaneWork<Lane> work;
+    OneSphereRow<Lane, Rgb> one;
+    explicit GeneralSamples(const GeneralRow<Rgb>& r) : row(r), one(r) {}
+    PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> pixel(Lane x, Lane y, MaskOf<Lane> kept) {
+        return one_sphere_lanes<Sw>(OneSphereRow<Lane, Rgb>(one, y), x, kept, work);
+    }
+};
+
+template <class Sw, bool Rgb, class Lane>
+struct GeneralShooter : GeneralSamples<Sw, Rgb, Lane> {
+    using GeneralSamples<Sw, Rgb, Lane>::GeneralSamples;
+    using Mask = MaskOf<Lane>;
+    PROMYK_LANES_INLINE void operator()(const SamplePoint<Lane>& E, SampledLanes<Lane, LaneIntensity<Lane, Rgb>>& p,
+                                        Mask kept) {
+        const GeneralLanePixel<Lane, Rgb> pixel = this->pixel(E.x, E.y, kept);
+        const Mask dark = lane_not(either(either(pixel.miss, pixel.non_finite), either(pixel.lit, pixel.shadowed)));
+        take_result(pixel.I_P, branch_code<CodeOf<Lane>>(pixel.miss, dark, pixel.non_finite, pixel.shadowed), E, p);
+    }
+    // The row's rays and tests: the shadow rays' (lane by lane), and the
+    // eye's, every object tested by every sample (one object: its one test).
+    void count(RowCounts& counts, int pixels, int spp) const {
+        const GeneralRow<Rgb>& r = this->row;
+        for (int k = 0; k < LaneTraits<Lane>::width; ++k) {
+            counts.shadow_rays += this->work.shadow_rays[k];
+            counts.sphere_tests += this->work.sphere_tests[k];
+            counts.plane_tests += this->work.plane_tests[k];
+        }
+        const long long rays = static_cast<long long>(pixels) * spp;
+        if constexpr (Sw::many) {
+            counts.sphere_tests += rays * r.sphere_count;
+            counts.plane_tests += rays * r.plane_count;
+        } else if (r.sphere_count > 0) {
+            counts.sphere_tests += rays;
+        } else {
+            counts.plane_tests += rays;
+        }
+    }
+};
+
+// Row i of a w-pixel pane, spp > 1 samples a pixel, the stages chosen at run
+// time (once a row). Every sample's point is computed by division (by_w and
+// by_cell not specialised for powers of two: the same bits, one
+// instantiation per stage where the article's kernel has four).
+template <class Lane, bool Rgb, class Out>
+PROMYK_LANES_INLINE RowCounts draw_sampled_general_row(const GeneralRow<Rgb>& row, GeneralLaneStages stages, int w,
+                                                       int i, int spp, std::uint8_t* out, Out* I_P,
+                                                       std::uint8_t* branches) {
+    const SampleGrid grid = sample_grid(w, i, spp);
+    return with_switches(stages, row, [&](auto sw) {
+        GeneralShooter<decltype(sw), Rgb, Lane> shoot(row);
+        return draw_sampled_row<Lane, false, false>(shoot, grid, 0, w, out, I_P, branches);
+    });
+}
+
+}  // namespace PROMYK_LANES_ISA
+}  // namespace promyk::lanes

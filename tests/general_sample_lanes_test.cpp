@@ -1,0 +1,225 @@
+// The general tracer's sampled rows in lanes (render/general_sample_lanes.hpp)
+// give every pixel the bits and the branch that sample_pixel over
+// trace_general gives it (the traced path's samples, one pixel at a time),
+// and count each row's branches, disagreeing pixels, first non-finite
+// column, shadow rays and tests as GeneralKernel counts them: on every
+// instruction-set path this processor has, at spp 4 (a cell of a power of
+// two) and 9 (not), on the scenes tests/general_lanes_test.cpp draws at one
+// sample; at spp 1024 (the samples' 11-bit fields full) on a few pixels.
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "general_scenes_support.hpp"
+#include "geometry/sphere_formulas.hpp"
+#include "image/quantize.hpp"
+#include "isa_forced.hpp"
+#include "render/general_kernel.hpp"
+#include "render/general_row.hpp"
+#include "render/general_tracer.hpp"
+#include "render/isa.hpp"
+#include "render/sampling.hpp"
+#include "render/stages.hpp"
+#include "render/world.hpp"
+#include "trace/recorder.hpp"
+
+namespace {
+
+using namespace promyk;
+using namespace general_scenes_support;
+
+template <bool Rgb>
+using IntensityOf = typename World<double, Rgb>::Intensity;
+
+// What sample_pixel over trace_general gives a pane: each pixel, and each
+// row's counts as GeneralKernel's one-pixel loop counts them.
+template <bool Rgb>
+struct Sampled {
+    std::vector<SampledPixel<IntensityOf<Rgb>>> pixels;
+    std::vector<RowCounts> rows;
+};
+
+template <class Sw, bool Rgb>
+Sampled<Rgb> sampled_pane(const World<double, Rgb>& world, int w, int spp) {
+    Sampled<Rgb> sampled;
+    NullRecorder none;
+    for (int i = 0; i < w; ++i) {
+        RowCounts counts;
+        WorkCounts work;
+        for (int j = 0; j < w; ++j) {
+            const auto pixel = sample_pixel<IntensityOf<Rgb>>(
+                w, i, j, spp, world.z_E,
+                [&](int, const Vec3d& E) { return trace_general<Sw, SphereFormula<Formula::article>>(world, E, work, none); },
+                [](int, const auto&) {});
+            ++counts.branches[static_cast<int>(pixel.branch)];
+            if (!pixel.agree()) ++counts.disagreeing;
+            if (pixel.branch == Branch::non_finite && counts.first_non_finite_j < 0) counts.first_non_finite_j = j;
+            sampled.pixels.push_back(pixel);
+        }
+        counts.shadow_rays = work.shadow_rays;
+        counts.sphere_tests = work.sphere_tests;
+        counts.plane_tests = work.plane_tests;
+        sampled.rows.push_back(counts);
+    }
+    return sampled;
+}
+
+// The sampled pane with the scene's stages as template arguments (no Phong).
+template <bool Rgb>
+Sampled<Rgb> sampled_pane(const World<double, Rgb>& world, const Stages& s, int w, int spp) {
+    return with_stage_switches(s, [&](auto sw) { return sampled_pane<decltype(sw)>(world, w, spp); });
+}
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same_bits(const Vec3d& a, const Vec3d& b) {
+    return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z);
+}
+
+struct Mismatches {
+    int bits = 0, branches = 0, bytes = 0, counts = 0, kernel = 0;
+};
+
+int count_mismatches(const RowCounts& drawn, const RowCounts& want) {
+    int found = 0;
+    for (int b = 0; b < branch_count; ++b) found += drawn.branches[b] != want.branches[b];
+    found += drawn.disagreeing != want.disagreeing;
+    found += drawn.first_non_finite_j != want.first_non_finite_j;
+    found += drawn.shadow_rays != want.shadow_rays;
+    found += drawn.sphere_tests != want.sphere_tests;
+    found += drawn.plane_tests != want.plane_tests;
+    found += drawn.skipped != 0;
+    return found;
+}
+
+// Every row of the pane on the path in use, against the sampled pane: the
+// lanes' own row (means and branches), and the kernel's row (its bytes and
+// counts: GeneralKernel::row draws it in lanes).
+template <bool Rgb>
+Mismatches compare_pane(const Scene& scene, const World<double, Rgb>& world, const Stages& stages, int w, int spp,
+                        const Sampled<Rgb>& sampled) {
+    Mismatches found;
+    const GeneralLaneStages lane_stages{stages.shadows, stages.ambient, stages.objects};
+    const std::unique_ptr<Kernel> kernel = make_general_kernel(scene, RealType::double_, Formula::article, spp);
+    const int channels = Rgb ? 3 : 1;
+    std::vector<IntensityOf<Rgb>> I_P(static_cast<std::size_t>(w));
+    std::vector<std::uint8_t> branches(static_cast<std::size_t>(w)), out(static_cast<std::size_t>(w * channels)),
+        kernel_out(out.size());
+    for (int i = 0; i < w; ++i) {
+        RowCounts drawn;
+        REQUIRE(general_sampled_row_intensities(world, lane_stages, w, i, spp, out.data(), drawn, I_P.data(),
+                                                branches.data()));
+        const RowCounts from_kernel = kernel->row(w, i, kernel_out.data());
+        for (int j = 0; j < w; ++j) {
+            const auto& want = sampled.pixels[static_cast<std::size_t>(i) * w + j];
+            found.bits += !same_bits(I_P[j], want.I_P);
+            found.branches += branches[j] != static_cast<std::uint8_t>(want.branch);
+            double channel[3];
+            if constexpr (Rgb)
+                channel[0] = want.I_P.x, channel[1] = want.I_P.y, channel[2] = want.I_P.z;
+            else
+                channel[0] = want.I_P;
+            for (int c = 0; c < channels; ++c) {
+                const std::size_t at = static_cast<std::size_t>(channels * j + c);
+                found.bytes += out[at] != to_byte(channel[c]);
+                found.kernel += kernel_out[at] != to_byte(channel[c]);
+            }
+        }
+        const RowCounts& want = sampled.rows[static_cast<std::size_t>(i)];
+        found.counts += count_mismatches(drawn, want);
+        found.kernel += count_mismatches(from_kernel, want);
+    }
+    return found;
+}
+
+// Checks the scene at each spp on every path; false when its stages are not
+// in lanes (Phong).
+template <bool Rgb>
+bool check_scene(const NamedScene& named, const std::vector<int>& spps, const std::vector<int>& panes) {
+    const Stages stages = plan_stages(named.scene);
+    if (stages.phong) return false;
+    const World<double, Rgb> world = compile_world<double, Rgb>(named.scene);
+    for (const int spp : spps) {
+        for (const int w : panes) {
+            const Sampled<Rgb> sampled = sampled_pane(world, stages, w, spp);
+            for (const Isa isa : supported_isas()) {
+                PathForced forced(isa);
+                INFO(named.name << ", w = " << w << ", spp = " << spp << ", " << isa_name(isa));
+                const Mismatches found = compare_pane(named.scene, world, stages, w, spp, sampled);
+                CHECK(found.bits == 0);
+                CHECK(found.branches == 0);
+                CHECK(found.bytes == 0);
+                CHECK(found.counts == 0);
+                CHECK(found.kernel == 0);
+            }
+        }
+    }
+    return true;
+}
+
+bool check_scene(const NamedScene& named, const std::vector<int>& spps, const std::vector<int>& panes) {
+    return plan_stages(named.scene).colour ? check_scene<true>(named, spps, panes)
+                                           : check_scene<false>(named, spps, panes);
+}
+
+bool check_scene(const NamedScene& named, const std::vector<int>& spps) {
+    return check_scene(named, spps, named.panes);
+}
+
+// Panes of two vectors and more (the loop that keeps two in flight) and
+// of less than one, none a whole number of them.
+const std::vector<int> sample_panes = {7, 19};
+
+}  // namespace
+
+TEST_CASE("General sampled rows in lanes: one sphere and one light, plain or not, hostile too, every path, "
+          "bit-identical to the traced path's samples",
+          "[sample_lanes][lanes][isa][non-finite]") {
+    for (const NamedScene& named : one_sphere_scenes(24)) CHECK(check_scene(named, {4, 9}, sample_panes));
+}
+
+TEST_CASE("General sampled rows in lanes: the example scenes, every path, bit-identical to the traced path's samples",
+          "[sample_lanes][lanes][isa]") {
+    int checked = 0;
+    for (const NamedScene& named : example_scenes()) checked += check_scene(named, {4, 9}, {19, 24});
+    CHECK(checked >= 8);
+}
+
+TEST_CASE("General sampled rows in lanes: the hard cases, hostile and random scenes, ties and an eye inside, every "
+          "path, bit-identical to the traced path's samples",
+          "[sample_lanes][lanes][isa][hard][non-finite]") {
+    int checked = 0;
+    for (const NamedScene& named : hard_case_scenes()) checked += check_scene(named, {4}, sample_panes);
+    CHECK(checked >= 10);
+    for (const NamedScene& named : hostile_scenes(24)) CHECK(check_scene(named, {4, 9}, {5, 9}));
+    for (const NamedScene& named : random_scenes(24)) CHECK(check_scene(named, {4, 9}, sample_panes));
+    for (const NamedScene& named : tie_scenes()) CHECK(check_scene(named, {4, 9}, sample_panes));
+}
+
+TEST_CASE("General sampled rows in lanes: 1024 samples a pixel, every branch's field full, every path",
+          "[sample_lanes][lanes][isa]") {
+    // A floor in the shadow of a sphere far above it, seen through a narrow
+    // pane (z_E = 20): the bottom row's 1024 samples are all shadowed
+    // (the field's sum 1024), the other rows' split between misses, the
+    // sphere's dark underside, the lit floor and its shadow.
+    Scene scene;
+    scene.z_E = 20;
+    scene.shadows = true;
+    scene.spheres = {Sphere{{0, 60, 60}, 58}};
+    scene.planes = {Plane{{0, -1, 0}, {0, 1, 0}}};
+    scene.lights = {Light{{0, 1000, 60}, 1}};
+    const NamedScene shade{"floor under a sphere, shadows", scene, {3}};
+    const World<double, false> world = compile_world<double, false>(scene);
+    const Sampled<false> sampled = sampled_pane(world, plan_stages(scene), 3, 1024);
+    const auto& bottom = sampled.pixels[7];
+    CHECK(bottom.branches[static_cast<int>(Branch::shadowed)] == 1024);
+    CHECK(sampled.rows[0].disagreeing == 3);
+    CHECK(sampled.rows[1].disagreeing > 0);
+    CHECK(check_scene(shade, {1024}));
+    const std::vector<NamedScene> one = one_sphere_scenes(0);
+    CHECK(check_scene(one[1], {1024}, {2}));   // shadows
+    CHECK(check_scene(one[17], {1024}, {2}));  // the eye inside, shadows
+}
