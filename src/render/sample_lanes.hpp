@@ -398,17 +398,19 @@ PROMYK_LANES_INLINE void take_result(const Intensity& I_P, CodeOf<Lane> code, co
 // The article's samples (render/article_lanes.hpp) with the formula Root:
 // each traced at its points E and taken into the pixels (a shooter of
 // draw_sampled_row: the general tracer's are render/general_sample_lanes.hpp's).
-template <template <class> class Root, class Real>
+// EarlyOuts (article_lanes) pay in float: its sixteen lanes are often all
+// background or all dark (bench accuracy --real float --spp 4,16: 9.66 ->
+// 8.05 and 33.66 -> 27.47 x base); in double's eight only where the row was
+// not narrowed to its silhouette, whole vectors of background (bench
+// effects --spp 4, art. full: 2.02 -> 1.47 a sample x spp 1).
+template <template <class> class Root, class Real, bool EarlyOuts>
 struct ArticleSamples {
     template <class Lane>
     using Intensity = Lane;
     const ArticleRow<Real>& row;
     template <class Lane, bool InReal>
     PROMYK_LANES_INLINE void operator()(const SamplePoint<Lane, InReal>& E, SampledLanes<Lane>& p, MaskOf<Lane>) {
-        // Early outs (article_lanes) pay in float: its sixteen lanes are often
-        // all background or all dark (bench accuracy --real float --spp 4,16:
-        // 9.66 -> 8.05 and 33.66 -> 27.47 x base), not in double's eight.
-        const LanePixel<Lane> pixel = article_lanes<Root, std::is_same_v<Real, float>>(SampleRow<Lane>(row, E.y), E.x);
+        const LanePixel<Lane> pixel = article_lanes<Root, EarlyOuts>(SampleRow<Lane>(row, E.y), E.x);
         take_result(pixel.I_P, branch_code<CodeOf<Lane>>(pixel.miss, pixel.dark, pixel.non_finite), E, p);
     }
     // The row's work beyond its branches: one test of the sphere a sample.
@@ -609,14 +611,20 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<Real>& row, int 
     // (sample_point_lanes), which needs 2 w + 1 below 2^24.
     const bool cell_exact = power_of_two(grid.n) && (std::is_same_v<Real, double> || w <= (1 << 22));
     const bool w_exact = power_of_two(w);
-    return with_root(formula, [&](auto root) {
-        using R = decltype(root);
-        ArticleSamples<R::template Root, Real> shoot{row};
+    const auto draw = [&](auto shoot) __attribute__((always_inline)) {
         if (cell_exact)
             return w_exact ? draw_sampled_row<Lane, true, true>(shoot, grid, lo, hi, out, I_P, branches)
                            : draw_sampled_row<Lane, true, false>(shoot, grid, lo, hi, out, I_P, branches);
         return w_exact ? draw_sampled_row<Lane, false, true>(shoot, grid, lo, hi, out, I_P, branches)
                        : draw_sampled_row<Lane, false, false>(shoot, grid, lo, hi, out, I_P, branches);
+    };
+    return with_root(formula, [&](auto root) {
+        using R = decltype(root);
+        if constexpr (std::is_same_v<Real, float>)
+            return draw(ArticleSamples<R::template Root, Real, true>{row});
+        else
+            return lo == 0 && hi == w ? draw(ArticleSamples<R::template Root, Real, true>{row})
+                                      : draw(ArticleSamples<R::template Root, Real, false>{row});
     });
 }
 

@@ -50,13 +50,31 @@ inline std::uint32_t sample_hash(int i, int j, int s) {
     return mix32(u32(i) * hash_i ^ mix32(u32(j) * hash_j ^ mix32(u32(s) + hash_s)));
 }
 
-// Sample s of pixel (i, j) on an n x n grid (n = spp_side(spp) > 1): cell
-// (s div n, s mod n), 16 bits of jitter along each axis (exact binary fractions).
-inline SampleOffset sample_offset_on(int i, int j, int s, int n) {
+// x / d for a whole number d known before a loop: x times 1/d where d is a
+// power of two (1/d is then exact, and both round the same exact quotient
+// once: the same bits, subnormal ones too), else the division itself.
+template <class Real>
+struct DivideBy {
+    Real d, inverse;
+    bool power_of_two;
+    explicit DivideBy(int whole)
+        : d(Real(whole)), inverse(Real(1) / Real(whole)), power_of_two(whole > 0 && (whole & (whole - 1)) == 0) {}
+    Real operator()(Real x) const { return power_of_two ? x * inverse : x / d; }
+};
+
+// Sample s of pixel (i, j) in cell (column, row) = (s mod n, s div n) of an
+// n x n grid (by_n divides by n), 16 bits of jitter along each axis (exact
+// binary fractions). A loop over the samples counts the cell along.
+inline SampleOffset sample_offset_in_cell(int i, int j, int s, int column, int row, const DivideBy<double>& by_n) {
     const std::uint32_t h = sample_hash(i, j, s);
     const double jitter_u = static_cast<double>(h & 0xffffU) / 65536.0;
     const double jitter_v = static_cast<double>(h >> 16) / 65536.0;
-    return {(s % n + jitter_u) / n - 0.5, (s / n + jitter_v) / n - 0.5};
+    return {by_n(column + jitter_u) - 0.5, by_n(row + jitter_v) - 0.5};
+}
+
+// Sample s of pixel (i, j) on an n x n grid (n = spp_side(spp) > 1).
+inline SampleOffset sample_offset_on(int i, int j, int s, int n) {
+    return sample_offset_in_cell(i, j, s, s % n, s / n, DivideBy<double>(n));
 }
 
 // Sample s (0 .. spp-1, row by row through the strata) of pixel (i, j).
@@ -69,11 +87,16 @@ int centre_sample(int i, int j, int spp);
 // The sample's point on the pane: the article's x_E = (2j + 1)/w - 1 and
 // y_E = -(2i + 1)/w + 1 with j + 1/2 + u in place of j + 1/2 (and i + 1/2 + v),
 // so for spp = 1 (u = v = 0) the same operations give the same bits.
+// by_w divides by Real(w).
+template <class Real>
+Vec3<Real> sample_point(int i, int j, const DivideBy<Real>& by_w, Real z_E, SampleOffset o) {
+    const Real x = by_w(Real(2.0 * j + 1.0 + 2.0 * o.u)) - Real(1);
+    const Real y = by_w(-Real(2.0 * i + 1.0 + 2.0 * o.v)) + Real(1);
+    return {x, y, z_E};
+}
 template <class Real>
 Vec3<Real> sample_point(int i, int j, int w, Real z_E, SampleOffset o) {
-    const Real x = Real(2.0 * j + 1.0 + 2.0 * o.u) / Real(w) - Real(1);
-    const Real y = -Real(2.0 * i + 1.0 + 2.0 * o.v) / Real(w) + Real(1);
-    return {x, y, z_E};
+    return sample_point(i, j, DivideBy<Real>(w), z_E, o);
 }
 
 }  // namespace promyk

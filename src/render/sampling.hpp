@@ -41,10 +41,16 @@ SampledPixel<Intensity> sample_pixel(int w, int i, int j, int spp, Real z_E, Sho
     Intensity sum{};
     double nearest = INFINITY;
     Branch centre_branch = Branch::miss;
+    // The divisions by n and w, and the cell counted along: no division
+    // unit where n or w is a power of two, no integer division ever.
     const int n = spp_side(spp);
+    const DivideBy<double> by_n(n);
+    const DivideBy<Real> by_w(w);
+    int column = 0, row = 0;
     for (int s = 0; s < spp; ++s) {
-        const SampleOffset o = spp == 1 ? SampleOffset{} : sample_offset_on(i, j, s, n);
-        const auto result = shoot(s, sample_point<Real>(i, j, w, z_E, o));
+        const SampleOffset o = spp == 1 ? SampleOffset{} : sample_offset_in_cell(i, j, s, column, row, by_n);
+        if (++column == n) column = 0, ++row;
+        const auto result = shoot(s, sample_point<Real>(i, j, by_w, z_E, o));
         on_result(s, result);
         sum = s == 0 ? result.I_P : sum + result.I_P;
         ++pixel.branches[static_cast<int>(result.branch)];
