@@ -22,17 +22,18 @@ namespace general_scenes_support {
 
 using namespace promyk;
 
-// f(Switches<...>{}) with the scene's stages as template arguments (no Phong:
-// its scenes are not in lanes).
+// f(Switches<...>{}) with the scene's stages as template arguments.
+template <bool Shadows, bool Phong, class F>
+decltype(auto) with_ambient_switches(const Stages& s, F&& f) {
+    if (s.ambient)
+        return s.objects ? f(Switches<Shadows, Phong, true, true>{}) : f(Switches<Shadows, Phong, true, false>{});
+    return s.objects ? f(Switches<Shadows, Phong, false, true>{}) : f(Switches<Shadows, Phong, false, false>{});
+}
 template <class F>
 decltype(auto) with_stage_switches(const Stages& s, F&& f) {
-    if (s.shadows) {
-        if (s.ambient)
-            return s.objects ? f(Switches<true, false, true, true>{}) : f(Switches<true, false, true, false>{});
-        return s.objects ? f(Switches<true, false, false, true>{}) : f(Switches<true, false, false, false>{});
-    }
-    if (s.ambient) return s.objects ? f(Switches<false, false, true, true>{}) : f(Switches<false, false, true, false>{});
-    return s.objects ? f(Switches<false, false, false, true>{}) : f(Switches<false, false, false, false>{});
+    if (s.shadows)
+        return s.phong ? with_ambient_switches<true, true>(s, f) : with_ambient_switches<true, false>(s, f);
+    return s.phong ? with_ambient_switches<false, true>(s, f) : with_ambient_switches<false, false>(s, f);
 }
 
 struct NamedScene {
@@ -79,15 +80,20 @@ inline std::vector<NamedScene> hostile_scenes(int count) {
         scene.spheres = {Sphere{point(), std::abs(big())}, Sphere{point(), std::abs(big())}};
         scene.planes = {Plane{point(), {unit(random), unit(random), unit(random) + 2}}};
         scene.lights = {Light{point(), std::abs(big())}, Light{point(), 1}};
-        scene.materials = {Material{n % 3 == 0 ? 0.1 : 0.0, 0.8, 0, 1, {1, 0.5, 0.25}}};
+        // Phong on every other scene: its k_s the 0.5 of a real one or up to
+        // 1e300 (the highlight overflows), on the sphere and the plane.
+        const double k_s = n % 2 == 1 ? (n % 4 == 1 ? 0.5 : 1e300) : 0.0;
+        scene.materials = {Material{n % 3 == 0 ? 0.1 : 0.0, 0.8, k_s, 1 + 7 * n, {1, 0.5, 0.25}}};
         scene.spheres[0].material = 0;
+        scene.planes[0].material = 0;
         scenes.push_back({"hostile " + std::to_string(n), scene, {9, 11}});
     }
     return scenes;
 }
 
 // Several spheres and planes in front of the eye (some around it), one to
-// three lights, with or without shadows, ambient and colour.
+// three lights, with or without shadows, ambient, Phong and colour (Phong
+// with materials of other exponents, or none, each lane its hit's).
 inline std::vector<NamedScene> random_scenes(int count) {
     std::mt19937_64 random(18);
     std::uniform_real_distribution<double> unit(-1, 1), positive(0, 1);
@@ -103,6 +109,10 @@ inline std::vector<NamedScene> random_scenes(int count) {
             m.ambient = n % 4 < 2 ? 0.2 * positive(random) : 0;
             m.diffuse = positive(random);
             if (coloured) m.colour = {positive(random), positive(random), positive(random)};
+            if (n % 4 == 1 || n % 4 == 2) {  // Phong; one material of three without it
+                m.specular = k == 2 ? 0.0 : 0.3 + 0.1 * k;
+                m.exponent = k == 1 ? 10000 : 1 + (n * 13 + k * 7) % 90;
+            }
             scene.materials.push_back(m);
         }
         const int spheres = 1 + n % 4, planes = n % 3;
@@ -150,22 +160,28 @@ inline std::vector<NamedScene> tie_scenes() {
     inside_twins.spheres.push_back(Sphere{{0, 0, 0.5}, 3, 1});
     inside_twins.spheres.push_back(Sphere{{0.5, 0, 1.5}, 0.4, -1});
     scenes.push_back({"eye inside twins, shadows", inside_twins, small_panes});
+    // Phong: the twins' highlights differ (k_s and n), the earlier wins.
+    Scene shiny_twins = twins_shadows;
+    shiny_twins.materials = {Material{0, 0.9, 0.6, 25, {1, 1, 1}}, Material{0.1, 0.3, 0.2, 3, {1, 1, 1}}};
+    scenes.push_back({"shiny twin spheres and planes, shadows", shiny_twins, small_panes});
     return scenes;
 }
 
 // One sphere and one light (render/general_row_one_sphere.hpp), every
 // combination of its switches: shadows, ambient, colour, plain (k_d, m and
-// c exactly 1) or not, the eye outside or inside; and hostile ones (numbers
+// c exactly 1) or not, the eye outside or inside, Phong or not (scenes 32 to
+// 63); and hostile ones (numbers
 // from 1e-300 to 1e300: deltas, roots, |K|^2, D and results overflow), some
 // of them plain.
 inline std::vector<NamedScene> one_sphere_scenes(int hostile) {
     std::vector<NamedScene> scenes;
-    for (int n = 0; n < 32; ++n) {
+    for (int n = 0; n < 64; ++n) {
         Scene scene;
         scene.shadows = n & 1;
-        const bool ambient = n & 2, coloured = n & 4, plain = n & 8, inside = n & 16;
+        const bool ambient = n & 2, coloured = n & 4, plain = n & 8, inside = n & 16, phong = n & 32;
         Material m;
         m.ambient = ambient ? 0.25 : 0;
+        if (phong) m.specular = 0.5, m.exponent = 1 + (n * 5) % 40;
         if (!plain) m.diffuse = 0.7, m.colour = coloured ? Colour{1, 0.5, 0.25} : Colour{0.6, 0.6, 0.6};
         scene.materials = {m};
         scene.spheres = {inside ? Sphere{{0.1, -0.2, 0.5}, 3, 0} : Sphere{{0.2, 0.1, 3.2}, 1.1, 0}};
@@ -182,8 +198,9 @@ inline std::vector<NamedScene> one_sphere_scenes(int hostile) {
         scene.z_E = std::abs(big());
         scene.shadows = n % 2 == 0;
         const bool plain = n % 3 != 0;
-        scene.materials = {plain ? Material{n % 4 == 0 ? 0.1 : 0.0, 1, 0, 1, white}
-                                 : Material{n % 4 == 0 ? 0.1 : 0.0, std::abs(big()), 0, 1, {1, 0.5, 0.25}}};
+        const double k_s = n % 4 == 3 ? 0.5 : n % 4 == 1 ? 1e300 : 0.0;  // Phong, its highlight overflowing
+        scene.materials = {plain ? Material{n % 4 == 0 ? 0.1 : 0.0, 1, k_s, 1 + n, white}
+                                 : Material{n % 4 == 0 ? 0.1 : 0.0, std::abs(big()), k_s, 1 + n, {1, 0.5, 0.25}}};
         scene.spheres = {Sphere{point(), std::abs(big()), 0}};
         scene.lights = {Light{point(), std::abs(big()), plain ? white : Colour{0.5, 1, 1}}};
         if (n % 5 == 0) scene.background = {0.1, 0.2, 0.3};

@@ -2,12 +2,11 @@
 // for several pixels of a row at once, in double with the article's formula
 // for the eye's rays: several spheres and planes (the nearest hit with t > 0,
 // ties to the earlier object, the far root when the eye is inside), several
-// lights, ambient, shadows, grey or colour. The same steps in the same order
-// as trace_general, each lane rounding as the one-pixel tracer does; its
-// branches are masks, and its early returns (non-finite) masks that stop a
-// lane. Phong is not here: its scenes stay one pixel at a time. Rendering
-// only: the traced path is trace_general; tests check that both give every
-// pixel the same bits (tests/general_lanes_test.cpp).
+// lights, ambient, shadows, Phong, grey or colour. The same steps in the
+// same order as trace_general, each lane rounding as the one-pixel tracer
+// does; its branches are masks, and its early returns (non-finite) masks
+// that stop a lane. Rendering only: the traced path is trace_general; tests
+// check that both give every pixel the same bits (tests/general_lanes_test.cpp).
 #pragma once
 
 #include <cstddef>
@@ -22,9 +21,10 @@
 namespace promyk::lanes {
 
 // The stages that change the pixel's steps (render/stages.hpp), as types.
-template <bool Shadows_, bool Ambient_, bool Many_, bool One_ = false, bool Plain_ = false>
+template <bool Shadows_, bool Phong_, bool Ambient_, bool Many_, bool One_ = false, bool Plain_ = false>
 struct LaneSwitches {
     static constexpr bool shadows = Shadows_;
+    static constexpr bool phong = Phong_;
     static constexpr bool ambient = Ambient_;
     static constexpr bool many = Many_;  // several objects: each tested, the nearest hit wins
     // One sphere and one light (render/general_row_one_sphere.hpp), and of
@@ -43,7 +43,8 @@ template <bool Rgb>
 struct GeneralRow {
     using Intensity = typename World<double, Rgb>::Intensity;
     struct Surface {
-        double k_a, k_d;
+        double k_a, k_d, k_s;
+        int n;  // Phong's exponent
         Intensity m;
     };
     struct Ball {
@@ -82,7 +83,7 @@ struct GeneralRow {
         background = world.background;
         auto surface = [&](int material) {
             const auto& s = world.materials[static_cast<std::size_t>(material)];
-            return Surface{s.k_a, s.k_d, s.m};
+            return Surface{s.k_a, s.k_d, s.k_s, s.n, s.m};
         };
         balls_.clear(), flats_.clear();
         for (const auto& b : world.spheres)
@@ -231,6 +232,65 @@ PROMYK_LANES_INLINE void plane_blocks_lanes(const Vec3<Lane>& P, const Vec3<Lane
     yes = both(both(crosses, lane_not(undecided)), both(s > 0.0, s < 1.0));
 }
 
+// Phong's stage (shading/phong.hpp), lanes at a time. V_hat = -P / |P|,
+// once a pixel.
+template <class Lane>
+PROMYK_LANES_INLINE Vec3<Lane> eye_direction_lanes(const Vec3<Lane>& P) {
+    const Lane length = lane_sqrt((P.x * P.x + P.y * P.y) + P.z * P.z);
+    return {-P.x / length, -P.y / length, -P.z / length};
+}
+// x^n by math/power.hpp's squarings, n the same in every lane.
+template <class Lane>
+PROMYK_LANES_INLINE Lane power_lanes(Lane x, int n) {
+    Lane y = splat<Lane>(1.0);
+    for (; n > 0; n >>= 1) {
+        if (n & 1) y = y * x;
+        x = x * x;
+    }
+    return y;
+}
+// n in every lane, as integers as wide as the lanes' masks.
+template <class Lane>
+PROMYK_LANES_INLINE MaskOf<Lane> exponent_lanes(int n) {
+    return MaskOf<Lane>{} + n;
+}
+// The same with each lane's own n (the hit object's): a lane whose n is
+// used up multiplies no more, so its y is power's.
+template <class Lane>
+PROMYK_LANES_INLINE Lane power_lanes(Lane x, MaskOf<Lane> n) {
+    Lane y = splat<Lane>(1.0);
+    for (; any(n > 0); n >>= 1) {
+        y = select(MaskOf<Lane>((n & 1) != 0), y * x, y);
+        x = x * x;
+    }
+    return y;
+}
+// phong_specular's k_s (R_hat.V_hat)^n times I, where RV > 0, else 0: N of
+// length r, K = L - P, KK = |K|^2; N: int or lanes.
+template <class Lane, class Exponent>
+PROMYK_LANES_INLINE Lane specular_lanes(const Vec3<Lane>& N, Lane r, const Vec3<Lane>& K, Lane KK,
+                                        const Vec3<Lane>& V_hat, Lane I, Lane k_s, Exponent n) {
+    const Vec3<Lane> N_P{N.x / r, N.y / r, N.z / r};
+    const Lane K_len = lane_sqrt(KK);
+    const Vec3<Lane> K_P{K.x / K_len, K.y / K_len, K.z / K_len};
+    const Lane cos_alpha = (N_P.x * K_P.x + N_P.y * K_P.y) + N_P.z * K_P.z;
+    const Lane twice = 2.0 * cos_alpha;
+    const Vec3<Lane> R_hat{twice * N_P.x - K_P.x, twice * N_P.y - K_P.y, twice * N_P.z - K_P.z};
+    const Lane RV = (R_hat.x * V_hat.x + R_hat.y * V_hat.y) + R_hat.z * V_hat.z;
+    return select(RV > 0.0, I * (k_s * power_lanes(RV, n)), splat<Lane>(0.0));
+}
+// term + specular where `where` (every channel), else term as it was (+0
+// would turn a -0 into 0).
+template <class Lane>
+PROMYK_LANES_INLINE Lane plus_specular(MaskOf<Lane> where, Lane term, Lane specular) {
+    return select(where, term + specular, term);
+}
+template <class Lane>
+PROMYK_LANES_INLINE Vec3<Lane> plus_specular(MaskOf<Lane> where, const Vec3<Lane>& term, Lane specular) {
+    return {select(where, term.x + specular, term.x), select(where, term.y + specular, term.y),
+            select(where, term.z + specular, term.z)};
+}
+
 // The eye's heights y_E: the row's, every lane's the same, its products
 // with y_E computed once a row (GeneralRow); or each lane's own (a sample's
 // point, render/general_sample_lanes.hpp), the same products in lanes.
@@ -292,14 +352,15 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> general_lanes(const GeneralRow<R
     Mask on_sphere;
     Vec3<Lane> N;
     Lane r;
-    Lane k_a, k_d;
+    Lane k_a, k_d, k_s;
+    MaskOf<Lane> n{};  // Phong's exponent, each lane's
     Intensity m;
     if constexpr (Sw::many) {
         // The hit object's own numbers, chosen lane by lane.
         on_sphere = nearest.id < sphere_count;
         Vec3<Lane> S{}, n_hat{};
         r = splat<Lane>(1.0);
-        k_a = k_d = splat<Lane>(0.0);
+        k_a = k_d = k_s = splat<Lane>(0.0);
         m = splat_of<Lane>(row.background);
         for (int k = 0; k < row.sphere_count; ++k) {
             const auto& ball = row.spheres[k];
@@ -308,6 +369,10 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> general_lanes(const GeneralRow<R
             r = select(is, splat<Lane>(ball.r), r);
             k_a = select(is, splat<Lane>(ball.surface.k_a), k_a);
             k_d = select(is, splat<Lane>(ball.surface.k_d), k_d);
+            if constexpr (Sw::phong) {
+                k_s = select(is, splat<Lane>(ball.surface.k_s), k_s);
+                n = pick_mask(is, exponent_lanes<Lane>(ball.surface.n), n);
+            }
             m = pick(is, splat_of<Lane>(ball.surface.m), m);
         }
         for (int k = 0; k < row.plane_count; ++k) {
@@ -316,6 +381,10 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> general_lanes(const GeneralRow<R
             n_hat = pick(is, splat_of<Lane>(flat.n_hat), n_hat);
             k_a = select(is, splat<Lane>(flat.surface.k_a), k_a);
             k_d = select(is, splat<Lane>(flat.surface.k_d), k_d);
+            if constexpr (Sw::phong) {
+                k_s = select(is, splat<Lane>(flat.surface.k_s), k_s);
+                n = pick_mask(is, exponent_lanes<Lane>(flat.surface.n), n);
+            }
             m = pick(is, splat_of<Lane>(flat.surface.m), m);
         }
         N = pick(on_sphere, Vec3<Lane>{P.x - S.x, P.y - S.y, P.z - S.z}, n_hat);
@@ -325,6 +394,7 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> general_lanes(const GeneralRow<R
         N = {P.x - ball.S.x, P.y - ball.S.y, P.z - ball.S.z};
         r = splat<Lane>(ball.r);
         k_a = splat<Lane>(ball.surface.k_a), k_d = splat<Lane>(ball.surface.k_d);
+        k_s = splat<Lane>(ball.surface.k_s), n = exponent_lanes<Lane>(ball.surface.n);
         m = splat_of<Lane>(ball.surface.m);
     } else {
         const auto& flat = row.planes[0];
@@ -332,10 +402,13 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> general_lanes(const GeneralRow<R
         N = splat_of<Lane>(flat.n_hat);
         r = splat<Lane>(1.0);
         k_a = splat<Lane>(flat.surface.k_a), k_d = splat<Lane>(flat.surface.k_d);
+        k_s = splat<Lane>(flat.surface.k_s), n = exponent_lanes<Lane>(flat.surface.n);
         m = splat_of<Lane>(flat.surface.m);
     }
     N = pick(nearest.flip, Vec3<Lane>{-N.x, -N.y, -N.z}, N);  // seen from inside, or from the plane's back
-    (void)k_a;
+    (void)k_a, (void)k_s, (void)n;
+    Vec3<Lane> V_hat{};
+    if constexpr (Sw::phong) V_hat = eye_direction_lanes(P);
 
     Intensity I_P = every_channel<Lane, Rgb>(0.0);
     Mask faces_any{}, lit_any{};
@@ -399,6 +472,11 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> general_lanes(const GeneralRow<R
             term = times(lambert, m);
         else
             term = times(m, lambert);
+        if constexpr (Sw::phong) {
+            const Mask shiny = both(reaches, k_s > 0.0);
+            if (any(shiny))
+                term = plus_specular(shiny, term, specular_lanes(N, r, K, KK, V_hat, splat<Lane>(light.I), k_s, n));
+        }
         const Intensity contribution = times(splat_of<Lane>(light.c), term);
         I_P = plus(I_P, contribution);
     }

@@ -1,8 +1,8 @@
 // Rows of the general tracer (render/general_tracer.hpp) computed lanes at a
 // time (render/general_lanes.hpp), one sample a pixel or several
 // (render/general_sample_lanes.hpp), in double with the article's formula for
-// the eye's rays, for the stages the lanes cover: one or several spheres and
-// planes, several lights, ambient, shadows, grey or colour (not Phong). The
+// the eye's rays, for every stage: one or several spheres and planes,
+// several lights, ambient, shadows, Phong, grey or colour. The
 // path is render/isa.hpp's; where there are no lanes (the wasm) these say
 // so, and the kernel draws the row one pixel at a time.
 #pragma once
@@ -20,6 +20,7 @@ struct GeneralLaneStages {
     bool shadows = false;
     bool ambient = false;
     bool many = false;  // several objects (Stages::objects)
+    bool phong = false;
 };
 
 // Row i of a w-pixel pane into out[0 .. w * channels): each byte to_byte

@@ -21,23 +21,28 @@ inline namespace PROMYK_LANES_ISA {
 // Calls visit(LaneSwitches<...>{}) with the stages (and whether the row is
 // one sphere's and one light's) as types: the one place the stages chosen
 // at run time become template arguments.
-template <bool Shadows, bool Ambient, class Visit>
+template <bool Shadows, bool Phong, bool Ambient, class Visit>
 PROMYK_LANES_INLINE decltype(auto) with_many(bool many, bool one, bool plain, Visit&& visit) {
-    if (many) return visit(LaneSwitches<Shadows, Ambient, true>{});
-    if (one && plain) return visit(LaneSwitches<Shadows, Ambient, false, true, true>{});
-    if (one) return visit(LaneSwitches<Shadows, Ambient, false, true>{});
-    return visit(LaneSwitches<Shadows, Ambient, false>{});
+    if (many) return visit(LaneSwitches<Shadows, Phong, Ambient, true>{});
+    if (one && plain) return visit(LaneSwitches<Shadows, Phong, Ambient, false, true, true>{});
+    if (one) return visit(LaneSwitches<Shadows, Phong, Ambient, false, true>{});
+    return visit(LaneSwitches<Shadows, Phong, Ambient, false>{});
+}
+template <bool Shadows, bool Phong, class Visit>
+PROMYK_LANES_INLINE decltype(auto) with_ambient(GeneralLaneStages stages, bool one, bool plain, Visit&& visit) {
+    if (stages.ambient) return with_many<Shadows, Phong, true>(stages.many, one, plain, visit);
+    return with_many<Shadows, Phong, false>(stages.many, one, plain, visit);
 }
 template <bool Rgb, class Visit>
 PROMYK_LANES_INLINE decltype(auto) with_switches(GeneralLaneStages stages, const GeneralRow<Rgb>& row, Visit&& visit) {
     const bool one = !stages.many && one_sphere_and_light(row);
     const bool plain = one && plain_surface_and_light(row);
     if (stages.shadows) {
-        if (stages.ambient) return with_many<true, true>(stages.many, one, plain, visit);
-        return with_many<true, false>(stages.many, one, plain, visit);
+        if (stages.phong) return with_ambient<true, true>(stages, one, plain, visit);
+        return with_ambient<true, false>(stages, one, plain, visit);
     }
-    if (stages.ambient) return with_many<false, true>(stages.many, one, plain, visit);
-    return with_many<false, false>(stages.many, one, plain, visit);
+    if (stages.phong) return with_ambient<false, true>(stages, one, plain, visit);
+    return with_ambient<false, false>(stages, one, plain, visit);
 }
 
 // The row's pixels, a vector at a time, by the stages' pixel function: the

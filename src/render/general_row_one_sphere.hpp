@@ -26,6 +26,8 @@ struct OneSphereRow {
     Lane y_E, z_E, yy, zz;
     Lane S_x, S_y, S_z, r, SS_rr, ySy, zSz;  // the sphere, and C's last two terms
     Lane k_d, k_a_I;                         // k_a I: a whole product, as trace_general's
+    Lane k_s;                                // Phong's
+    int n;
     Intensity m;
     Lane L_x, L_y, L_z, I;  // the light
     Intensity c;
@@ -39,6 +41,7 @@ struct OneSphereRow {
           ySy(splat<Lane>(row.spheres[0].ySy)), zSz(splat<Lane>(row.spheres[0].zSz)),
           k_d(splat<Lane>(row.spheres[0].surface.k_d)),
           k_a_I(splat<Lane>(row.spheres[0].surface.k_a * row.lights[0].I)),
+          k_s(splat<Lane>(row.spheres[0].surface.k_s)), n(row.spheres[0].surface.n),
           m(splat_of<Lane>(row.spheres[0].surface.m)), L_x(splat<Lane>(row.lights[0].L.x)),
           L_y(splat<Lane>(row.lights[0].L.y)), L_z(splat<Lane>(row.lights[0].L.z)),
           I(splat<Lane>(row.lights[0].I)), c(splat_of<Lane>(row.lights[0].c)),
@@ -136,15 +139,24 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> one_sphere_lanes(const OneSphere
     Lane lambert = diffuse;  // plain: k_d diffuse is diffuse
     if constexpr (!Sw::plain) lambert = row.k_d * diffuse;
     if constexpr (Sw::ambient) lambert = row.k_a_I + lambert;
-    Intensity term;  // c (m lambert); plain: lambert in every channel
+    Intensity term;  // c (m lambert + specular); plain: lambert (+ specular) in every channel
     if constexpr (Sw::plain && Rgb)
         term = {lambert, lambert, lambert};
     else if constexpr (Sw::plain)
         term = lambert;
     else if constexpr (Rgb)
-        term = times(row.c, times(lambert, row.m));
+        term = times(lambert, row.m);
     else
-        term = times(row.c, times(row.m, lambert));
+        term = times(row.m, lambert);
+    if constexpr (Sw::phong) {
+        // Phong's highlight (shading/phong.hpp), where the light reaches.
+        if (row.k_s[0] > 0.0 && any(reaches)) {
+            const Vec3<Lane> P{P_x, P_y, P_z}, N{N_x, N_y, N_z}, K{K_x, K_y, K_z};
+            term = plus_specular(reaches, term,
+                                 specular_lanes(N, row.r, K, KK, eye_direction_lanes(P), row.I, row.k_s, row.n));
+        }
+    }
+    if constexpr (!Sw::plain) term = times(row.c, term);
     const Intensity I_P = plus(every_channel<Lane, Rgb>(0.0), term);  // 0 + the light's: -0 becomes 0
 
     // An intensity beyond the largest double: non-finite, its value kept.

@@ -242,9 +242,8 @@ class GeneralKernel final : public Kernel {
     using Result = GeneralResult<typename World<Real, Rgb>::Intensity>;
     using Pixel = SampledPixel<typename World<Real, Rgb>::Intensity>;
     // Drawn in lanes (render/general_row.hpp): double with the article's
-    // formula, without Phong, one sample a pixel or several; the rest a
-    // pixel at a time.
-    static constexpr bool in_lanes = std::is_same_v<Real, double> && F::id == Formula::article && !Sw::phong;
+    // formula, one sample a pixel or several; the rest a pixel at a time.
+    static constexpr bool in_lanes = std::is_same_v<Real, double> && F::id == Formula::article;
 
 public:
     GeneralKernel(const Stages& stages, const Scene& scene, int spp)
@@ -257,7 +256,7 @@ public:
         WorkCounts work;
         RowCounts counts;
         if constexpr (in_lanes) {
-            const GeneralLaneStages stages{Sw::shadows, Sw::ambient, Sw::many};
+            const GeneralLaneStages stages{Sw::shadows, Sw::ambient, Sw::many, Sw::phong};
             if (spp() == 1 ? general_row_in_lanes(world_, stages, w, i, out, counts)
                            : general_sampled_row_in_lanes(world_, stages, w, i, spp(), out, counts))
                 return counts;
