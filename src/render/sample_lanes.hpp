@@ -348,7 +348,7 @@ PROMYK_LANES_INLINE MaskOf<Lane> nearer_in_real(const SamplePoint<Lane, true>& E
     constexpr Real margin = Real(1) / Real(1 << 19);
     Mask nearer = E.d < p.nearest_real * (Real(1) - margin);
     const Mask decided = either(nearer, E.d > p.nearest_real * (Real(1) + margin));
-    if (!all(decided)) [[unlikely]] {
+    if (__builtin_expect(!all(decided), 0)) {  // rare (C++17: no [[unlikely]])
         UintsOf<Points> exact[parts_of<Lane>];
         for (int k = 0; k < parts_of<Lane>; ++k) {
             const auto wide = [&](Lane x) __attribute__((always_inline)) {
