@@ -66,6 +66,28 @@ struct RowLanes<Sw, Rgb, Vector, true> {
     }
 };
 
+// A row's rays and tests beyond its branches: the shadow rays' and their
+// tests, counted lane by lane, and the eye's, `rays` of them, each testing
+// every object (one object: its one test). Shared by the rows and the
+// sampled rows (render/general_sample_lanes.hpp).
+template <bool Many, bool Rgb, class Vector>
+PROMYK_LANES_INLINE void count_work(RowCounts& counts, const LaneWork<Vector>& work, const GeneralRow<Rgb>& row,
+                                    long long rays) {
+    for (int k = 0; k < LaneTraits<Vector>::width; ++k) {
+        counts.shadow_rays += work.shadow_rays[k];
+        counts.sphere_tests += work.sphere_tests[k];
+        counts.plane_tests += work.plane_tests[k];
+    }
+    if constexpr (Many) {
+        counts.sphere_tests += rays * row.sphere_count;
+        counts.plane_tests += rays * row.plane_count;
+    } else if (row.sphere_count > 0) {
+        counts.sphere_tests += rays;
+    } else {
+        counts.plane_tests += rays;
+    }
+}
+
 // Columns j .. j + n - 1 as a vector: the last one filled past n with
 // column j's x_E, its extra lanes computed and not kept.
 template <class Vector>
@@ -124,9 +146,6 @@ PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, const
         lits += static_cast<int>(lit[k]);
         shadoweds += static_cast<int>(shadowed[k]);
         non_finites += static_cast<int>(non_finite[k]);
-        counts.shadow_rays += work.shadow_rays[k];
-        counts.sphere_tests += work.sphere_tests[k];
-        counts.plane_tests += work.plane_tests[k];
     }
     counts.branches[static_cast<int>(Branch::miss)] = misses;
     counts.branches[static_cast<int>(Branch::lit)] = lits;
@@ -134,15 +153,7 @@ PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, const
     counts.branches[static_cast<int>(Branch::non_finite)] = non_finites;
     counts.branches[static_cast<int>(Branch::dark)] = w - misses - lits - shadoweds - non_finites;
     counts.first_non_finite_j = first_non_finite_j;
-    // The eye's rays: every object tested by every pixel (one object: its one test).
-    if constexpr (Sw::many) {
-        counts.sphere_tests += static_cast<long long>(w) * row.sphere_count;
-        counts.plane_tests += static_cast<long long>(w) * row.plane_count;
-    } else if (row.sphere_count > 0) {
-        counts.sphere_tests += w;
-    } else {
-        counts.plane_tests += w;
-    }
+    count_work<Sw::many>(counts, work, row, w);
     return counts;
 }
 

@@ -59,24 +59,9 @@ struct GeneralShooter : GeneralSamples<Sw, Rgb, Lane> {
         const Mask dark = lane_not(either(either(pixel.miss, pixel.non_finite), either(pixel.lit, pixel.shadowed)));
         take_result(pixel.I_P, branch_code<CodeOf<Lane>>(pixel.miss, dark, pixel.non_finite, pixel.shadowed), E, p);
     }
-    // The row's rays and tests: the shadow rays' (lane by lane), and the
-    // eye's, every object tested by every sample (one object: its one test).
+    // The row's rays and tests (count_work): one eye's ray a sample.
     void count(RowCounts& counts, int pixels, int spp) const {
-        const GeneralRow<Rgb>& r = this->row;
-        for (int k = 0; k < LaneTraits<Lane>::width; ++k) {
-            counts.shadow_rays += this->work.shadow_rays[k];
-            counts.sphere_tests += this->work.sphere_tests[k];
-            counts.plane_tests += this->work.plane_tests[k];
-        }
-        const long long rays = static_cast<long long>(pixels) * spp;
-        if constexpr (Sw::many) {
-            counts.sphere_tests += rays * r.sphere_count;
-            counts.plane_tests += rays * r.plane_count;
-        } else if (r.sphere_count > 0) {
-            counts.sphere_tests += rays;
-        } else {
-            counts.plane_tests += rays;
-        }
+        count_work<Sw::many>(counts, this->work, this->row, static_cast<long long>(pixels) * spp);
     }
 };
 
