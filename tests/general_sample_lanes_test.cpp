@@ -198,6 +198,19 @@ TEST_CASE("General sampled rows in lanes: the hard cases, hostile and random sce
     for (const NamedScene& named : tie_scenes()) check_scene(named, {4, 9}, sample_panes);
 }
 
+// n and w powers of two: the points computed without dividing
+// (SampleGrid::whole), two in-flight vectors and less than one.
+TEST_CASE("General sampled rows in lanes: whole grids (n and w powers of two), every path, bit-identical to the "
+          "traced path's samples",
+          "[sample_lanes][lanes][isa]") {
+    int checked = 0;
+    for (const NamedScene& named : example_scenes()) check_scene(named, {4, 16}, {2, 32}), ++checked;
+    CHECK(checked >= 10);
+    for (const NamedScene& named : one_sphere_scenes(24)) check_scene(named, {4, 64}, {4, 16});
+    for (const NamedScene& named : random_scenes(24)) check_scene(named, {16}, {16});
+    for (const NamedScene& named : tie_scenes()) check_scene(named, {4}, {16});
+}
+
 TEST_CASE("General sampled rows in lanes: 1024 samples a pixel, every branch's field full, every path",
           "[sample_lanes][lanes][isa]") {
     // A floor in the shadow of a sphere far above it, seen through a narrow

@@ -140,6 +140,31 @@ PROMYK_LANES_INLINE U mix32_lanes(U x) {
     return x;
 }
 
+#if defined(__SSE2__) && !defined(__SSE4_1__)
+// Two lanes without SSE4.1's 32-bit multiply (the baseline path's double
+// lanes): GCC multiplies each lane apart in a general register (25
+// instructions a hash). Here each lane sits in the low half of a 64-bit
+// lane, where SSE2's pmuludq multiplies both at once; the product's low 32
+// bits are mix32's (arithmetic mod 2^32), the high ones cleared before the
+// shifts read them: 13 instructions, the same bits.
+PROMYK_LANES_INLINE SampleInts<2>::U mix32_lanes(SampleInts<2>::U x) {
+    typedef std::uint64_t Wide __attribute__((vector_size(16)));
+    const Wide low = {0xffffffffU, 0xffffffffU};
+    Wide y = reinterpret_cast<Wide>(__builtin_shufflevector(x, SampleInts<2>::U{}, 0, 2, 1, 3));
+    const auto times = [&](Wide v, std::uint32_t k) __attribute__((always_inline)) {
+        return reinterpret_cast<Wide>(_mm_mul_epu32(reinterpret_cast<__m128i>(v), _mm_set1_epi32(static_cast<int>(k)))) &
+               low;
+    };
+    y ^= y >> 16;
+    y = times(y, mix32_k1);
+    y ^= y >> 15;
+    y = times(y, mix32_k2);
+    y ^= y >> 16;
+    const SampleInts<4>::U halves = reinterpret_cast<SampleInts<4>::U>(y);
+    return __builtin_shufflevector(halves, halves, 0, 2);
+}
+#endif
+
 // ArticleRow with the sample's height in each lane: y_E and the products
 // with it are lanes, the rest the row's (the same products, the same bits).
 template <class Lane>
@@ -222,6 +247,7 @@ struct SampledLanes {
     using Code = CodeOf<Lane>;
     int j;                // the first lane's column
     Points x0[parts]{};   // 2 j + 1, each lane's pixel
+    Points x_base[parts]{};  // (2 j + 1) / w - 1, on a whole grid (SampleGrid::whole)
     Lane x0_real{};       // the same in the lanes' Real (each set only where it is read)
     // The nearest sample yet when the points are in float (nearer_in_real):
     // its float d (infinite before the first sample), u and v.
@@ -239,6 +265,13 @@ struct SampledLanes {
 struct SampleGrid {
     int i, w, spp, n;
     double minus_y0;  // -(2 i + 1)
+    // n and w powers of two (double lanes): each sample's point is a whole
+    // number of `step`s from the pixel's centre, computed without dividing
+    // (sample_point_lanes): y_base = 1 - (2 i + 1) / w, step = 2^-15 / (n w),
+    // half_cell = 2^15 n.
+    bool whole = false;
+    double y_base = 0, step = 0;
+    std::int32_t half_cell = 0;
     std::uint32_t i_hash;
     ColumnHashes columns;  // the hash's (j, s) part (render/sample_hashes.hpp), or null
 };
@@ -293,6 +326,27 @@ PROMYK_LANES_INLINE auto sample_point_lanes(const SampleGrid& grid, const CellDi
     else
         column = mix32_lanes(p.j_hash ^ c.hash);
     const auto h = mix32_lanes(grid.i_hash ^ column);
+    if constexpr (parts == 1 && std::is_same_v<Real, double>) {
+        if ((CellDivisor::exact && WDivisor::exact) || grid.whole) {
+            // n and w powers of two: u = U / (2^16 n) with the whole number
+            // U = 2^16 (s mod n) + h_u - 2^15 n, |U| <= 2^15 n <= 2^20, and
+            // sample_point's steps are all exact (x0 + 2 u, dividing by w,
+            // subtracting 1: at most 20 + log2 w bits), so x is the exact
+            // (2 j + 1) / w - 1 + U 2^-15 / (n w): a product and a sum, both
+            // exact, the same bits; y likewise. d is u² + v² scaled by
+            // (2^16 n)², exact too (at most 41 bits), ordered the same.
+            const I U = reinterpret_cast<I>(h & 0xffffU) +
+                        static_cast<std::int32_t>((c.column << 16) - static_cast<std::uint32_t>(grid.half_cell));
+            const I V = reinterpret_cast<I>(h >> 16) +
+                        static_cast<std::int32_t>((c.row << 16) - static_cast<std::uint32_t>(grid.half_cell));
+            const Lane u = __builtin_convertvector(U, Lane), v = __builtin_convertvector(V, Lane);
+            SamplePoint<Lane> E;
+            E.x = p.x_base[0] + u * grid.step;
+            E.y = grid.y_base - v * grid.step;
+            E.d[0] = u * u + v * v;
+            return E;
+        }
+    }
     const I h_u = reinterpret_cast<I>((h & 0xffffU) | (c.column << 16));
     const I h_v = reinterpret_cast<I>((h >> 16) | (c.row << 16));
     if constexpr (parts > 1 && CellDivisor::exact) {
@@ -520,6 +574,7 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(Shooter& shoot, const SampleGrid&
         } else {
             for (int k = 0; k < parts_of<Lane>; ++k) {
                 p.x0[k] = 2.0 * __builtin_convertvector(part_of<UintsOf<Points>>(j_lanes, k), Points) + 1.0;
+                if (grid.whole) p.x_base[k] = p.x0[k] * (1.0 / grid.w) - 1.0;  // exact: w a power of two
                 p.nearest[k] = splat<Points>(INFINITY);
             }
         }
@@ -597,6 +652,12 @@ PROMYK_LANES_INLINE SampleGrid sample_grid(int w, int i, int spp) {
     grid.minus_y0 = -(2.0 * i + 1.0);
     grid.i_hash = static_cast<std::uint32_t>(i) * hash_i;
     grid.columns = sample_column_hashes(w, spp);
+    grid.whole = power_of_two(grid.n) && power_of_two(w);
+    if (grid.whole) {
+        grid.y_base = 1.0 - (2.0 * i + 1.0) / w;
+        grid.step = 1.0 / 32768.0 / grid.n / w;
+        grid.half_cell = 32768 * grid.n;
+    }
     return grid;
 }
 
