@@ -78,6 +78,7 @@ ArticleRowCounts article_chunk(const ArticleWorld<Real>& world, int w, int i, in
     return counts;
 }
 
+#if !defined(PROMYK_ISA_KERNELS)
 // n grey levels of I_P[0 .. n) into out: to_byte (image/quantize.hpp) two
 // pixels at a time, by the drawn rows' put_grey_levels (as a loop of scalar
 // to_byte, GCC makes the rounding a branch, mispredicted along every
@@ -91,6 +92,7 @@ void put_row_bytes(const double* I_P, int n, std::uint8_t* out) {
     }
     for (; k < n; ++k) out[k] = to_byte(I_P[k]);
 }
+#endif
 
 template <template <class> class Root, class Real>
 PixelResult<Real> one_lane(const ArticleWorld<Real>& world, int w, int i, int j) {
@@ -190,9 +192,10 @@ RowCounts lanes_row(const ArticleWorld<double>& world, int w, int i, std::uint8_
 }
 #endif
 
+#if !defined(PROMYK_ISA_KERNELS)
 // A row one pixel at a time through trace_ray with the formula F: where
-// there is no lane path (the wasm, processors other than x86-64, and the fma
-// formula).
+// there is no lane path (the wasm, processors other than x86-64, the fuzz
+// build).
 template <class F>
 RowCounts one_pixel_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out) {
     // A local copy: stores through a uint8_t* may alias anything, so reading the
@@ -235,6 +238,7 @@ RowCounts one_pixel_row(const ArticleWorld<double>& world, int w, int i, std::ui
     }
     return counts;
 }
+#endif
 
 }  // namespace
 
