@@ -60,7 +60,7 @@ struct GeneralShooter : GeneralSamples<Sw, Rgb, Lane> {
         take_result(pixel.I_P, branch_code<CodeOf<Lane>>(pixel.miss, dark, pixel.non_finite, pixel.shadowed), E, p);
     }
     // The row's rays and tests (count_work): one eye's ray a sample.
-    void count(RowCounts& counts, int pixels, int spp) const {
+    PROMYK_LANES_INLINE void count(RowCounts& counts, int pixels, int spp) const {
         count_work<Sw::many>(counts, this->work, this->row, static_cast<long long>(pixels) * spp);
     }
 };

@@ -238,6 +238,24 @@ PROMYK_LANES_INLINE Code branch_code(Mask miss, Mask dark, Mask non_finite, Mask
     return branch_code<Code>(miss, dark, non_finite) | (reinterpret_cast<Code>(shadowed) & (one << shadowed_field));
 }
 
+// a == b lane by lane, a mask. SSE2 has no 64-bit compare (pcmpeqq is
+// SSE4.1's): GCC compared each lane of the baseline path's codes in a
+// general register, about ten instructions a lane and nine compares a
+// pixel vector. Here the 32-bit halves are compared and each lane's two
+// halves joined: three instructions a vector, the same mask.
+template <class Code>
+PROMYK_LANES_INLINE auto equal_codes(Code a, Code b) {
+    using Mask = decltype(a == b);
+#if defined(__SSE2__) && !defined(__SSE4_1__)
+    if constexpr (sizeof(Code) == 16 && sizeof(a[0]) == 8) {
+        typedef std::int32_t Halves __attribute__((vector_size(16)));
+        const Halves equal = reinterpret_cast<Halves>(a) == reinterpret_cast<Halves>(b);
+        return reinterpret_cast<Mask>(equal & __builtin_shufflevector(equal, equal, 1, 0, 3, 2));
+    }
+#endif
+    return Mask(a == b);
+}
+
 // The pixels of one vector of the kernel's lanes: their sums (grey levels,
 // or r, g, b), branch counts and centre samples.
 template <class Lane, class Intensity = Lane>
@@ -461,14 +479,18 @@ template <template <class> class Root, class Real, bool EarlyOuts>
 struct ArticleSamples {
     template <class Lane>
     using Intensity = Lane;
-    const ArticleRow<Real>& row;
+    // A copy, the row's own: through a reference GCC must assume the grey
+    // levels' stores (a uint8_t* may alias anything) change the scene, and
+    // it loaded and broadcast its every number again after each vector of
+    // pixels (about 75 instructions a pair of vectors on the baseline path).
+    const ArticleRow<Real> row;
     template <class Lane, bool InReal>
     PROMYK_LANES_INLINE void operator()(const SamplePoint<Lane, InReal>& E, SampledLanes<Lane>& p, MaskOf<Lane>) {
         const LanePixel<Lane> pixel = article_lanes<Root, EarlyOuts>(SampleRow<Lane>(row, E.y), E.x);
         take_result(pixel.I_P, branch_code<CodeOf<Lane>>(pixel.miss, pixel.dark, pixel.non_finite), E, p);
     }
     // The row's work beyond its branches: one test of the sphere a sample.
-    void count(RowCounts& counts, int pixels, int spp) const {
+    static void count(RowCounts& counts, int pixels, int spp) {
         counts.sphere_tests = static_cast<long long>(pixels) * spp;
     }
 };
@@ -501,17 +523,19 @@ PROMYK_LANES_INLINE void put_sampled(const SampledLanes<Lane, Intensity>& p, int
     // times that branch's code (0 where all are lit).
     const Element all = static_cast<Element>(spp), one = 1;
     const Code sum = p.branches;
-    Mask agree = reinterpret_cast<Mask>((sum == 0) | (sum == all << miss_field) | (sum == all << dark_field) |
-                                        (sum == all << non_finite_field));
+    const auto is = [](Code c, Element value) __attribute__((always_inline)) {
+        return reinterpret_cast<Mask>(equal_codes(c, Code{} + value));
+    };
+    Mask agree = is(sum, 0) | is(sum, all << miss_field) | is(sum, all << dark_field) |
+                 is(sum, all << non_finite_field);
     Mask centre_shadowed{};
     if constexpr (has_shadowed_field<Code>) {
-        agree |= reinterpret_cast<Mask>(sum == all << shadowed_field);
-        centre_shadowed = reinterpret_cast<Mask>(p.centre == one << shadowed_field);
+        agree |= is(sum, all << shadowed_field);
+        centre_shadowed = is(p.centre, one << shadowed_field);
     }
     tally.disagreeing -= ~agree & kept;
-    const Mask centre_miss = reinterpret_cast<Mask>(p.centre == one << miss_field),
-               centre_dark = reinterpret_cast<Mask>(p.centre == one << dark_field),
-               centre_non_finite = reinterpret_cast<Mask>(p.centre == one << non_finite_field);
+    const Mask centre_miss = is(p.centre, one << miss_field), centre_dark = is(p.centre, one << dark_field),
+               centre_non_finite = is(p.centre, one << non_finite_field);
     const Mask finite = finite_channels(mean);  // finite_value
     const Mask non_finite = (~finite | centre_non_finite) & kept;
     tally.miss -= finite & centre_miss & kept;
