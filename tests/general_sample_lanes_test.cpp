@@ -198,13 +198,14 @@ TEST_CASE("General sampled rows in lanes: the hard cases, hostile and random sce
     for (const NamedScene& named : tie_scenes()) check_scene(named, {4, 9}, sample_panes);
 }
 
-// n and w powers of two: the points computed without dividing
-// (SampleGrid::whole), two in-flight vectors and less than one.
-TEST_CASE("General sampled rows in lanes: whole grids (n and w powers of two), every path, bit-identical to the "
-          "traced path's samples",
+// w a power of two: with n one too, the points computed without dividing
+// (SampleGrid::whole); with n = 3, divided by w as a multiply (w_exact).
+// Two in-flight vectors and less than one.
+TEST_CASE("General sampled rows in lanes: panes of a power of two, whole grids (n a power of two too) or not, every "
+          "path, bit-identical to the traced path's samples",
           "[sample_lanes][lanes][isa]") {
     int checked = 0;
-    for (const NamedScene& named : example_scenes()) check_scene(named, {4, 16}, {2, 32}), ++checked;
+    for (const NamedScene& named : example_scenes()) check_scene(named, {4, 9, 16}, {2, 32}), ++checked;
     CHECK(checked >= 10);
     for (const NamedScene& named : one_sphere_scenes(24)) check_scene(named, {4, 64}, {4, 16});
     for (const NamedScene& named : random_scenes(24)) check_scene(named, {16}, {16});

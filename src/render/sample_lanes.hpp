@@ -286,8 +286,8 @@ struct SampleGrid {
     // n and w powers of two (double lanes): each sample's point is a whole
     // number of `step`s from the pixel's centre, computed without dividing
     // (sample_point_lanes): y_base = 1 - (2 i + 1) / w, step = 2^-15 / (n w),
-    // half_cell = 2^15 n.
-    bool whole = false;
+    // half_cell = 2^15 n. w_exact: w a power of two, whatever n.
+    bool whole = false, w_exact = false;
     double y_base = 0, step = 0;
     std::int32_t half_cell = 0;
     std::uint32_t i_hash;
@@ -397,8 +397,16 @@ PROMYK_LANES_INLINE auto sample_point_lanes(const SampleGrid& grid, const CellDi
             y[k] = __builtin_convertvector(grid.minus_y0 - 2.0 * v, RealPart);
             E.d[k] = u * u + v * v;
         }
-        E.x = by_w.divide(joined<Lane>(x)) - Real(1);
-        E.y = by_w.divide(joined<Lane>(y)) + Real(1);
+        // w a power of two where the row's divisor was not told so (the
+        // general tracer's rows, one instantiation for every grid): the
+        // multiply by 1/w, the same bits as in Divisor, decided at run time.
+        const auto divide_by_w = [&](Lane a) __attribute__((always_inline)) {
+            if constexpr (!WDivisor::exact)
+                if (grid.w_exact) return a * by_w.reciprocal;
+            return by_w.divide(a);
+        };
+        E.x = divide_by_w(joined<Lane>(x)) - Real(1);
+        E.y = divide_by_w(joined<Lane>(y)) + Real(1);
         return E;
     }
 }
@@ -676,7 +684,8 @@ PROMYK_LANES_INLINE SampleGrid sample_grid(int w, int i, int spp) {
     grid.minus_y0 = -(2.0 * i + 1.0);
     grid.i_hash = static_cast<std::uint32_t>(i) * hash_i;
     grid.columns = sample_column_hashes(w, spp);
-    grid.whole = power_of_two(grid.n) && power_of_two(w);
+    grid.w_exact = power_of_two(w);
+    grid.whole = power_of_two(grid.n) && grid.w_exact;
     if (grid.whole) {
         grid.y_base = 1.0 - (2.0 * i + 1.0) / w;
         grid.step = 1.0 / 32768.0 / grid.n / w;
