@@ -320,10 +320,19 @@ template <class Lane>
 struct SamplePoint<Lane, true> {
     Lane x, y, u, v, d;
 };
+// Such a point's offset (u, v), all that is computed a sample ahead
+// (draw_sampled_row): the hash is the work, and x, y and d, a few
+// operations from u and v, would hold three more registers a vector in
+// flight (sixteen floats: GCC spilled registers every sample).
+template <class Lane>
+struct SampleOffset {
+    Lane u, v;
+};
 
 // Sample c.s's point for the vector's pixels, as sample_point computes it:
 // in double, x's and y's numerators rounded to the kernel's Real before
-// by_w divides them by Real(w).
+// by_w divides them by Real(w). In float lanes with an exact cell, only
+// its offset (SampleOffset; point_at gives the point).
 template <class Lane, class Intensity, class CellDivisor, class WDivisor>
 PROMYK_LANES_INLINE auto sample_point_lanes(const SampleGrid& grid, const CellDivisor& by_cell,
                                                          const WDivisor& by_w, const SampleCounter& c,
@@ -376,14 +385,10 @@ PROMYK_LANES_INLINE auto sample_point_lanes(const SampleGrid& grid, const CellDi
         // 2^-20), so float's x0 + 2 u, rounded once, is sample_point's
         // Real(x0 + 2 u): the point in float lanes, d in double from the
         // same exact u and v.
-        SamplePoint<Lane, true> E;
+        // The point itself: point_at.
         const Real cell = static_cast<Real>(by_cell.reciprocal);  // 2^-16 / n, exact
-        E.u = __builtin_convertvector(h_u, Lane) * cell - Real(0.5);
-        E.v = __builtin_convertvector(h_v, Lane) * cell - Real(0.5);
-        E.x = by_w.divide(p.x0_real + Real(2) * E.u) - Real(1);
-        E.y = by_w.divide(static_cast<Real>(grid.minus_y0) - Real(2) * E.v) + Real(1);
-        E.d = E.u * E.u + E.v * E.v;
-        return E;
+        return SampleOffset<Lane>{__builtin_convertvector(h_u, Lane) * cell - Real(0.5),
+                                  __builtin_convertvector(h_v, Lane) * cell - Real(0.5)};
     } else {
         SamplePoint<Lane> E;
         RealPart x[parts], y[parts];  // the numerators of sample_point's divisions
@@ -409,6 +414,25 @@ PROMYK_LANES_INLINE auto sample_point_lanes(const SampleGrid& grid, const CellDi
         E.y = divide_by_w(joined<Lane>(y)) + Real(1);
         return E;
     }
+}
+
+// The point of sample_point_lanes' offset in float lanes (above); any
+// other point as it is.
+template <class Lane, class Intensity, class WDivisor>
+PROMYK_LANES_INLINE SamplePoint<Lane, true> point_at(const SampleOffset<Lane>& o, const SampleGrid& grid,
+                                                     const WDivisor& by_w, const SampledLanes<Lane, Intensity>& p) {
+    using Real = typename LaneTraits<Lane>::Real;
+    SamplePoint<Lane, true> E;
+    E.u = o.u, E.v = o.v;
+    E.x = by_w.divide(p.x0_real + Real(2) * o.u) - Real(1);
+    E.y = by_w.divide(static_cast<Real>(grid.minus_y0) - Real(2) * o.v) + Real(1);
+    E.d = o.u * o.u + o.v * o.v;
+    return E;
+}
+template <class Lane, class Intensity, class WDivisor>
+PROMYK_LANES_INLINE const SamplePoint<Lane>& point_at(const SamplePoint<Lane>& E, const SampleGrid&, const WDivisor&,
+                                                      const SampledLanes<Lane, Intensity>&) {
+    return E;
 }
 
 // Whether each lane's sample (u, v exact floats) is nearer its pixel's
@@ -618,6 +642,9 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(Shooter& shoot, const SampleGrid&
     const auto points = [&](const SampleCounter& c, const Pixels& p) __attribute__((always_inline)) {
         return sample_point_lanes(grid, by_cell, by_w, c, p);
     };
+    const auto at = [&](const auto& E, const Pixels& p) __attribute__((always_inline)) -> decltype(auto) {
+        return point_at(E, grid, by_w, p);
+    };
     const Mask all_kept = ~Mask{};
     // Each sample's points are computed a sample ahead, in the step before
     // the sample they lead (the pair's last sample computes the next pair's
@@ -634,14 +661,14 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(Shooter& shoot, const SampleGrid&
                 SampleCounter c_next = c;
                 c_next.next(n);
                 const auto next0 = points(c_next, p0), next1 = points(c_next, p1);
-                shoot(E0, p0, all_kept);
-                shoot(E1, p1, all_kept);
+                shoot(at(E0, p0), p0, all_kept);
+                shoot(at(E1, p1), p1, all_kept);
                 c = c_next, E0 = next0, E1 = next1;
             }
             const Pixels q0 = pixels(j + 2 * width), q1 = pixels(j + 3 * width);
             const auto next0 = points(SampleCounter{}, q0), next1 = points(SampleCounter{}, q1);
-            shoot(E0, p0, all_kept);
-            shoot(E1, p1, all_kept);
+            shoot(at(E0, p0), p0, all_kept);
+            shoot(at(E1, p1), p1, all_kept);
             put_sampled(p0, spp, by_spp, j, width, all_kept, out, tally, I_P, branches);
             put_sampled(p1, spp, by_spp, j + width, width, all_kept, out, tally, I_P, branches);
             p0 = q0, p1 = q1, E0 = next0, E1 = next1;
@@ -653,7 +680,7 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(Shooter& shoot, const SampleGrid&
         Mask kept{};
         for (int k = 0; k < kept_lanes; ++k) kept[k] = -1;
         SampleCounter c;
-        for (; c.s < spp; c.next(n)) shoot(sample_point_lanes(grid, by_cell, by_w, c, p), p, kept);
+        for (; c.s < spp; c.next(n)) shoot(at(points(c, p), p), p, kept);
         put_sampled(p, spp, by_spp, j, kept_lanes, kept, out, tally, I_P, branches);
     }
     RowCounts counts;
