@@ -146,14 +146,20 @@ TEST_CASE("Sampled rows in lanes: every pixel's mean, branch, grey level and the
 }
 
 // --real float's samples in float lanes: their points computed in double,
-// as many doubles as floats, rounded to float where sample_point rounds.
-// No skipping in float. The panes are smaller: the float lanes are as wide
-// as sixteen, so every path still meets whole vectors and a remainder.
+// as many doubles as floats, rounded to float where sample_point rounds;
+// the background skipped with float's bounds. The panes are smaller: the
+// float lanes are as wide as sixteen, so every path still meets whole
+// vectors and a remainder. The article's scene scaled towards the ends of
+// float's range tries the proof's underflow and overflow terms.
 TEST_CASE("Sampled rows in float lanes: every pixel's mean, branch, grey level and the row's counts bit-identical to "
           "the traced samples in float, every instruction-set path, each formula",
           "[sample_lanes][isa][float]") {
-    const std::vector<NamedWorld> worlds = sample_worlds();
-    long long disagreeing = 0, non_finite = 0;
+    std::vector<NamedWorld> worlds = sample_worlds();
+    for (const double scale : {1e-18, 1e-12, 1e12, 1e17, 1e19})
+        worlds.push_back({"article scaled by " + std::to_string(scale),
+                          {2 * scale, {0.5 * scale, 0.25 * scale, 6 * scale}, 1.1 * scale, {1.5, 1, 1}, 1, 0.5},
+                          0});
+    long long disagreeing = 0, non_finite = 0, skipped = 0;
     for (const Isa isa : supported_isas()) {
         PathForced forced(isa);
         for (const Formula formula : lane_formulas) {
@@ -170,7 +176,9 @@ TEST_CASE("Sampled rows in float lanes: every pixel's mean, branch, grey level a
                     const PaneCheck check = check_pane(world, run.w, run.spp, formula);
                     CHECK(check.mismatches == 0);
                     CHECK(check.count_mismatches == 0);
-                    CHECK(check.skipped == 0);
+                    if (named.name == "article.json" && run.w >= 32)
+                        CHECK(check.skipped > static_cast<long long>(run.w) * run.w / 3);
+                    skipped += check.skipped;
                     disagreeing += check.disagreeing;
                     non_finite += check.non_finite;
                 }
@@ -179,6 +187,7 @@ TEST_CASE("Sampled rows in float lanes: every pixel's mean, branch, grey level a
     }
     CHECK(disagreeing > 1000);
     CHECK(non_finite > 100);
+    CHECK(skipped > 100000);
 }
 
 // 1024 samples that all fail to be finite: float's branch codes have 32

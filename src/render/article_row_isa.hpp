@@ -39,9 +39,9 @@ RowCounts draw_sampled_article_row(const ArticleRow<double>& row, int w, int i, 
                                    std::uint8_t* out, double* I_P, std::uint8_t* branches, Formula formula);
 // The row in float (--real float); x_E[j] = pane_x<float>(j, w).
 RowCounts draw_float_row(const ArticleRow<float>& row, const float* x_E, int w, std::uint8_t* out, Formula formula);
-// Row i in float from spp > 1 samples a pixel, every column.
-RowCounts draw_sampled_float_row(const ArticleRow<float>& row, int w, int i, int spp, std::uint8_t* out, float* I_P,
-                                 std::uint8_t* branches, Formula formula);
+// Columns [lo, hi) of row i in float from spp > 1 samples a pixel.
+RowCounts draw_sampled_float_row(const ArticleRow<float>& row, int w, int i, int spp, int lo, int hi,
+                                 std::uint8_t* out, float* I_P, std::uint8_t* branches, Formula formula);
 }
 namespace avx512 {
 RowCounts draw_article_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out,
@@ -54,9 +54,9 @@ RowCounts draw_sampled_article_row(const ArticleRow<double>& row, int w, int i, 
                                    std::uint8_t* out, double* I_P, std::uint8_t* branches, Formula formula);
 // The row in float (--real float); x_E[j] = pane_x<float>(j, w).
 RowCounts draw_float_row(const ArticleRow<float>& row, const float* x_E, int w, std::uint8_t* out, Formula formula);
-// Row i in float from spp > 1 samples a pixel, every column.
-RowCounts draw_sampled_float_row(const ArticleRow<float>& row, int w, int i, int spp, std::uint8_t* out, float* I_P,
-                                 std::uint8_t* branches, Formula formula);
+// Columns [lo, hi) of row i in float from spp > 1 samples a pixel.
+RowCounts draw_sampled_float_row(const ArticleRow<float>& row, int w, int i, int spp, int lo, int hi,
+                                 std::uint8_t* out, float* I_P, std::uint8_t* branches, Formula formula);
 }
 #if defined(__clang__)
 #pragma clang diagnostic pop

@@ -2,6 +2,10 @@
 // -fno-math-errno (src/CMakeLists.txt), as render/article_row.cpp.
 #include "render/float_row.hpp"
 
+#include <cmath>
+#include <cstring>
+
+#include "image/quantize.hpp"
 #include "render/article_lanes.hpp"
 #include "render/article_row.hpp"
 #include "render/article_row_lanes.hpp"
@@ -10,24 +14,70 @@
 #include "render/pane.hpp"
 #include "render/pane_columns.hpp"
 #include "render/sample_lanes.hpp"
+#include "render/sample_lanes_span.hpp"
+#include "render/silhouette.hpp"
+#include "render/skipping.hpp"
 
 namespace promyk {
+
+#if defined(PROMYK_ISA_KERNELS)
+namespace {
+
+// The float scene's numbers in double, each exactly: what the skipping
+// proofs (render/silhouette.hpp) reason about, in double, with float's bounds.
+ArticleWorld<double> in_double(const ArticleWorld<float>& world) {
+    return {world.z_E, {world.S.x, world.S.y, world.S.z}, world.r, {world.L.x, world.L.y, world.L.z},
+            world.I,   world.background};
+}
+
+// The row's proven misses, [0, lo) and [hi, w), filled as the kernel would
+// draw them: the grey level of `background` (the pixel's intensity; for
+// samples their mean), counted as skipped misses.
+void fill_skipped(RowSpan span, int w, float background, std::uint8_t* out, RowCounts& counts, float* I_P,
+                  std::uint8_t* branches) {
+    const std::uint8_t grey = to_byte(background);
+    std::memset(out, grey, static_cast<std::size_t>(span.lo));
+    std::memset(out + span.hi, grey, static_cast<std::size_t>(w - span.hi));
+    for (int j = 0; j < w; ++j) {
+        if (j == span.lo) j = span.hi;
+        if (j >= w) break;
+        if (I_P) I_P[j] = background;
+        if (branches) branches[j] = static_cast<std::uint8_t>(Branch::miss);
+    }
+    const int skipped = w - (span.hi - span.lo);
+    counts.skipped = skipped;
+    counts.branches[static_cast<int>(Branch::miss)] += skipped;
+}
+
+}  // namespace
+#endif
 
 bool float_row_in_lanes(const ArticleWorld<float>& world, int w, int i, std::uint8_t* out, Formula formula,
                         RowCounts& counts) {
 #if defined(PROMYK_ISA_KERNELS)
     const lanes::ArticleRow<float> row(world, pane_y<float>(i, w));
     const float* x_E = pane_columns_float(w);
+    // Only the columns that may meet the sphere are computed, as in double
+    // (render/article_row.cpp), proven with float's bounds.
+    RowSpan span{0, w};
+    if (background_skipping()) {
+        const lanes::ArticleRow<double> row_d(in_double(world), row.y_E);
+        span = row_hit_span(row_d, x_E, w, formula, rounding_of<float>());
+    }
+    const int n = span.hi - span.lo;
     switch (article_isa()) {
         case Isa::avx512:
-            counts = lanes::avx512::draw_float_row(row, x_E, w, out, formula);
+            counts = lanes::avx512::draw_float_row(row, x_E + span.lo, n, out + span.lo, formula);
             break;
         case Isa::avx2:
-            counts = lanes::avx2::draw_float_row(row, x_E, w, out, formula);
+            counts = lanes::avx2::draw_float_row(row, x_E + span.lo, n, out + span.lo, formula);
             break;
         default:
-            counts = lanes::draw_row<lanes::Float4>(row, x_E, w, out, formula);  // SSE2's four floats
+            counts = lanes::draw_row<lanes::Float4>(row, x_E + span.lo, n, out + span.lo, formula);  // SSE2's four floats
     }
+    fill_skipped(span, w, world.background, out, counts, nullptr, nullptr);
+    // The kernel counted from its first column (the sampled rows count from 0).
+    if (counts.first_non_finite_j >= 0) counts.first_non_finite_j += span.lo;
     return true;
 #else
     (void)world, (void)w, (void)i, (void)out, (void)formula, (void)counts;
@@ -39,18 +89,32 @@ bool sampled_float_row_in_lanes(const ArticleWorld<float>& world, int w, int i, 
                                 Formula formula, RowCounts& counts, float* I_P, std::uint8_t* branches) {
 #if defined(PROMYK_ISA_KERNELS)
     if (spp <= 1) return false;
+    // A skipped pixel: spp misses, each the background, summed in sample
+    // order and divided as sample_pixel does, in float.
+    float background = world.background;
+    for (int s = 1; s < spp; ++s) background = background + world.background;
+    background = background / static_cast<float>(spp);
+    // Only the columns whose samples may meet the sphere are computed
+    // (render/sample_lanes_span.hpp, with float's bounds).
+    const RowSpan span = background_skipping() && std::isfinite(background)
+                             ? sampled_row_hit_span(in_double(world), w, i, formula, rounding_of<float>())
+                             : RowSpan{0, w};
     // y_E is each sample's own: the row's is not used.
     const lanes::ArticleRow<float> row(world, pane_y<float>(i, w));
     switch (article_isa()) {
         case Isa::avx512:
-            counts = lanes::avx512::draw_sampled_float_row(row, w, i, spp, out, I_P, branches, formula);
+            counts = lanes::avx512::draw_sampled_float_row(row, w, i, spp, span.lo, span.hi, out, I_P, branches,
+                                                           formula);
             break;
         case Isa::avx2:
-            counts = lanes::avx2::draw_sampled_float_row(row, w, i, spp, out, I_P, branches, formula);
+            counts = lanes::avx2::draw_sampled_float_row(row, w, i, spp, span.lo, span.hi, out, I_P, branches,
+                                                         formula);
             break;
         default:  // SSE2's four floats, their points in two registers of doubles
-            counts = lanes::draw_sampled_row<lanes::Float4>(row, w, i, spp, 0, w, out, I_P, branches, formula);
+            counts = lanes::draw_sampled_row<lanes::Float4>(row, w, i, spp, span.lo, span.hi, out, I_P, branches,
+                                                            formula);
     }
+    fill_skipped(span, w, background, out, counts, I_P, branches);
     return true;
 #else
     (void)world, (void)w, (void)i, (void)spp, (void)out, (void)formula, (void)counts, (void)I_P, (void)branches;

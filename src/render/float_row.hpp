@@ -3,8 +3,8 @@
 // a vector on the path render/isa.hpp chose), every pixel's grey level and
 // branch bit for bit trace_ray<float>'s; from spp > 1 samples a pixel too
 // (render/sample_lanes.hpp), as sample_pixel over trace_ray<float> gives
-// them. No background skipping: its proof (render/silhouette.hpp) bounds
-// double's rounding, not float's.
+// them. Background is skipped as in double, proven with float's bounds
+// (render/silhouette.hpp, render/sample_lanes_span.hpp).
 #pragma once
 
 #include <cstdint>

@@ -13,9 +13,9 @@ RowCounts draw_float_row(const ArticleRow<float>& row, const float* x_E, int w, 
     return draw_row<Float8>(row, x_E, w, out, formula);
 }
 
-RowCounts draw_sampled_float_row(const ArticleRow<float>& row, int w, int i, int spp, std::uint8_t* out, float* I_P,
-                                 std::uint8_t* branches, Formula formula) {
-    return draw_sampled_row<Float8>(row, w, i, spp, 0, w, out, I_P, branches, formula);
+RowCounts draw_sampled_float_row(const ArticleRow<float>& row, int w, int i, int spp, int lo, int hi,
+                                 std::uint8_t* out, float* I_P, std::uint8_t* branches, Formula formula) {
+    return draw_sampled_row<Float8>(row, w, i, spp, lo, hi, out, I_P, branches, formula);
 }
 
 }  // namespace avx2

@@ -215,7 +215,7 @@ PROMYK_LANES_INLINE Vector select(MaskOf<Vector> m, Vector a, Vector b) {
 // correctly rounded root in every lane either way.
 template <class Vector, class = std::enable_if_t<(LaneTraits<Vector>::width > 1)>>
 PROMYK_LANES_INLINE Vector lane_sqrt(Vector x) {
-    Vector s;
+    Vector s = x;  // every lane replaced (GCC 12 took a bare s for uninitialized)
     for (int k = 0; k < LaneTraits<Vector>::width; ++k) s[k] = std::sqrt(x[k]);
     return s;
 }

@@ -16,6 +16,8 @@
 // over the band; the geometric formula takes its extra margin the same way).
 // The right side is the mirror image. Where nothing is proven, nothing is
 // skipped; tests/sample_lanes_test.cpp checks every pixel, tangent cases too.
+// A float kernel's rows (kernel = rounding_of<float>(), the scene's float numbers
+// in double) take float's e, margin and sample roundings: silhouette.hpp.
 #pragma once
 
 #include <algorithm>
@@ -28,26 +30,27 @@
 
 namespace promyk {
 
-inline RowSpan sampled_row_hit_span(const ArticleWorld<double>& world, int w, int i, Formula formula) {
+inline RowSpan sampled_row_hit_span(const ArticleWorld<double>& world, int w, int i, Formula formula,
+                                    KernelRounding kernel = rounding_of<double>()) {
     using namespace silhouette_detail;
     const RowSpan all{0, w};
-    const double u = std::numeric_limits<double>::epsilon() / 2;
+    const double u = std::numeric_limits<double>::epsilon() / 2;  // the proof's own arithmetic
     const double xS = world.S.x, yS = world.S.y, zS = world.S.z;
     const double rr = world.r * world.r;
     // Concave in (x, y): r² < z_S², with room for the two roundings.
     if (!(rr < zS * zS * (1 - 1e-6)) || !(w >= 1)) return all;
     // The samples' heights: y_E ± 1/w, and a computed sample point is within
-    // a few units of roundoff of its exact one (|x|, |y| ≤ 1 + 2/w): 1e-13
-    // covers that with room.
-    const double slack = 1e-13;
+    // a few of the kernel's units of roundoff of its exact one (|x|, |y| ≤
+    // 1 + 2/w): 1024 of them (1.1e-13 in double) cover that with room.
+    const double slack = 1024 * kernel.u;
     const double y_c = pane_y<double>(i, w);
     const double h = 1.0 / w + slack;
     const double y_far = std::fabs(y_c) + h;
     // silhouette.hpp's bounds, taken at the band's farthest height (both grow
     // with |y|); their 64 units of roundoff cover |x| ≤ 1 + slack.
     const lanes::ArticleRow<double> far_row(world, y_far);
-    const double e = row_error(far_row);
-    const double margin = formula == Formula::geometric ? geometric_margin(far_row) : 0.0;
+    const double e = row_error(far_row, kernel);
+    const double margin = formula == Formula::geometric ? geometric_margin(far_row, kernel) : 0.0;
     if (!std::isfinite(e) || !std::isfinite(margin)) return all;
     const lanes::ArticleRow<double> row(world, y_c);
     const double m = row.SS_rr;

@@ -34,11 +34,19 @@
 // most u|C² − w| ≤ u(C² + |E|²·c0) and u|result|, where the article has
 // three (C², |E|²·c0 and their difference) of at least as much. So the
 // article's proof, with the article's Δ̂ at x_j, proves Kahan's misses too.
+//
+// A float kernel (--real float) is proven the same way, its bounds taken
+// with float's unit roundoff, underflow and overflow (KernelRounding); the
+// proof's own arithmetic stays in double, on the float scene's numbers
+// (exact in double), its Δ̂ at x_j double's, within double's e of the exact
+// Δ: Δ̂_float(x) ≤ Δ(x) + e_float ≤ Δ(x_j) + e_float ≤ Δ̂(x_j) + e + e_float,
+// and e ≤ e_float.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "geometry/formula.hpp"
 #include "render/article_lanes.hpp"
@@ -50,6 +58,22 @@ namespace promyk {
 struct RowSpan {
     int lo = 0, hi = 0;
 };
+
+// The arithmetic of the kernel a proof is for: its unit roundoff, an
+// absolute term that covers underflow's errors, the size of the products
+// below which that term would not (the geometric formula's squares), and
+// its largest finite number.
+struct KernelRounding {
+    double u, tiny, least_product, max;
+};
+template <class Real>
+constexpr KernelRounding rounding_of() {
+    static_assert(std::is_same_v<Real, double> || std::is_same_v<Real, float>);
+    if constexpr (std::is_same_v<Real, double>)
+        return {std::numeric_limits<double>::epsilon() / 2, 1e-290, 1e-250, std::numeric_limits<double>::max()};
+    else
+        return {std::numeric_limits<float>::epsilon() / 2, 1e-25, 1e-15, std::numeric_limits<float>::max()};
+}
 
 namespace silhouette_detail {
 
@@ -66,46 +90,47 @@ inline double delta_hat(const lanes::ArticleRow<double>& row, double x) {
 // the terms' sizes), and Δ̂ two products and a difference of those, so
 // |Δ̂ − Δ| ≤ γ12·(A² + |E|²·B) with A = |x x_S| + |y_E y_S| + |z_E z_S| and
 // B = |S|² + r². 64 units of roundoff instead of 12 cover the bound's own
-// rounding with room to spare; the last term covers underflow.
-inline double row_error(const lanes::ArticleRow<double>& row) {
-    const double u = std::numeric_limits<double>::epsilon() / 2;
+// rounding with room to spare; the last term covers underflow. Infinite
+// when the kernel's products could overflow (every one is below A² + |E|²B).
+inline double row_error(const lanes::ArticleRow<double>& row, KernelRounding kernel = rounding_of<double>()) {
     const double A = std::fabs(row.world.S.x) + std::fabs(row.ySy) + std::fabs(row.zSz);
     const double EE = (1 + row.yy) + row.zz;
     const double B = row.SS + row.world.r * row.world.r;
-    return 64 * u * (A * A + EE * B) + 1e-290;
+    const double size = A * A + EE * B;
+    if (!(16 * size <= kernel.max)) return std::numeric_limits<double>::infinity();
+    return 64 * kernel.u * size + kernel.tiny;
 }
 
 // The geometric formula's bound g on |computed delta_g − Δ/|E|²| (above).
-inline double geometric_error(const lanes::ArticleRow<double>& row) {
-    const double u = std::numeric_limits<double>::epsilon() / 2;
-    return 64 * u * (row.SS + row.rr) + 1e-290;
+inline double geometric_error(const lanes::ArticleRow<double>& row, KernelRounding kernel = rounding_of<double>()) {
+    return 64 * kernel.u * (row.SS + row.rr) + kernel.tiny;
 }
 
 // The geometric formula's margin: |E|²_max·g, or NaN when the bound cannot
 // be trusted (the squares of l near overflow, or products so small that
 // underflow's absolute errors outgrow g).
-inline double geometric_margin(const lanes::ArticleRow<double>& row) {
-    const double u = std::numeric_limits<double>::epsilon() / 2;
+inline double geometric_margin(const lanes::ArticleRow<double>& row, KernelRounding kernel = rounding_of<double>()) {
     const double B = row.SS + row.rr;
-    if (!(16 * B <= std::numeric_limits<double>::max()) ||
-        !(std::sqrt(row.SS) * std::fabs(row.world.z_E) >= 1e-250))
+    if (!(16 * B <= kernel.max) || !(std::sqrt(row.SS) * std::fabs(row.world.z_E) >= kernel.least_product))
         return std::numeric_limits<double>::quiet_NaN();
-    const double EE_max = ((1 + row.yy) + row.zz) * (1 + 8 * u);
-    return EE_max * geometric_error(row);
+    const double EE_max = ((1 + row.yy) + row.zz) * (1 + 8 * kernel.u);
+    return EE_max * geometric_error(row, kernel);
 }
 
 }  // namespace silhouette_detail
 
-// The columns of a w-pixel row (x_E[j] = pane_x(j, w)) that may be hit with
-// the formula (the article's, stable and fma: the program's Δ/4, fma's
-// computed with Kahan's fmas; geometric: delta_g); the whole row when nothing
-// can be proven (a sphere around the line of sight, numbers near the ends of
-// double's range).
-inline RowSpan row_hit_span(const lanes::ArticleRow<double>& row, const double* x_E, int w,
-                            Formula formula = Formula::article) {
+// The columns of a w-pixel row (x_E[j] = pane_x(j, w), the kernel's own:
+// double or float) that may be hit with the formula (the article's, stable
+// and fma: the program's Δ/4, fma's computed with Kahan's fmas; geometric:
+// delta_g) by a kernel of rounding `kernel`; the whole row when nothing can be
+// proven (a sphere around the line of sight, numbers near the ends of the
+// kernel's range). A float kernel's row: its numbers, in double.
+template <class X>
+RowSpan row_hit_span(const lanes::ArticleRow<double>& row, const X* x_E, int w, Formula formula = Formula::article,
+                     KernelRounding kernel = rounding_of<double>()) {
     using namespace silhouette_detail;
     const RowSpan all{0, w};
-    const double margin = formula == Formula::geometric ? geometric_margin(row) : 0.0;
+    const double margin = formula == Formula::geometric ? geometric_margin(row, kernel) : 0.0;
     const double xS = row.world.S.x;
     // The quadratic's coefficients, exactly enough to find where to look.
     const double a = row.world.r * row.world.r - (row.world.S.y * row.world.S.y + row.world.S.z * row.world.S.z);
@@ -116,7 +141,7 @@ inline RowSpan row_hit_span(const lanes::ArticleRow<double>& row, const double* 
     const double b = 2 * xS * c0;
     const double c = c0 * c0 - k * row.SS_rr;
     const double x_v = -b / (2 * a);
-    const double e = row_error(row);
+    const double e = row_error(row, kernel);
     if (!std::isfinite(x_v) || !std::isfinite(e) || !std::isfinite(c) || !std::isfinite(margin)) return all;
     // Where Δ = 0 (a root pair, or the vertex when the row misses the sphere).
     double x1 = x_v, x2 = x_v;
@@ -147,7 +172,8 @@ inline RowSpan row_hit_span(const lanes::ArticleRow<double>& row, const double* 
     for (int step = 2; step <= 32; step *= 4) {
         const int j = std::min(column(x1) - step, w - 1);
         if (j < 0) break;
-        if (slope_sign(x_E[j]) > 0 && delta_hat(row, x_E[j]) + 2 * e + margin < 0) {
+        const double x = x_E[j];
+        if (slope_sign(x) > 0 && delta_hat(row, x) + 2 * e + margin < 0) {
             span.lo = j + 1;
             break;
         }
@@ -155,7 +181,8 @@ inline RowSpan row_hit_span(const lanes::ArticleRow<double>& row, const double* 
     for (int step = 2; step <= 32; step *= 4) {
         const int j = std::max(column(x2) + 1 + step, 0);
         if (j > w - 1) break;
-        if (slope_sign(x_E[j]) < 0 && delta_hat(row, x_E[j]) + 2 * e + margin < 0) {
+        const double x = x_E[j];
+        if (slope_sign(x) < 0 && delta_hat(row, x) + 2 * e + margin < 0) {
             span.hi = j;
             break;
         }

@@ -63,7 +63,7 @@ for lang, pattern in (
         failures.append(f"{lang}: at pixel ({i}, {j}), traces give {at}")
     if count != greys:
         failures.append(f"{lang}: {count} grey levels differ, traces give {greys}")
-    if not re.search(r"float \(--real float\), 1 (thread|wątek).*: [0-9]+[.,][0-9]+ ns/pi", out):
+    if not re.search(r"float \(--real float\), 1 (thread|wątek)[^:]*: [0-9]+[.,][0-9]+\s+ns/pi", out):
         failures.append(f"{lang}: no float timing in:\n{out}")
 
 if failures:
