@@ -354,6 +354,9 @@ PROMYK_LANES_INLINE auto sample_point_lanes(const SampleGrid& grid, const CellDi
         column = mix32_lanes(p.j_hash ^ c.hash);
     const auto h = mix32_lanes(grid.i_hash ^ column);
     if constexpr (parts == 1 && std::is_same_v<Real, double>) {
+        // Both divisors exact (template arguments): a whole grid, the test
+        // constant and the rest of this function not compiled. The general
+        // rows (one instantiation for every grid) test grid.whole at run time.
         if ((CellDivisor::exact && WDivisor::exact) || grid.whole) {
             // n and w powers of two: u = U / (2^16 n) with the whole number
             // U = 2^16 (s mod n) + h_u - 2^15 n, |U| <= 2^15 n <= 2^20, and
