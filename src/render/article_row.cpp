@@ -21,6 +21,7 @@
 #include "render/sample_lanes.hpp"
 #include "render/sample_lanes_span.hpp"
 #include "render/silhouette.hpp"
+#include "render/skipped_columns.hpp"
 #include "render/skipping.hpp"
 
 namespace promyk {
@@ -182,11 +183,8 @@ RowCounts lanes_row(const ArticleWorld<double>& world, int w, int i, std::uint8_
             // at a time (callgrind, w = 1024), and no slower measured.
             counts = lanes::draw_row<lanes::Double2>(row, x_E + span.lo, n, out + span.lo, formula);
     }
-    const std::uint8_t background = to_byte(world.background);
-    std::memset(out, background, static_cast<std::size_t>(span.lo));
-    std::memset(out + span.hi, background, static_cast<std::size_t>(w - span.hi));
-    counts.skipped = w - n;
-    counts.branches[static_cast<int>(Branch::miss)] += w - n;
+    fill_skipped(span, w, world.background, out, counts);
+    // The kernel counted from its first column (the sampled rows count from 0).
     if (counts.first_non_finite_j >= 0) counts.first_non_finite_j += span.lo;
     return counts;
 }
@@ -246,11 +244,7 @@ bool sampled_row_in_lanes(const ArticleWorld<double>& world, int w, int i, int s
                           RowCounts& counts, double* I_P, std::uint8_t* branches) {
 #if defined(PROMYK_ISA_KERNELS)
     if (spp <= 1) return false;
-    // A skipped pixel: spp misses, each the background, summed in sample
-    // order as sample_pixel sums them (not always the background itself).
-    double background = world.background;
-    for (int s = 1; s < spp; ++s) background = background + world.background;
-    background = background / spp;
+    const double background = sampled_background(world.background, spp);
     // Only the columns whose samples may meet the sphere are computed; the
     // others are proven misses (render/sample_lanes_span.hpp).
     const RowSpan span = background_skipping() && std::isfinite(background)
@@ -271,18 +265,7 @@ bool sampled_row_in_lanes(const ArticleWorld<double>& world, int w, int i, int s
             counts = lanes::draw_sampled_row<lanes::Double2>(row, w, i, spp, span.lo, span.hi, out, I_P, branches,
                                                              formula);
     }
-    const int skipped = w - (span.hi - span.lo);
-    const std::uint8_t grey = to_byte(background);
-    std::memset(out, grey, static_cast<std::size_t>(span.lo));
-    std::memset(out + span.hi, grey, static_cast<std::size_t>(w - span.hi));
-    for (int j = 0; j < w; ++j) {
-        if (j == span.lo) j = span.hi;
-        if (j >= w) break;
-        if (I_P) I_P[j] = background;
-        if (branches) branches[j] = static_cast<std::uint8_t>(Branch::miss);
-    }
-    counts.skipped = skipped;
-    counts.branches[static_cast<int>(Branch::miss)] += skipped;
+    fill_skipped(span, w, background, out, counts, I_P, branches);
     return true;
 #else
     (void)world, (void)w, (void)i, (void)spp, (void)out, (void)formula, (void)counts, (void)I_P, (void)branches;

@@ -3,9 +3,7 @@
 #include "render/float_row.hpp"
 
 #include <cmath>
-#include <cstring>
 
-#include "image/quantize.hpp"
 #include "render/article_lanes.hpp"
 #include "render/article_row.hpp"
 #include "render/article_row_lanes.hpp"
@@ -16,6 +14,7 @@
 #include "render/sample_lanes.hpp"
 #include "render/sample_lanes_span.hpp"
 #include "render/silhouette.hpp"
+#include "render/skipped_columns.hpp"
 #include "render/skipping.hpp"
 
 namespace promyk {
@@ -28,25 +27,6 @@ namespace {
 ArticleWorld<double> in_double(const ArticleWorld<float>& world) {
     return {world.z_E, {world.S.x, world.S.y, world.S.z}, world.r, {world.L.x, world.L.y, world.L.z},
             world.I,   world.background};
-}
-
-// The row's proven misses, [0, lo) and [hi, w), filled as the kernel would
-// draw them: the grey level of `background` (the pixel's intensity; for
-// samples their mean), counted as skipped misses.
-void fill_skipped(RowSpan span, int w, float background, std::uint8_t* out, RowCounts& counts, float* I_P,
-                  std::uint8_t* branches) {
-    const std::uint8_t grey = to_byte(background);
-    std::memset(out, grey, static_cast<std::size_t>(span.lo));
-    std::memset(out + span.hi, grey, static_cast<std::size_t>(w - span.hi));
-    for (int j = 0; j < w; ++j) {
-        if (j == span.lo) j = span.hi;
-        if (j >= w) break;
-        if (I_P) I_P[j] = background;
-        if (branches) branches[j] = static_cast<std::uint8_t>(Branch::miss);
-    }
-    const int skipped = w - (span.hi - span.lo);
-    counts.skipped = skipped;
-    counts.branches[static_cast<int>(Branch::miss)] += skipped;
 }
 
 }  // namespace
@@ -75,7 +55,7 @@ bool float_row_in_lanes(const ArticleWorld<float>& world, int w, int i, std::uin
         default:
             counts = lanes::draw_row<lanes::Float4>(row, x_E + span.lo, n, out + span.lo, formula);  // SSE2's four floats
     }
-    fill_skipped(span, w, world.background, out, counts, nullptr, nullptr);
+    fill_skipped(span, w, world.background, out, counts);
     // The kernel counted from its first column (the sampled rows count from 0).
     if (counts.first_non_finite_j >= 0) counts.first_non_finite_j += span.lo;
     return true;
@@ -89,11 +69,7 @@ bool sampled_float_row_in_lanes(const ArticleWorld<float>& world, int w, int i, 
                                 Formula formula, RowCounts& counts, float* I_P, std::uint8_t* branches) {
 #if defined(PROMYK_ISA_KERNELS)
     if (spp <= 1) return false;
-    // A skipped pixel: spp misses, each the background, summed in sample
-    // order and divided as sample_pixel does, in float.
-    float background = world.background;
-    for (int s = 1; s < spp; ++s) background = background + world.background;
-    background = background / static_cast<float>(spp);
+    const float background = sampled_background(world.background, spp);
     // Only the columns whose samples may meet the sphere are computed
     // (render/sample_lanes_span.hpp, with float's bounds).
     const RowSpan span = background_skipping() && std::isfinite(background)
