@@ -323,16 +323,19 @@ struct SamplePoint<Lane, true> {
 // Such a point's offset (u, v), all that is computed a sample ahead
 // (draw_sampled_row): the hash is the work, and x, y and d, a few
 // operations from u and v, would hold three more registers a vector in
-// flight (sixteen floats: GCC spilled registers every sample).
+// flight (sixteen floats: GCC spilled registers every sample). Double
+// lanes keep the whole point ahead: the same split there was slower on the
+// baseline path (PROMYK_ISA=baseline bench effects --w 256 --spp 9, art.
+// full 1.54-1.72 -> 1.75-1.83 a sample x spp 1, 2026-12-04).
 template <class Lane>
-struct SampleOffset {
+struct OffsetLanes {
     Lane u, v;
 };
 
 // Sample c.s's point for the vector's pixels, as sample_point computes it:
 // in double, x's and y's numerators rounded to the kernel's Real before
 // by_w divides them by Real(w). In float lanes with an exact cell, only
-// its offset (SampleOffset; point_at gives the point).
+// its offset (OffsetLanes; point_at gives the point).
 template <class Lane, class Intensity, class CellDivisor, class WDivisor>
 PROMYK_LANES_INLINE auto sample_point_lanes(const SampleGrid& grid, const CellDivisor& by_cell,
                                                          const WDivisor& by_w, const SampleCounter& c,
@@ -390,7 +393,7 @@ PROMYK_LANES_INLINE auto sample_point_lanes(const SampleGrid& grid, const CellDi
         // same exact u and v.
         // The point itself: point_at.
         const Real cell = static_cast<Real>(by_cell.reciprocal);  // 2^-16 / n, exact
-        return SampleOffset<Lane>{__builtin_convertvector(h_u, Lane) * cell - Real(0.5),
+        return OffsetLanes<Lane>{__builtin_convertvector(h_u, Lane) * cell - Real(0.5),
                                   __builtin_convertvector(h_v, Lane) * cell - Real(0.5)};
     } else {
         SamplePoint<Lane> E;
@@ -422,7 +425,7 @@ PROMYK_LANES_INLINE auto sample_point_lanes(const SampleGrid& grid, const CellDi
 // The point of sample_point_lanes' offset in float lanes (above); any
 // other point as it is.
 template <class Lane, class Intensity, class WDivisor>
-PROMYK_LANES_INLINE SamplePoint<Lane, true> point_at(const SampleOffset<Lane>& o, const SampleGrid& grid,
+PROMYK_LANES_INLINE SamplePoint<Lane, true> point_at(const OffsetLanes<Lane>& o, const SampleGrid& grid,
                                                      const WDivisor& by_w, const SampledLanes<Lane, Intensity>& p) {
     using Real = typename LaneTraits<Lane>::Real;
     SamplePoint<Lane, true> E;
