@@ -47,6 +47,7 @@ set(PROMYK_PORTABLE_SOURCES
   trace/trace_lines.cpp
   trace/trace_read.cpp
   trace/trace_text.cpp
+  trace/type_example.cpp
   trace/trace_compare.cpp
   trace/vocabulary.cpp
   trace/number_text.cpp

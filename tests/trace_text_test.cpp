@@ -1,7 +1,7 @@
 // The text trace as a class reads it: branch names in the run's language
 // (no English word in Polish output), a colour labelled as a colour, the
 // digits rule (--digits), the note on cos α above 1, and trace --compare's
-// agreement and closing lines.
+// agreement and closing lines, and the closing note's example in the trace's own type.
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -15,6 +15,7 @@
 #include "trace/messages.hpp"
 #include "trace/trace_compare.hpp"
 #include "trace/trace_text.hpp"
+#include "trace/type_example.hpp"
 #include "trace/vocabulary.hpp"
 #include "flat_text.hpp"
 
@@ -163,5 +164,42 @@ TEST_CASE("trace text: the branch line names the branch once, then says why", "[
             INFO(text);
             CHECK(count == 1);
         }
+    }
+}
+
+TEST_CASE("trace text: the closing note's 3.2 and 3.2² are the trace's own type's", "[trace-text]") {
+    // Expected values computed apart from promyk (Python's fractions): 3.2
+    // (the double) rounded to the type's significand (24, 53, 64, 113 bits),
+    // its first 20 significant digits, and its square rounded in the type, as
+    // the shortest decimal that rounds back to it there.
+    struct Expected {
+        RealType real;
+        const char* type;
+        const char* stored;
+        const char* square;
+    };
+    const Expected cases[] = {
+        {RealType::float_, "float", "3.2000000476837158203", "10.240001"},
+        {RealType::double_, "double", "3.2000000000000001776", "10.240000000000002"},
+        {RealType::long_double, "long double", "3.2000000000000001776", "10.240000000000001137"},
+        {RealType::quad_, "quad", "3.2000000000000001776", "10.240000000000001136868377216160329"},
+    };
+    for (const Expected& expected : cases) {
+        const std::string real(real_type_name(expected.real));
+        INFO(real);
+        const TypeExample example = type_example(real);
+        CHECK(example.type == expected.type);
+        CHECK(example.stored == expected.stored);
+        CHECK(example.cut);
+        CHECK(example.square == expected.square);
+        // The note as a trace in that type shows it, in both languages.
+        const PixelTrace trace = trace_pixel(article_scene(), 8, 3, 4, expected.real);
+        const std::string en = flat(text_of(trace, Language::en));
+        const std::string pl = flat(text_of(trace, Language::pl));
+        CHECK_THAT(en, Catch::Contains(std::string("reads back as the same ") + expected.type + "."));
+        CHECK_THAT(en, Catch::Contains(std::string("stored as ") + expected.stored + "…, so 3.2² gives " +
+                                       expected.square + ", not 10.24."));
+        CHECK_THAT(pl, Catch::Contains(std::string("tę samą liczbę ") + expected.type + "."));
+        CHECK_THAT(pl, Catch::Contains("więc 3,2² daje " + local_number_text(expected.square, Language::pl)));
     }
 }

@@ -13,6 +13,7 @@
 #include "trace/digits_alarm.hpp"
 #include "trace/digits_lost.hpp"
 #include "trace/messages.hpp"
+#include "trace/type_example.hpp"
 #include "util/interrupt.hpp"
 #include "util/text.hpp"
 #include "util/wrap.hpp"
@@ -380,10 +381,17 @@ std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, c
                         (trace.result != trace.result ? message(language, "trace_grey_nan") : ""),
                     2);
     }
-    return out + digits_lost_notes(trace, vocabulary, language) + "\n" +
-           message(language, options.digits > 0 ? "trace_note_digits" : "trace_note",
-                   {{"digits", std::to_string(options.digits)}}) +
-           "\n";
+    out += digits_lost_notes(trace, vocabulary, language) + "\n";
+    if (options.digits > 0)
+        return out + message(language, "trace_note_digits", {{"digits", std::to_string(options.digits)}}) + "\n";
+    // The note's example in the trace's own type (float's 3.2 is not double's).
+    const TypeExample example = type_example(trace.header.real);
+    return out + wrap("",
+                      message(language, "trace_note",
+                              {{"type", example.type},
+                               {"stored", local_number_text(example.stored, language) + (example.cut ? "…" : "")},
+                               {"square", local_number_text(example.square, language)}}),
+                      0);
 }
 
 std::string value_of(const StepValue& value, const Vocabulary& vocabulary, const std::string& key, Language language,
