@@ -98,7 +98,7 @@ TEST_CASE("Article rows in lanes: every pixel bit-identical to the traced path, 
             for (const int w : panes) {
                 INFO(formula_name(formula) << ", " << named.name << ", w = " << w);
                 CHECK(check_pane(named.world, w, formula) == 0);
-                CHECK(check_pane(in_type<float>(named.world), w, formula) == 0);
+                CHECK(check_pane(world_as<float>(named.world), w, formula) == 0);
             }
         }
     }
@@ -120,7 +120,7 @@ TEST_CASE("Rows in lanes, each formula: random spheres bit-identical to the trac
             INFO(formula_name(formula) << ", sphere " << s << " at (" << world.S.x << ", " << world.S.y << ", "
                                        << world.S.z << "), r = " << world.r << ", w = " << w);
             CHECK(check_pane(world, w, formula) == 0);
-            CHECK(check_pane(in_type<float>(world), w, formula) == 0);
+            CHECK(check_pane(world_as<float>(world), w, formula) == 0);
         }
         if (formula != Formula::article) CHECK(far_roots > 100);
     }
@@ -255,7 +255,7 @@ TEST_CASE("Drawn float rows: every instruction-set path, each formula, bit-ident
         PathForced forced(isa);
         for (const Formula formula : lane_formulas) {
             for (const NamedWorld& named : worlds) {
-                const ArticleWorld<float> world = in_type<float>(named.world);
+                const ArticleWorld<float> world = world_as<float>(named.world);
                 // Panes that are and are not whole vectors of 4, 8 and 16 floats.
                 std::vector<int> panes = {61, 64, 67};
                 if (named.w > 0) panes.push_back(named.w), panes.push_back(3 * named.w);

@@ -31,11 +31,6 @@ struct NamedWorld {
 };
 
 template <class Real>
-ArticleWorld<Real> in_type(const ArticleWorld<double>& d) {
-    return {Real(d.z_E), to_real<Real>(d.S), Real(d.r), to_real<Real>(d.L), Real(d.I), Real(d.background)};
-}
-
-template <class Real>
 bool same_bits(Real a, Real b) {
     return std::memcmp(&a, &b, sizeof a) == 0;
 }

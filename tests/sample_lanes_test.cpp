@@ -164,7 +164,7 @@ TEST_CASE("Sampled rows in float lanes: every pixel's mean, branch, grey level a
         PathForced forced(isa);
         for (const Formula formula : lane_formulas) {
             for (const NamedWorld& named : worlds) {
-                const ArticleWorld<float> world = in_type<float>(named.world);
+                const ArticleWorld<float> world = world_as<float>(named.world);
                 struct Run {
                     int w, spp;
                 };
@@ -198,7 +198,7 @@ TEST_CASE("Sampled rows in float lanes: 1024 non-finite samples a pixel agree an
     ArticleWorld<double> base = sample_worlds().front().world;
     for (const NamedWorld& named : sample_worlds())
         if (named.name == "article.json") base = named.world;
-    ArticleWorld<float> world = in_type<float>(base);
+    ArticleWorld<float> world = world_as<float>(base);
     world.r = NAN;  // Δ is not a number in every sample: none is a miss, none finite
     for (const Isa isa : supported_isas()) {
         PathForced forced(isa);
@@ -228,7 +228,7 @@ TEST_CASE("Sampled rows in lanes: a pane too wide for the column hashes' table g
         INFO(isa_name(isa));
         // The rows through the sphere's middle and near its top edge.
         const PaneCheck in_double = check_pane(base, w, spp, Formula::article, {w / 2, w / 4 + 40});
-        const PaneCheck in_float = check_pane(in_type<float>(base), w, spp, Formula::article, {w / 2, w / 4 + 40});
+        const PaneCheck in_float = check_pane(world_as<float>(base), w, spp, Formula::article, {w / 2, w / 4 + 40});
         CHECK(in_double.mismatches == 0);
         CHECK(in_double.count_mismatches == 0);
         CHECK(in_float.mismatches == 0);
@@ -243,5 +243,5 @@ TEST_CASE("Sampled rows in lanes: one sample is not drawn in lanes", "[sample_la
     std::vector<std::uint8_t> grey(16);
     RowCounts counts;
     CHECK_FALSE(sampled_row_in_lanes(named.world, 16, 3, 1, grey.data(), Formula::article, counts));
-    CHECK_FALSE(sampled_float_row_in_lanes(in_type<float>(named.world), 16, 3, 1, grey.data(), Formula::article, counts));
+    CHECK_FALSE(sampled_float_row_in_lanes(world_as<float>(named.world), 16, 3, 1, grey.data(), Formula::article, counts));
 }

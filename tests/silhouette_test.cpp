@@ -86,15 +86,9 @@ ArticleWorld<double> world_of(double x, double y, double z, double r, double z_E
 
 namespace {
 
-// The float scene's numbers in double, each exactly (as the proofs take them).
-ArticleWorld<double> as_double(const ArticleWorld<double>& world) { return world; }
-ArticleWorld<double> as_double(const ArticleWorld<float>& f) {
-    return {f.z_E, {f.S.x, f.S.y, f.S.z}, f.r, {f.L.x, f.L.y, f.L.z}, f.I, f.background};
-}
-
 template <class Real>
 ArticleWorld<Real> world_in(double x, double y, double z, double r, double z_E = 2) {
-    return lane_worlds_support::in_type<Real>(world_of(x, y, z, r, z_E));
+    return world_as<Real>(world_of(x, y, z, r, z_E));
 }
 
 // 400 random spheres on panes of 16 to 112: every column row_hit_span
@@ -112,7 +106,7 @@ void check_proven(long long& proven, long long& proven_geometric, long long& fai
         for (int j = 0; j < w; ++j) x_E[static_cast<std::size_t>(j)] = pane_x<Real>(j, w);
         for (int i = 0; i < w; ++i) {
             const lanes::ArticleRow<Real> row(world, pane_y<Real>(i, w));
-            const lanes::ArticleRow<double> row_d(as_double(world), row.y_E);
+            const lanes::ArticleRow<double> row_d(world_as<double>(world), row.y_E);
             for (const Formula formula : lane_formulas) {
                 const RowSpan span = row_hit_span(row_d, x_E.data(), w, formula, rounding_of<Real>());
                 REQUIRE(0 <= span.lo);
@@ -347,9 +341,8 @@ TEST_CASE("float skipping never changes a pixel: random spheres, silhouettes tan
     long long at_ends = 0;
     for (const double scale : {1e-18, 1e-12, 1e-6, 1e6, 1e12, 1e16, 1e17, 1e18, 1e19}) {
         INFO("scaled by " << scale);
-        at_ends += check_world(lane_worlds_support::in_type<float>(
-                                   {2 * scale, {0.5 * scale, 0.25 * scale, 6 * scale}, 1.1 * scale, {1.5, 1, 1}, 1, 0.5}),
-                               21, mismatches);
+        const ArticleWorld<double> scaled{2 * scale, {0.5 * scale, 0.25 * scale, 6 * scale}, 1.1 * scale, {1.5, 1, 1}, 1, 0.5};
+        at_ends += check_world(world_as<float>(scaled), 21, mismatches);
     }
     CHECK(at_ends > 0);
     skipped += at_ends + check_world(world_in<float>(0.3, 0.2, 4, 0.9, 1e-20), 21, mismatches);
@@ -375,9 +368,9 @@ TEST_CASE("skipping in float: the float kernel's delta and delta_g are within fl
     int grazing = 0, checked = 0, checked_geometric = 0;
     for (int s = 0; s < 200000; ++s) {
         const Case d = random_case(random, s);
-        const ArticleWorld<float> world = lane_worlds_support::in_type<float>(d.world);
+        const ArticleWorld<float> world = world_as<float>(d.world);
         const float x = static_cast<float>(d.x), y = static_cast<float>(d.y);
-        const Case c{as_double(world), x, y, d.grazing};  // the float numbers, exactly
+        const Case c{world_as<double>(world), x, y, d.grazing};  // the float numbers, exactly
         const lanes::ArticleRow<float> row(world, y);
         const lanes::ArticleRow<double> row_d(c.world, y);
         const float EE = (x * x + row.yy) + row.zz;
@@ -432,13 +425,13 @@ template <class Real>
 void check_edges(std::mt19937_64& random, int spheres, long long& checked, long long& failures) {
     std::uniform_real_distribution<double> position(-2, 2), depth(2.5, 9), radius(0.1, 2), unit(0, 1);
     for (int s = 0; s < spheres; ++s) {
-        const ArticleWorld<Real> world = lane_worlds_support::in_type<Real>(
+        const ArticleWorld<Real> world = world_as<Real>(
             world_of(position(random), position(random), depth(random), radius(random)));
         const int w = (1 << 22) - 1 - s % 3;
         const int i = static_cast<int>(unit(random) * w);
         const Real y_E = pane_y<Real>(i, w);
         const lanes::ArticleRow<Real> row(world, y_E);
-        const lanes::ArticleRow<double> row_d(as_double(world), y_E);
+        const lanes::ArticleRow<double> row_d(world_as<double>(world), y_E);
         const KernelRounding kernel = rounding_of<Real>();
         std::vector<Real> x_E(static_cast<std::size_t>(w));
         for (int j = 0; j < w; ++j) x_E[static_cast<std::size_t>(j)] = pane_x<Real>(j, w);
@@ -458,7 +451,7 @@ void check_edges(std::mt19937_64& random, int spheres, long long& checked, long 
             for (int j = span.hi; j < std::min(w, span.hi + 48); ++j, ++checked)
                 if (!missed(j) && failures++ < 5) FAIL_CHECK(formula_name(formula) << ": column " << j << " of " << w);
             // Four samples a pixel: every sample of the 48 columns outside.
-            const RowSpan sampled = sampled_row_hit_span(as_double(world), w, i, formula, kernel);
+            const RowSpan sampled = sampled_row_hit_span(world_as<double>(world), w, i, formula, kernel);
             const auto all_missed = [&](int j) {
                 const SampledPixel<Real> pixel = sample_pixel<Real>(
                     w, i, j, 4, world.z_E,

@@ -96,9 +96,7 @@ std::vector<std::uint8_t> to_bytes(const std::vector<double>& t) {
 // intensities land from double's (untimed: every row of both, in lanes).
 void report_float(const ArticleWorld<double>& world, int w, const Timing& float_run, const Timing& double_run,
                   const std::vector<std::uint8_t>& float_image, const std::vector<std::uint8_t>& double_image) {
-    const ArticleWorld<float> world_f{static_cast<float>(world.z_E), to_real<float>(world.S), static_cast<float>(world.r),
-                                      to_real<float>(world.L), static_cast<float>(world.I),
-                                      static_cast<float>(world.background)};
+    const ArticleWorld<float> world_f = world_as<float>(world);
     std::vector<double> I_d(static_cast<std::size_t>(w));
     std::vector<float> I_f(static_cast<std::size_t>(w));
     double largest = 0;

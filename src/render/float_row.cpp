@@ -19,29 +19,17 @@
 
 namespace promyk {
 
-#if defined(PROMYK_ISA_KERNELS)
-namespace {
-
-// The float scene's numbers in double, each exactly: what the skipping
-// proofs (render/silhouette.hpp) reason about, in double, with float's bounds.
-ArticleWorld<double> in_double(const ArticleWorld<float>& world) {
-    return {world.z_E, {world.S.x, world.S.y, world.S.z}, world.r, {world.L.x, world.L.y, world.L.z},
-            world.I,   world.background};
-}
-
-}  // namespace
-#endif
-
 bool float_row_in_lanes(const ArticleWorld<float>& world, int w, int i, std::uint8_t* out, Formula formula,
                         RowCounts& counts) {
 #if defined(PROMYK_ISA_KERNELS)
     const lanes::ArticleRow<float> row(world, pane_y<float>(i, w));
     const float* x_E = pane_columns_float(w);
     // Only the columns that may meet the sphere are computed, as in double
-    // (render/article_row.cpp), proven with float's bounds.
+    // (render/article_row.cpp), proven with float's bounds on the float
+    // scene's own numbers (each exact in double).
     RowSpan span{0, w};
     if (background_skipping()) {
-        const lanes::ArticleRow<double> row_d(in_double(world), row.y_E);
+        const lanes::ArticleRow<double> row_d(world_as<double>(world), row.y_E);
         span = row_hit_span(row_d, x_E, w, formula, rounding_of<float>());
     }
     const int n = span.hi - span.lo;
@@ -73,7 +61,7 @@ bool sampled_float_row_in_lanes(const ArticleWorld<float>& world, int w, int i, 
     // Only the columns whose samples may meet the sphere are computed
     // (render/sample_lanes_span.hpp, with float's bounds).
     const RowSpan span = background_skipping() && std::isfinite(background)
-                             ? sampled_row_hit_span(in_double(world), w, i, formula, rounding_of<float>())
+                             ? sampled_row_hit_span(world_as<double>(world), w, i, formula, rounding_of<float>())
                              : RowSpan{0, w};
     // y_E is each sample's own: the row's is not used.
     const lanes::ArticleRow<float> row(world, pane_y<float>(i, w));

@@ -104,9 +104,7 @@ class ArticleKernel final : public Kernel {
 
 public:
     ArticleKernel(const Stages& stages, const ArticleWorld<double>& world, int spp)
-        : Kernel(stages, spp),
-          world_{Real(world.z_E), to_real<Real>(world.S), Real(world.r), to_real<Real>(world.L), Real(world.I),
-                 Real(world.background)} {}
+        : Kernel(stages, spp), world_(world_as<Real>(world)) {}
     int channels() const override { return 1; }
     RowCounts row(int w, int i, std::uint8_t* out) const override {
         if (spp() > 1) return sampled_row(w, i, out);

@@ -26,6 +26,16 @@ struct ArticleWorld {
     Real background;
 };
 
+// The world's numbers in another real type, each converted once: rounded
+// from double (a kernel in float, long double or quad reading the scene),
+// exactly to double from float (the silhouette proofs take a float scene's
+// own numbers).
+template <class To, class From>
+ArticleWorld<To> world_as(const ArticleWorld<From>& world) {
+    const auto in_to = [](const Vec3<From>& v) { return Vec3<To>{To(v.x), To(v.y), To(v.z)}; };
+    return {To(world.z_E), in_to(world.S), To(world.r), in_to(world.L), To(world.I), To(world.background)};
+}
+
 // Throws InputError unless the scene is one the article's program handles
 // (exactly one sphere and one light, eye outside the sphere). Other scenes
 // run the general tracer (render/general_tracer.hpp): render/kernel.hpp
