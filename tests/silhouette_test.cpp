@@ -130,6 +130,81 @@ void check_proven(long long& proven, long long& proven_geometric, long long& fai
     }
 }
 
+// Each type's cases for check_never_changes: its random stream, how far a
+// tangent radius is nudged (about a unit of the type's roundoff), the scales
+// near the ends of its range (where the bounds' own arithmetic and the
+// geometric formula's squares of l could overflow or underflow; in float,
+// from 1e18 on the products' overflow proves nothing) and a tiny z_E.
+template <class Real>
+struct NeverChangesCases;
+template <>
+struct NeverChangesCases<double> {
+    static constexpr unsigned seed = 11;
+    static constexpr double nudge = 1e-15, tiny_z_E = 1e-200;
+    static constexpr double scales[] = {1e-160, 1e-120, 1e-60, 1e60, 1e120, 1e150, 1e153, 1e154};
+};
+template <>
+struct NeverChangesCases<float> {
+    static constexpr unsigned seed = 13;
+    static constexpr double nudge = 1e-7, tiny_z_E = 1e-20;
+    static constexpr double scales[] = {1e-18, 1e-12, 1e-6, 1e6, 1e12, 1e16, 1e17, 1e18, 1e19};
+};
+
+// Rows drawn in Real, skipping with Real's bounds (the proofs' arithmetic in
+// double on the scene's Real numbers), equal the traced path on every pixel:
+// random spheres, silhouettes tangent in Real, the ends of Real's range,
+// spheres around the line of sight.
+template <class Real>
+void check_never_changes() {
+    using Cases = NeverChangesCases<Real>;
+    int mismatches = 0;
+    long long skipped = 0;
+    std::mt19937_64 random(Cases::seed);
+    std::uniform_real_distribution<double> position(-2, 2), depth(2.5, 9), radius(0.1, 2);
+    for (int s = 0; s < 60; ++s) {
+        INFO("random sphere " << s);
+        skipped += check_world(world_in<Real>(position(random), position(random), depth(random), radius(random)),
+                               37 + s, mismatches);
+    }
+    // Tangent: r chosen so that pixel (i, j)'s ray just touches the sphere,
+    // r² = |S|² − C²/|E|² from the pixel's E and the centre in Real (in
+    // double, finer than float), for pixels all over the pane; the
+    // neighbours of such a pixel sit on the silhouette too.
+    for (int s = 0; s < 40; ++s) {
+        const int w = 24 + s;
+        const int i = static_cast<int>(random() % static_cast<unsigned>(w)), j = static_cast<int>(random() % static_cast<unsigned>(w));
+        const double x = static_cast<Real>(position(random) * 0.5), y = static_cast<Real>(position(random) * 0.5),
+                     z = static_cast<Real>(depth(random));
+        const Vec3<Real> E = pane_point<Real>(i, j, w, Real(2));
+        const double C = double(E.x) * x + double(E.y) * y + double(E.z) * z,
+                     EE = double(E.x) * E.x + double(E.y) * E.y + double(E.z) * E.z;
+        const double rr = x * x + y * y + z * z - C * C / EE;
+        if (!(rr > 0.01)) continue;
+        INFO("tangent at pixel (" << i << ", " << j << ") of w " << w);
+        for (const double nudge : {-Cases::nudge, 0.0, Cases::nudge})
+            skipped += check_world(world_in<Real>(x, y, z, std::sqrt(rr) * (1 + nudge)), w, mismatches);
+    }
+    // The article's scene scaled up and down, and a tiny z_E.
+    long long at_ends = 0;
+    for (const double scale : Cases::scales) {
+        INFO("scaled by " << scale);
+        const ArticleWorld<double> scaled{2 * scale, {0.5 * scale, 0.25 * scale, 6 * scale}, 1.1 * scale, {1.5, 1, 1}, 1, 0.5};
+        at_ends += check_world(world_as<Real>(scaled), 21, mismatches);
+    }
+    CHECK(at_ends > 0);
+    skipped += at_ends + check_world(world_in<Real>(0.3, 0.2, 4, 0.9, Cases::tiny_z_E), 21, mismatches);
+    // Around the line of sight along x (r² ≥ y_S² + z_S²): nothing is proven,
+    // every pixel is computed.
+    {
+        int around = 0;
+        const long long none = check_world(world_in<Real>(5, 0, 1, 2), 40, around);
+        CHECK(none == 0);
+        mismatches += around;
+    }
+    CHECK(mismatches == 0);
+    CHECK(skipped > 100000);
+}
+
 }  // namespace
 
 TEST_CASE("skipping: the proven columns are misses of the kernel's own delta, in double and in float",
@@ -146,52 +221,6 @@ TEST_CASE("skipping: the proven columns are misses of the kernel's own delta, in
     CHECK(failed == 0);
     CHECK(proven > 300000);
     CHECK(proven_geometric > 100000);
-}
-
-TEST_CASE("skipping never changes a pixel: random spheres, tangent silhouettes, spheres around the line of sight",
-          "[silhouette][isa]") {
-    int mismatches = 0;
-    long long skipped = 0;
-    std::mt19937_64 random(11);
-    std::uniform_real_distribution<double> position(-2, 2), depth(2.5, 9), radius(0.1, 2);
-    for (int s = 0; s < 60; ++s) {
-        INFO("random sphere " << s);
-        skipped += check_world(world_of(position(random), position(random), depth(random), radius(random)), 37 + s, mismatches);
-    }
-    // Tangent: r chosen so that pixel (i, j)'s ray just touches the sphere,
-    // r² = |S|² − C²/|E|², for pixels all over the pane; the neighbours of
-    // such a pixel sit on the silhouette too.
-    for (int s = 0; s < 40; ++s) {
-        const int w = 24 + s;
-        const int i = static_cast<int>(random() % static_cast<unsigned>(w)), j = static_cast<int>(random() % static_cast<unsigned>(w));
-        const double x = position(random) * 0.5, y = position(random) * 0.5, z = depth(random);
-        const Vec3d E = pane_point(i, j, w, 2.0);
-        const double C = E.x * x + E.y * y + E.z * z, EE = E.x * E.x + E.y * E.y + E.z * E.z;
-        const double rr = x * x + y * y + z * z - C * C / EE;
-        if (!(rr > 0.01)) continue;
-        INFO("tangent at pixel (" << i << ", " << j << ") of w " << w);
-        for (const double nudge : {-1e-15, 0.0, 1e-15})
-            skipped += check_world(world_of(x, y, z, std::sqrt(rr) * (1 + nudge)), w, mismatches);
-    }
-    // Near the ends of double's range, where the bounds' own arithmetic and
-    // the geometric formula's squares of l could overflow or underflow: the
-    // article's scene scaled up and down, and a tiny z_E.
-    for (const double scale : {1e-160, 1e-120, 1e-60, 1e60, 1e120, 1e150, 1e153, 1e154}) {
-        INFO("scaled by " << scale);
-        skipped += check_world(ArticleWorld<double>{2 * scale, {0.5 * scale, 0.25 * scale, 6 * scale}, 1.1 * scale, {1.5, 1, 1}, 1, 0.5},
-                               21, mismatches);
-    }
-    skipped += check_world(world_of(0.3, 0.2, 4, 0.9, 1e-200), 21, mismatches);
-    // Around the line of sight along x (r² ≥ y_S² + z_S²): nothing is proven,
-    // every pixel is computed.
-    {
-        int around = 0;
-        const long long none = check_world(world_of(5, 0, 1, 2), 40, around);
-        CHECK(none == 0);
-        mismatches += around;
-    }
-    CHECK(mismatches == 0);
-    CHECK(skipped > 100000);
 }
 
 namespace {
@@ -304,56 +333,18 @@ TEST_CASE("skipping: the geometric formula's delta_g is within its bound of the 
     CHECK(worst > 1.0 / 64);
 }
 
+TEST_CASE("skipping never changes a pixel: random spheres, tangent silhouettes, spheres around the line of sight",
+          "[silhouette][isa]") {
+    check_never_changes<double>();
+}
+
 // --real float's rows skip with the same proofs, float's bounds
 // (rounding_of<float>), the proofs' arithmetic in double on the float
 // scene's numbers.
 TEST_CASE("float skipping never changes a pixel: random spheres, silhouettes tangent in float, float's range ends, "
           "spheres around the line of sight",
           "[silhouette][isa][float]") {
-    int mismatches = 0;
-    long long skipped = 0;
-    std::mt19937_64 random(13);
-    std::uniform_real_distribution<double> position(-2, 2), depth(2.5, 9), radius(0.1, 2);
-    for (int s = 0; s < 60; ++s) {
-        INFO("random sphere " << s);
-        skipped += check_world(world_in<float>(position(random), position(random), depth(random), radius(random)),
-                               37 + s, mismatches);
-    }
-    // Tangent in float: r² = |S|² − C²/|E|² from the float pixel's E and
-    // the float centre (in double, far finer than float), r then nudged by
-    // about a unit of float's roundoff each way.
-    for (int s = 0; s < 40; ++s) {
-        const int w = 24 + s;
-        const int i = static_cast<int>(random() % static_cast<unsigned>(w)), j = static_cast<int>(random() % static_cast<unsigned>(w));
-        const double x = static_cast<float>(position(random) * 0.5), y = static_cast<float>(position(random) * 0.5),
-                     z = static_cast<float>(depth(random));
-        const Vec3<float> E = pane_point<float>(i, j, w, 2.0f);
-        const double C = double(E.x) * x + double(E.y) * y + double(E.z) * z,
-                     EE = double(E.x) * E.x + double(E.y) * E.y + double(E.z) * E.z;
-        const double rr = x * x + y * y + z * z - C * C / EE;
-        if (!(rr > 0.01)) continue;
-        INFO("tangent at pixel (" << i << ", " << j << ") of w " << w);
-        for (const double nudge : {-1e-7, 0.0, 1e-7})
-            skipped += check_world(world_in<float>(x, y, z, std::sqrt(rr) * (1 + nudge)), w, mismatches);
-    }
-    // Near the ends of float's range: the bounds' underflow term, and the
-    // products' overflow (from 1e18 on, nothing is proven).
-    long long at_ends = 0;
-    for (const double scale : {1e-18, 1e-12, 1e-6, 1e6, 1e12, 1e16, 1e17, 1e18, 1e19}) {
-        INFO("scaled by " << scale);
-        const ArticleWorld<double> scaled{2 * scale, {0.5 * scale, 0.25 * scale, 6 * scale}, 1.1 * scale, {1.5, 1, 1}, 1, 0.5};
-        at_ends += check_world(world_as<float>(scaled), 21, mismatches);
-    }
-    CHECK(at_ends > 0);
-    skipped += at_ends + check_world(world_in<float>(0.3, 0.2, 4, 0.9, 1e-20), 21, mismatches);
-    {
-        int around = 0;
-        const long long none = check_world(world_in<float>(5, 0, 1, 2), 40, around);
-        CHECK(none == 0);
-        mismatches += around;
-    }
-    CHECK(mismatches == 0);
-    CHECK(skipped > 100000);
+    check_never_changes<float>();
 }
 
 // The float kernel's Δ̂ (the article's products, Kahan's fmas) within
