@@ -7,7 +7,9 @@
 #include <csignal>
 #include <cstring>
 #include <limits>
+#include <vector>
 
+#include "render/isa.hpp"
 #include "render/renderer.hpp"
 #include "render/trace_pixel.hpp"
 #include "util/errors.hpp"
@@ -154,4 +156,54 @@ TEST_CASE("render counts shadow rays and tests by shape exactly, as the traces a
         CHECK(branches[static_cast<int>(Branch::miss)] > 0);
         CHECK(branches[static_cast<int>(Branch::dark)] > 0);
     }
+}
+
+namespace {
+
+struct BytesSink final : RenderSink {
+    std::vector<std::uint8_t> bytes;
+    void image_rows(const std::uint8_t* rows, int count) override {
+        bytes.insert(bytes.end(), rows, rows + static_cast<std::ptrdiff_t>(count) * w);
+    }
+    explicit BytesSink(int w_) : w(w_) {}
+    int w;
+};
+
+}  // namespace
+
+// render without --stats draws the article's rows without counting each
+// pixel's branch (RenderSettings::count_branches): the image must not
+// change, and the non-finite pixels (render's warning) are still counted,
+// the first one found, on every instruction-set path this processor has.
+TEST_CASE("render without branch counting: the same image, the non-finite pixels still counted", "[render-stats][isa]") {
+    Scene overflowing = article_scene();
+    overflowing.lights.front().I = std::numeric_limits<double>::max();  // I·D overflows where D > 1
+    const Isa in_use = article_isa();
+    for (const Isa isa : supported_isas()) {
+        set_article_isa(isa);
+        for (const Scene& scene : {article_scene(), overflowing})
+            for (const Formula formula : {Formula::article, Formula::stable, Formula::geometric})
+                for (const int w : {8, 61, 200}) {
+                    INFO("isa " << static_cast<int>(isa) << ", I = " << scene.lights.front().I << ", formula "
+                                << static_cast<int>(formula) << ", w = " << w);
+                    RenderSettings counted{w, 1, RealType::double_, formula, 1, true};
+                    RenderSettings uncounted = counted;
+                    uncounted.count_branches = false;
+                    BytesSink with(w), without(w);
+                    RenderStats with_stats, without_stats;
+                    render(scene, counted, PixelSelection{}, with, &with_stats);
+                    render(scene, uncounted, PixelSelection{}, without, &without_stats);
+                    REQUIRE(with.bytes.size() == static_cast<std::size_t>(w) * w);
+                    CHECK(with.bytes == without.bytes);
+                    CHECK(without_stats.count(Branch::non_finite) == with_stats.count(Branch::non_finite));
+                    CHECK(without_stats.first_non_finite_i == with_stats.first_non_finite_i);
+                    CHECK(without_stats.first_non_finite_j == with_stats.first_non_finite_j);
+                    // Only what was asked: no lit or dark pixel counted.
+                    CHECK(without_stats.count(Branch::lit) == 0);
+                    CHECK(without_stats.count(Branch::dark) == 0);
+                    CHECK(with_stats.count(Branch::lit) + with_stats.count(Branch::non_finite) > 0);
+                    if (scene.lights.front().I > 1) CHECK(with_stats.count(Branch::non_finite) > 0);
+                }
+    }
+    set_article_isa(in_use);
 }

@@ -426,7 +426,9 @@ int run_render(const RenderOptions& options) {
     {
         Progress progress("promyk render", "rows");
         FileSink sink(image.get(), traces ? &*traces : nullptr, progress);
-        const RenderSettings settings{options.w, options.threads, options.real, options.formula, options.spp};
+        // Every branch counted only for --stats (the non-finite warning's count always).
+        const RenderSettings settings{options.w,       options.threads, options.real,
+                                      options.formula, options.spp,     options.stats};
         if (map)
             render(*map, scene, settings, traced.selection, sink, &stats);
         else

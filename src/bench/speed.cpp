@@ -34,6 +34,15 @@ namespace promyk::bench {
 
 namespace {
 
+// The engine's settings as `promyk render` runs without --stats: the
+// branches are not counted (only non-finite pixels, for its warning).
+RenderSettings as_rendered(int w, int threads) {
+    RenderSettings settings;
+    settings.w = w, settings.threads = threads;
+    settings.count_branches = false;
+    return settings;
+}
+
 // Keeps the image in memory, for comparison: the renderer draws the rows
 // there in place (as a program that renders into memory would), so the
 // timing has no copy of band buffers in it.
@@ -163,7 +172,7 @@ int run_speed_bench(const SpeedOptions& options) {
                 set_article_isa(paths[p]);
                 for (long k = 0; k < count; ++k) {
                     MemorySink sink(engine_images[p].data());
-                    render(scene, {w, 1}, PixelSelection{}, sink);
+                    render(scene, as_rendered(w, 1), PixelSelection{}, sink);
                 }
                 set_article_isa(in_use);
             });
@@ -174,12 +183,12 @@ int run_speed_bench(const SpeedOptions& options) {
     jobs.push_back(repeated([&] {
         set_background_skipping(false);
         MemorySink sink(no_skip_image.data());
-        render(scene, {w, threads}, PixelSelection{}, sink);
+        render(scene, as_rendered(w, threads), PixelSelection{}, sink);
         set_background_skipping(true);
     }));
     jobs.push_back(repeated([&] {
         MemorySink sink(threaded_image.data());
-        render(scene, {w, threads}, PixelSelection{}, sink);
+        render(scene, as_rendered(w, threads), PixelSelection{}, sink);
     }));
     // --real float on the first core, beside the double engine's run there.
     std::vector<std::uint8_t> float_image(literal_t.size());

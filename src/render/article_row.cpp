@@ -160,7 +160,8 @@ ArticleRowCounts article_row_intensities(const ArticleWorld<float>& world, int w
 namespace {
 #if defined(PROMYK_ISA_KERNELS)
 // Row i in lanes with the formula, on the path render/isa.hpp chose.
-RowCounts lanes_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out, Formula formula) {
+RowCounts lanes_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out, Formula formula,
+                    bool count) {
     const lanes::ArticleRow<double> row(world, pane_y<double>(i, w));
     const double* x_E = pane_columns(w);
     // Only the columns that may meet the sphere are computed; the others are
@@ -173,15 +174,15 @@ RowCounts lanes_row(const ArticleWorld<double>& world, int w, int i, std::uint8_
     RowCounts counts;
     switch (article_isa()) {
         case Isa::avx512:
-            counts = lanes::avx512::draw_article_row(row, x_E + span.lo, n, out + span.lo, formula);
+            counts = lanes::avx512::draw_article_row(row, x_E + span.lo, n, out + span.lo, formula, count);
             break;
         case Isa::avx2:
-            counts = lanes::avx2::draw_article_row(row, x_E + span.lo, n, out + span.lo, formula);
+            counts = lanes::avx2::draw_article_row(row, x_E + span.lo, n, out + span.lo, formula, count);
             break;
         default:
             // SSE2's two lanes: 57 instructions a pixel against 68 one pixel
             // at a time (callgrind, w = 1024), and no slower measured.
-            counts = lanes::draw_row<lanes::Double2>(row, x_E + span.lo, n, out + span.lo, formula);
+            counts = lanes::draw_row<lanes::Double2>(row, x_E + span.lo, n, out + span.lo, formula, count);
     }
     fill_skipped(span, w, world.background, out, counts);
     // The kernel counted from its first column (the sampled rows count from 0).
@@ -277,10 +278,12 @@ RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8
     return render_row(world, w, i, out, Formula::article);
 }
 
-RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out, Formula formula) {
+RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out, Formula formula,
+                     bool count_branches) {
 #if defined(PROMYK_ISA_KERNELS)
-    return lanes_row(world, w, i, out, formula);
+    return lanes_row(world, w, i, out, formula, count_branches);
 #else
+    (void)count_branches;  // one pixel at a time, counting costs nothing worth saving
     switch (formula) {
         case Formula::stable:
             return one_pixel_row<SphereFormula<Formula::stable>>(world, w, i, out);

@@ -21,8 +21,10 @@ struct ArticleRowCounts {
 // sphere's formula: in lanes on the path render/isa.hpp chose (the wasm: one
 // pixel at a time through trace_ray). Each grey level is to_byte of
 // trace_ray's intensity, each branch trace_ray's. render/renderer.hpp's
-// render_row is this with the article's formula.
-RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out, Formula formula);
+// render_row is this with the article's formula. count_branches false:
+// only non-finite pixels are counted (Kernel::counts_branches).
+RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8_t* out, Formula formula,
+                     bool count_branches = true);
 
 // Row i drawn from spp > 1 samples a pixel (render/samples.hpp), in lanes
 // on the path render/isa.hpp chose (render/sample_lanes.hpp), with the

@@ -10,8 +10,8 @@ namespace promyk::lanes {
 inline namespace avx2 {  // inline, as lanes.hpp opened it in this file
 
 RowCounts draw_article_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out,
-                           Formula formula) {
-    return draw_row<Double4>(row, x_E, w, out, formula);
+                           Formula formula, bool count_branches) {
+    return draw_row<Double4>(row, x_E, w, out, formula, count_branches);
 }
 
 void article_row_intensities(const ArticleRow<double>& row, const double* x_E, int w, double* I_P,

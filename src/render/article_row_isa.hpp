@@ -19,7 +19,8 @@ template <class Real>
 struct ArticleRow;
 
 // Row `row` into out[0 .. w) with the formula (article, stable or
-// geometric); x_E[j] = pane_x(j, w) for the whole pane.
+// geometric); x_E[j] = pane_x(j, w) for the whole pane; count_branches
+// false: only non-finite pixels counted (render/article_row_lanes.hpp).
 // article_row_intensities: the same row's intensities and branches (bytes of
 // Branch), for the tests.
 // (In a set's own file lanes.hpp has opened its namespace as inline; naming
@@ -30,7 +31,7 @@ struct ArticleRow;
 #endif
 namespace avx2 {
 RowCounts draw_article_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out,
-                           Formula formula);
+                           Formula formula, bool count_branches);
 void article_row_intensities(const ArticleRow<double>& row, const double* x_E, int w, double* I_P,
                              std::uint8_t* branches, Formula formula);
 // Columns [lo, hi) of row i from spp > 1 samples a pixel into out[lo .. hi);
@@ -45,7 +46,7 @@ RowCounts draw_sampled_float_row(const ArticleRow<float>& row, int w, int i, int
 }
 namespace avx512 {
 RowCounts draw_article_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out,
-                           Formula formula);
+                           Formula formula, bool count_branches);
 void article_row_intensities(const ArticleRow<double>& row, const double* x_E, int w, double* I_P,
                              std::uint8_t* branches, Formula formula);
 // Columns [lo, hi) of row i from spp > 1 samples a pixel into out[lo .. hi);

@@ -124,23 +124,33 @@ PROMYK_LANES_INLINE void put_intensities(const Vec3<Vector>& I_P, std::uint8_t* 
 // Root (render/article_lanes.hpp): x_E[j] is pane_x(j, w), given for the
 // whole pane (columns share it; computing it here would cost each pixel a
 // division). The last vector is filled past w and only its first pixels
-// are kept.
-template <class Vector, template <class> class Root = ArticleRoot, class Real = typename LaneTraits<Vector>::Real>
+// are kept. CountBranches false: only the non-finite pixels are counted
+// (in a branch taken where there are any, which is rare), the other
+// branches left 0: counting them in every vector keeps its masks in
+// vectors, 6 to 10 % of the row's time (docs/bench.md).
+template <class Vector, template <class> class Root = ArticleRoot, bool CountBranches = true,
+          class Real = typename LaneTraits<Vector>::Real>
 PROMYK_LANES_INLINE RowCounts draw_row(const ArticleRow<Real>& row, const Real* x_E, int w, std::uint8_t* out) {
     constexpr int width = LaneTraits<Vector>::width;
     using Mask = MaskOf<Vector>;
     Mask miss{}, dark{}, non_finite{};  // counted lane by lane: a mask is -1 where true
-    int first_non_finite_j = -1;
+    int first_non_finite_j = -1, non_finites_seen = 0;
     // Pixels j .. j + n - 1 of the row, x their x_E (and, past n, filler).
     const auto take = [&](int j, int n, const LanePixel<Vector>& pixel, Mask kept) __attribute__((always_inline)) {
         put_grey_levels(pixel.I_P, out + j, n);
-        miss -= pixel.miss & kept;
-        dark -= pixel.dark & kept;
         const Mask now_non_finite = pixel.non_finite & kept;
-        non_finite -= now_non_finite;
-        if (first_non_finite_j < 0 && any(now_non_finite))  // rare
-            for (int k = width - 1; k >= 0; --k)
-                if (lane_of(now_non_finite, k)) first_non_finite_j = j + k;
+        if constexpr (CountBranches) {
+            miss -= pixel.miss & kept;
+            dark -= pixel.dark & kept;
+            non_finite -= now_non_finite;
+        }
+        if (any(now_non_finite)) {  // rare
+            for (int k = width - 1; k >= 0; --k) {
+                if (!lane_of(now_non_finite, k)) continue;
+                if (first_non_finite_j < 0 || j + k < first_non_finite_j) first_non_finite_j = j + k;
+                if constexpr (!CountBranches) ++non_finites_seen;
+            }
+        }
     };
     const auto draw = [&](int j, int n, Vector x, Mask kept) __attribute__((always_inline)) {
         take(j, n, article_lanes<Root>(row, x), kept);
@@ -170,6 +180,11 @@ PROMYK_LANES_INLINE RowCounts draw_row(const ArticleRow<Real>& row, const Real* 
     }
     RowCounts counts;
     counts.sphere_tests = w;  // one sphere, one primary ray a pixel
+    counts.first_non_finite_j = first_non_finite_j;
+    if constexpr (!CountBranches) {
+        counts.branches[static_cast<int>(Branch::non_finite)] = non_finites_seen;
+        return counts;
+    }
     int missed = 0, darks = 0, non_finites = 0;
     for (int k = 0; k < width; ++k) {
         missed += static_cast<int>(miss[k]);
@@ -180,7 +195,6 @@ PROMYK_LANES_INLINE RowCounts draw_row(const ArticleRow<Real>& row, const Real* 
     counts.branches[static_cast<int>(Branch::dark)] = darks;
     counts.branches[static_cast<int>(Branch::non_finite)] = non_finites;
     counts.branches[static_cast<int>(Branch::lit)] = w - missed - darks - non_finites;
-    counts.first_non_finite_j = first_non_finite_j;
     return counts;
 }
 
@@ -216,12 +230,14 @@ PROMYK_LANES_INLINE void row_intensities(const ArticleRow<double>& row, const do
 }
 
 // draw_row with the formula chosen at run time (once a row): the article's,
-// stable or geometric; fma has no lanes.
+// stable or geometric; fma has no lanes. count_branches: CountBranches.
 template <class Vector, class Real = typename LaneTraits<Vector>::Real>
 PROMYK_LANES_INLINE RowCounts draw_row(const ArticleRow<Real>& row, const Real* x_E, int w, std::uint8_t* out,
-                                       Formula formula) {
+                                       Formula formula, bool count_branches = true) {
     return with_root(formula, [&](auto root) {
-        return draw_row<Vector, decltype(root)::template Root>(row, x_E, w, out);
+        using R = decltype(root);
+        return count_branches ? draw_row<Vector, R::template Root, true>(row, x_E, w, out)
+                              : draw_row<Vector, R::template Root, false>(row, x_E, w, out);
     });
 }
 

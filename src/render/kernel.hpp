@@ -57,6 +57,12 @@ public:
     const Stages& stages() const { return stages_; }
     // Samples per pixel (render/samples.hpp): 1 is the pixel's centre.
     int spp() const { return spp_; }
+    // Whether row() counts every pixel's branch (RowCounts::branches), or
+    // only the non-finite ones (the rest left 0): the article's drawn rows
+    // then skip their per-vector counting, 6 to 10 % of their time on one
+    // Intel processor (docs/bench.md). On by default; render --stats needs it.
+    bool counts_branches() const { return count_branches_; }
+    void set_branch_counting(bool on) { count_branches_ = on; }
 
 protected:
     Kernel(const Stages& stages, int spp) : stages_(stages), spp_(spp) {}
@@ -64,6 +70,7 @@ protected:
 private:
     Stages stages_;
     int spp_;
+    bool count_branches_ = true;
 };
 
 // The kernel for the scene, computing in `real` (PRODUCT.md: --real) with

@@ -109,7 +109,8 @@ public:
     RowCounts row(int w, int i, std::uint8_t* out) const override {
         if (spp() > 1) return sampled_row(w, i, out);
         if constexpr (in_lanes) {
-            return render_row(world_, w, i, out, F::id);  // the tuned loop of the article's program
+            // The tuned loop of the article's program.
+            return render_row(world_, w, i, out, F::id, counts_branches());
         } else {
             RowCounts counts;
             if constexpr (in_float_lanes) {

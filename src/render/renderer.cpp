@@ -340,6 +340,7 @@ int image_channels(const Scene& scene) { return is_coloured(scene) ? 3 : 1; }
 void render(const Scene& scene, const RenderSettings& settings, const PixelSelection& traced, RenderSink& sink,
             RenderStats* stats) {
     const std::unique_ptr<Kernel> kernel = make_kernel(scene, settings.real, settings.formula, settings.spp);
+    kernel->set_branch_counting(settings.count_branches);
     render(*kernel, scene, settings, traced, sink, stats);
 }
 

@@ -55,6 +55,9 @@ struct RenderSettings {
     RealType real = RealType::double_;  // the type every number is computed in
     Formula formula = Formula::article;  // the sphere's formula for the eye's rays
     int spp = 1;  // samples per pixel (render/samples.hpp)
+    // Count every pixel's branch into RenderStats::branches (render --stats);
+    // off, only non-finite pixels are counted there, the rest left 0.
+    bool count_branches = true;
 };
 
 // The number of threads a setting means (0: all cores).
