@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <type_traits>
 
 #include "render/article_lanes.hpp"
@@ -120,80 +121,110 @@ PROMYK_LANES_INLINE void put_intensities(const Vec3<Vector>& I_P, std::uint8_t* 
     }
 }
 
-// Row `row` of a w-pixel pane into out[0 .. w), with the sphere's formula
-// Root (render/article_lanes.hpp): x_E[j] is pane_x(j, w), given for the
-// whole pane (columns share it; computing it here would cost each pixel a
-// division). The last vector is filled past w and only its first pixels
-// are kept. CountBranches false: only the non-finite pixels are counted
-// (in a branch taken where there are any, which is rare), the other
-// branches left 0: counting them in every vector keeps its masks in
-// vectors, 6 to 10 % of the row's time (docs/bench.md).
-template <class Vector, template <class> class Root = ArticleRoot, bool CountBranches = true,
-          class Real = typename LaneTraits<Vector>::Real>
-PROMYK_LANES_INLINE RowCounts draw_row(const ArticleRow<Real>& row, const Real* x_E, int w, std::uint8_t* out) {
+// Calls f(j, n, x, kept) for each vector of row pixels j .. j + n - 1, x
+// their x_E (past n, filler) and kept the lanes within the row.
+template <class Vector, class Real, class F>
+PROMYK_LANES_INLINE void for_each_vector(const Real* x_E, int w, F&& f) {
     constexpr int width = LaneTraits<Vector>::width;
     using Mask = MaskOf<Vector>;
-    Mask miss{}, dark{}, non_finite{};  // counted lane by lane: a mask is -1 where true
-    int first_non_finite_j = -1, non_finites_seen = 0;
-    // Pixels j .. j + n - 1 of the row, x their x_E (and, past n, filler).
-    const auto take = [&](int j, int n, const LanePixel<Vector>& pixel, Mask kept) __attribute__((always_inline)) {
-        put_grey_levels(pixel.I_P, out + j, n);
-        const Mask now_non_finite = pixel.non_finite & kept;
-        if constexpr (CountBranches) {
-            miss -= pixel.miss & kept;
-            dark -= pixel.dark & kept;
-            non_finite -= now_non_finite;
-        }
-        if (any(now_non_finite)) {  // rare
-            for (int k = width - 1; k >= 0; --k) {
-                if (!lane_of(now_non_finite, k)) continue;
-                if (first_non_finite_j < 0 || j + k < first_non_finite_j) first_non_finite_j = j + k;
-                if constexpr (!CountBranches) ++non_finites_seen;
-            }
-        }
-    };
-    const auto draw = [&](int j, int n, Vector x, Mask kept) __attribute__((always_inline)) {
-        take(j, n, article_lanes<Root>(row, x), kept);
-    };
     int j = 0;
-    // Two vectors a step, computed before either is stored: two independent
-    // chains of square roots and divisions in flight at once.
-    for (; j + 2 * width <= w; j += 2 * width) {
-        Vector x0, x1;
-        std::memcpy(&x0, x_E + j, sizeof x0);
-        std::memcpy(&x1, x_E + j + width, sizeof x1);
-        const LanePixel<Vector> p0 = article_lanes<Root>(row, x0);
-        const LanePixel<Vector> p1 = article_lanes<Root>(row, x1);
-        take(j, width, p0, ~Mask{});
-        take(j + width, width, p1, ~Mask{});
-    }
     for (; j + width <= w; j += width) {
         Vector x;
         std::memcpy(&x, x_E + j, sizeof x);
-        draw(j, width, x, ~Mask{});
+        f(j, width, x, ~Mask{});
     }
     if (j < w) {
         Vector x = splat<Vector>(x_E[j]);
         Mask kept{};
         for (int k = 0; k < w - j; ++k) x[k] = x_E[j + k], kept[k] = -1;
-        draw(j, w - j, x, kept);
+        f(j, w - j, x, kept);
     }
+}
+
+// The row's non-finite pixels, counted, and the first one's column, into
+// counts: the row computed again with its branches' masks, for a row where
+// a drawn intensity was not finite (rare: kept out of the drawing loop).
+template <class Vector, template <class> class Root, class Real>
+__attribute__((noinline, cold)) void count_non_finite(const ArticleRow<Real>& row, const Real* x_E, int w,
+                                                      RowCounts& counts) {
+    constexpr int width = LaneTraits<Vector>::width;
+    int non_finites = 0;
+    for_each_vector<Vector>(x_E, w, [&](int j, int, Vector x, MaskOf<Vector> kept) {
+        const MaskOf<Vector> non_finite = article_lanes<Root>(row, x).non_finite & kept;
+        for (int k = 0; k < width; ++k) {
+            if (!lane_of(non_finite, k)) continue;
+            if (counts.first_non_finite_j < 0) counts.first_non_finite_j = j + k;
+            ++non_finites;
+        }
+    });
+    counts.branches[static_cast<int>(Branch::non_finite)] = non_finites;
+}
+
+// How draw_row is laid out for a vector type, as measured on one Intel
+// processor (docs/bench.md). For 512-bit vectors: one vector a step, and
+// the rows that may have a non-finite pixel found by one comparison of the
+// intensities. For narrower ones: two vectors a step (two independent chains
+// of square roots and divisions in flight), and the non-finite mask that
+// article_lanes computes anyway.
+template <class Vector>
+constexpr bool wide_vector = sizeof(Vector) >= 64;
+
+// Row `row` of a w-pixel pane into out[0 .. w), with the sphere's formula
+// Root (render/article_lanes.hpp): x_E[j] is pane_x(j, w), given for the
+// whole pane (columns share it; computing it here would cost each pixel a
+// division). The last vector is filled past w and only its first pixels
+// are kept. CountBranches false: the miss and dark counts are left 0; the
+// non-finite pixels are always counted.
+template <class Vector, template <class> class Root = ArticleRoot, bool CountBranches = true,
+          class Real = typename LaneTraits<Vector>::Real>
+PROMYK_LANES_INLINE RowCounts draw_row(const ArticleRow<Real>& row, const Real* x_E, int w, std::uint8_t* out) {
+    constexpr int width = LaneTraits<Vector>::width;
+    using Mask = MaskOf<Vector>;
+    Mask miss{}, dark{};  // counted lane by lane: a mask is -1 where true
+    // The lanes that are, or may be, non-finite pixels: the row's own count
+    // and first one are found apart, where there are any (rare). A
+    // non-finite pixel's intensity is NaN or infinite.
+    Mask not_finite{};
+    // Pixels j .. j + n - 1 of the row (the lanes `kept`).
+    const auto take = [&](int j, int n, const LanePixel<Vector>& pixel, Mask kept) __attribute__((always_inline)) {
+        put_grey_levels(pixel.I_P, out + j, n);
+        if constexpr (CountBranches) {
+            miss -= pixel.miss & kept;
+            dark -= pixel.dark & kept;
+        }
+        if constexpr (wide_vector<Vector>)
+            not_finite = either(not_finite, both(kept, lane_not(pixel.I_P <= std::numeric_limits<Real>::max())));
+        else
+            not_finite = either(not_finite, both(kept, pixel.non_finite));
+    };
+    int j = 0;
+    if constexpr (!wide_vector<Vector>) {
+        for (; j + 2 * width <= w; j += 2 * width) {
+            Vector x0, x1;
+            std::memcpy(&x0, x_E + j, sizeof x0);
+            std::memcpy(&x1, x_E + j + width, sizeof x1);
+            const LanePixel<Vector> p0 = article_lanes<Root>(row, x0);
+            const LanePixel<Vector> p1 = article_lanes<Root>(row, x1);
+            take(j, width, p0, ~Mask{});
+            take(j + width, width, p1, ~Mask{});
+        }
+    }
+    // The rest, one vector at a time (the last filled past w).
+    for_each_vector<Vector>(x_E + j, w - j, [&](int k, int n, Vector x, Mask kept) __attribute__((always_inline)) {
+        take(j + k, n, article_lanes<Root>(row, x), kept);
+    });
     RowCounts counts;
     counts.sphere_tests = w;  // one sphere, one primary ray a pixel
-    counts.first_non_finite_j = first_non_finite_j;
-    if constexpr (!CountBranches) {
-        counts.branches[static_cast<int>(Branch::non_finite)] = non_finites_seen;
-        return counts;
-    }
-    int missed = 0, darks = 0, non_finites = 0;
+    if (any(not_finite)) count_non_finite<Vector, Root>(row, x_E, w, counts);
+    if constexpr (!CountBranches) return counts;
+    int missed = 0, darks = 0;
     for (int k = 0; k < width; ++k) {
         missed += static_cast<int>(miss[k]);
         darks += static_cast<int>(dark[k]);
-        non_finites += static_cast<int>(non_finite[k]);
     }
+    const int non_finites = counts.branches[static_cast<int>(Branch::non_finite)];
     counts.branches[static_cast<int>(Branch::miss)] = missed;
     counts.branches[static_cast<int>(Branch::dark)] = darks;
-    counts.branches[static_cast<int>(Branch::non_finite)] = non_finites;
     counts.branches[static_cast<int>(Branch::lit)] = w - missed - darks - non_finites;
     return counts;
 }

@@ -59,8 +59,8 @@ public:
     int spp() const { return spp_; }
     // Whether row() counts every pixel's branch (RowCounts::branches), or
     // only the non-finite ones (the rest left 0): the article's drawn rows
-    // then skip their per-vector counting, 6 to 10 % of their time on one
-    // Intel processor (docs/bench.md). On by default; render --stats needs it.
+    // then skip their per-vector counting (its cost: docs/bench.md). On by
+    // default; render --stats needs it.
     bool counts_branches() const { return count_branches_; }
     void set_branch_counting(bool on) { count_branches_ = on; }
 

@@ -76,7 +76,8 @@ void render(const Scene& scene, const RenderSettings& settings, const PixelSelec
 
 // The same with a kernel made by the caller (a map, render/maps.hpp, made
 // for this scene): its rows are what the sink receives; settings.real,
-// formula and spp are the kernel's, only w and threads are read.
+// formula, spp and count_branches are the kernel's (Kernel::counts_branches,
+// set by its maker: maps always count), only w and threads are read.
 void render(const Kernel& kernel, const Scene& scene, const RenderSettings& settings, const PixelSelection& traced,
             RenderSink& sink, RenderStats* stats = nullptr);
 
