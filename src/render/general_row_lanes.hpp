@@ -98,6 +98,24 @@ PROMYK_LANES_INLINE Vector columns(const double* x_E, int j, int n, MaskOf<Vecto
     return x;
 }
 
+// The column of the row's first non-finite pixel, the row computed again
+// (rare: only a row that has one; its work is not counted twice).
+template <class Sw, bool Rgb, class Vector>
+__attribute__((noinline, cold)) int first_non_finite(const GeneralRow<Rgb>& row, const double* x_E, int w) {
+    constexpr int width = LaneTraits<Vector>::width;
+    LaneWork<Vector> work;
+    const RowLanes<Sw, Rgb, Vector> pixels_at{row};
+    for (int j = 0; j < w; j += width) {
+        const int n = w - j < width ? w - j : width;
+        MaskOf<Vector> kept;
+        const Vector x = columns<Vector>(x_E, j, n, kept);
+        const MaskOf<Vector> non_finite = pixels_at(x, kept, work).non_finite & kept;
+        for (int k = 0; k < width; ++k)
+            if (lane_of(non_finite, k)) return j + k;
+    }
+    return -1;
+}
+
 template <class Sw, bool Rgb, class Vector>
 PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, const double* x_E, int w,
                                               std::uint8_t* out) {
@@ -105,19 +123,16 @@ PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, const
     using Mask = MaskOf<Vector>;
     Mask miss{}, non_finite{}, lit{}, shadowed{};  // counted lane by lane: a mask is -1 where true
     LaneWork<Vector> work;
-    int first_non_finite_j = -1;
-    // Pixels j .. j + n - 1 of the row (and, past n, filler not kept).
+    // Pixels j .. j + n - 1 of the row (and, past n, filler not kept). The
+    // first non-finite pixel is looked for after the row, in a row that has
+    // one: a branch on it in every vector cost more than the counting.
     const auto take = [&](int j, int n, const GeneralLanePixel<Vector, Rgb>& pixel, Mask kept)
                           __attribute__((always_inline)) {
         put_intensities(pixel.I_P, out, j, n);
         miss -= pixel.miss & kept;
         lit -= pixel.lit & kept;
         shadowed -= pixel.shadowed & kept;
-        const Mask now_non_finite = pixel.non_finite & kept;
-        non_finite -= now_non_finite;
-        if (first_non_finite_j < 0 && any(now_non_finite))  // rare
-            for (int k = width - 1; k >= 0; --k)
-                if (lane_of(now_non_finite, k)) first_non_finite_j = j + k;
+        non_finite -= pixel.non_finite & kept;
     };
     const Mask all_kept = lane_not(Mask{});
     const RowLanes<Sw, Rgb, Vector> pixels_at{row};
@@ -152,7 +167,7 @@ PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, const
     counts.branches[static_cast<int>(Branch::shadowed)] = shadoweds;
     counts.branches[static_cast<int>(Branch::non_finite)] = non_finites;
     counts.branches[static_cast<int>(Branch::dark)] = w - misses - lits - shadoweds - non_finites;
-    counts.first_non_finite_j = first_non_finite_j;
+    if (non_finites > 0) counts.first_non_finite_j = first_non_finite<Sw, Rgb, Vector>(row, x_E, w);
     count_work<Sw::many>(counts, work, row, w);
     return counts;
 }
