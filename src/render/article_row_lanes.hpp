@@ -161,13 +161,13 @@ __attribute__((noinline, cold)) void count_non_finite(const ArticleRow<Real>& ro
 }
 
 // How draw_row is laid out for a vector type, as measured on one Intel
-// processor (docs/bench.md). For 512-bit vectors: one vector a step, and
-// the rows that may have a non-finite pixel found by one comparison of the
-// intensities. For narrower ones: two vectors a step (two independent chains
-// of square roots and divisions in flight), and the non-finite mask that
-// article_lanes computes anyway.
+// processor (docs/bench.md). For 8 doubles: one vector a step, and the
+// rows that may have a non-finite pixel found by one comparison of the
+// intensities. For the others (16 floats included): two vectors a step (two
+// independent chains of square roots and divisions in flight), and the
+// non-finite mask that article_lanes computes anyway.
 template <class Vector>
-constexpr bool wide_vector = sizeof(Vector) >= 64;
+constexpr bool wide_vector = sizeof(Vector) >= 64 && std::is_same_v<typename LaneTraits<Vector>::Real, double>;
 
 // Row `row` of a w-pixel pane into out[0 .. w), with the sphere's formula
 // Root (render/article_lanes.hpp): x_E[j] is pane_x(j, w), given for the
