@@ -27,6 +27,7 @@
 #include "image/quantize.hpp"
 #include "render/pane.hpp"
 #include "render/renderer.hpp"
+#include "render/skipping.hpp"
 #include "render/stages.hpp"
 #include "render/tracer.hpp"
 #include "render/world.hpp"
@@ -230,6 +231,71 @@ TEST_CASE("Drawn article rows: every instruction-set path this processor has, ea
             }
         }
     }
+}
+
+// Without background skipping (bench speed's second threaded run, and any
+// row whose silhouette proves nothing) a row is mostly whole vectors of
+// misses, which the drawn row stores as the background's bytes: every pixel
+// and count against the traced path, counting and not, on every path.
+TEST_CASE("Drawn article rows without background skipping: every path, bit-identical to the traced path",
+          "[lanes][isa]") {
+    struct SkippingOff {
+        bool before = background_skipping();
+        SkippingOff() { set_background_skipping(false); }
+        ~SkippingOff() { set_background_skipping(before); }
+    } off;
+    std::vector<NamedWorld> worlds = article_worlds();
+    int s = 0;
+    for (const ArticleWorld<double>& world : random_worlds(12)) worlds.push_back({"random " + std::to_string(s++), world, 0});
+    long long whole_vectors_missed = 0, non_finite = 0;
+    for (const Isa isa : supported_isas()) {
+        PathForced forced(isa);
+        for (const Formula formula : lane_formulas) {
+            for (const NamedWorld& named : worlds) {
+                for (const int w : {67, 128}) {
+                    INFO(isa_name(isa) << ", " << formula_name(formula) << ", " << named.name << ", w = " << w);
+                    std::vector<std::uint8_t> grey(static_cast<std::size_t>(w)), uncounted(grey.size());
+                    int mismatches = 0, count_mismatches = 0;
+                    for (int i = 0; i < w; ++i) {
+                        const RowCounts drawn = render_row(named.world, w, i, grey.data(), formula);
+                        const RowCounts quiet = render_row(named.world, w, i, uncounted.data(), formula, false);
+                        RowCounts traced;
+                        for (int j = 0; j < w; ++j) {
+                            const PixelResult<double> pixel =
+                                traced_ray(named.world, pane_point(i, j, w, named.world.z_E), formula);
+                            ++traced.branches[static_cast<int>(pixel.branch)];
+                            if (pixel.branch == Branch::non_finite && traced.first_non_finite_j < 0)
+                                traced.first_non_finite_j = j;
+                            mismatches += grey[static_cast<std::size_t>(j)] != to_byte(pixel.I_P);
+                        }
+                        // Eight columns in a row that all miss: a whole vector on every path.
+                        for (int j = 0; j + 8 <= w; j += 8) {
+                            bool all_missed = true;
+                            for (int k = j; k < j + 8; ++k)
+                                all_missed = all_missed && traced_ray(named.world, pane_point(i, k, w, named.world.z_E),
+                                                                      formula).branch == Branch::miss;
+                            whole_vectors_missed += all_missed;
+                        }
+                        for (int b = 0; b < branch_count; ++b)
+                            count_mismatches += drawn.branches[b] != traced.branches[b];
+                        count_mismatches += drawn.first_non_finite_j != traced.first_non_finite_j;
+                        count_mismatches += drawn.skipped != 0 || drawn.sphere_tests != w;
+                        const int nf = static_cast<int>(Branch::non_finite);
+                        count_mismatches += quiet.branches[nf] != traced.branches[nf];
+                        count_mismatches += quiet.first_non_finite_j != traced.first_non_finite_j;
+                        mismatches += uncounted != grey;
+                        non_finite += traced.branches[nf];
+                    }
+                    CHECK(mismatches == 0);
+                    CHECK(count_mismatches == 0);
+                }
+            }
+        }
+    }
+    // The comparison met what it is for: whole vectors of misses, and
+    // non-finite pixels among them.
+    CHECK(whole_vectors_missed > 10000);
+    CHECK(non_finite > 100);
 }
 
 TEST_CASE("Instruction-set paths: names, and the widest this processor has is the default", "[isa]") {

@@ -230,6 +230,7 @@ template <class Lane>
 struct LanePixel {
     Lane I_P;
     MaskOf<Lane> miss, dark, non_finite;  // lit: none of these
+    bool background = false;  // every lane missed the sphere at Δ (I_P the background)
 };
 
 // Pixels E = (x_E, y_E, z_E), one a lane, of the row, with the formula Root.
@@ -256,7 +257,10 @@ PROMYK_LANES_INLINE LanePixel<Lane> article_lanes(const Row& row, Lane x_E) {
     pixel.I_P = splat<Lane>(world.background);
     pixel.dark = pixel.non_finite = Mask{};  // none yet
     if constexpr (EarlyOuts)
-        if (all(pixel.miss)) return pixel;  // the background: nothing to shade
+        if (all(pixel.miss)) {  // the background: nothing to shade
+            pixel.background = true;
+            return pixel;
+        }
 
     const Lane t = root.t(pixel.miss);
 
