@@ -160,6 +160,27 @@ std::vector<std::uint8_t> literal_grey(const ArticleWorld<double>& world, int w)
     return grey;
 }
 
+// Row i of the w x w pane through the traced path, pixel by pixel: each
+// pixel's grey level (to_byte of its intensity, read as a double) and
+// branch, and the row's counts as a drawn row gives them.
+struct TracedRow {
+    std::vector<std::uint8_t> grey;
+    std::vector<Branch> branch;
+    RowCounts counts;
+};
+template <class Real>
+TracedRow traced_row(const ArticleWorld<Real>& world, int w, int i, Formula formula) {
+    TracedRow row;
+    for (int j = 0; j < w; ++j) {
+        const PixelResult<Real> pixel = traced_ray(world, pane_point(i, j, w, world.z_E), formula);
+        row.grey.push_back(to_byte(static_cast<double>(pixel.I_P)));
+        row.branch.push_back(pixel.branch);
+        ++row.counts.branches[static_cast<int>(pixel.branch)];
+        if (pixel.branch == Branch::non_finite && row.counts.first_non_finite_j < 0) row.counts.first_non_finite_j = j;
+    }
+    return row;
+}
+
 }  // namespace
 
 // Every path this processor has draws each pixel as to_byte of the traced
@@ -198,15 +219,11 @@ TEST_CASE("Drawn article rows: every instruction-set path this processor has, ea
                     long long skipped = 0;
                     for (int i = 0; i < w; ++i) {
                         const RowCounts drawn = render_row(named.world, w, i, grey.data(), formula);
-                        RowCounts traced;
+                        const TracedRow traced_pixels = traced_row(named.world, w, i, formula);
+                        const RowCounts& traced = traced_pixels.counts;
                         for (int j = 0; j < w; ++j) {
-                            const PixelResult<double> pixel =
-                                traced_ray(named.world, pane_point(i, j, w, named.world.z_E), formula);
-                            ++traced.branches[static_cast<int>(pixel.branch)];
-                            if (pixel.branch == Branch::non_finite && traced.first_non_finite_j < 0)
-                                traced.first_non_finite_j = j;
                             const std::uint8_t drawn_grey = grey[static_cast<std::size_t>(j)];
-                            mismatches += drawn_grey != to_byte(pixel.I_P);
+                            mismatches += drawn_grey != traced_pixels.grey[static_cast<std::size_t>(j)];
                             if (literal_too)
                                 literal_mismatches += drawn_grey != literal[static_cast<std::size_t>(i) * w + j];
                         }
@@ -259,21 +276,14 @@ TEST_CASE("Drawn article rows without background skipping: every path, bit-ident
                     for (int i = 0; i < w; ++i) {
                         const RowCounts drawn = render_row(named.world, w, i, grey.data(), formula);
                         const RowCounts quiet = render_row(named.world, w, i, uncounted.data(), formula, false);
-                        RowCounts traced;
-                        for (int j = 0; j < w; ++j) {
-                            const PixelResult<double> pixel =
-                                traced_ray(named.world, pane_point(i, j, w, named.world.z_E), formula);
-                            ++traced.branches[static_cast<int>(pixel.branch)];
-                            if (pixel.branch == Branch::non_finite && traced.first_non_finite_j < 0)
-                                traced.first_non_finite_j = j;
-                            mismatches += grey[static_cast<std::size_t>(j)] != to_byte(pixel.I_P);
-                        }
+                        const TracedRow traced_pixels = traced_row(named.world, w, i, formula);
+                        const RowCounts& traced = traced_pixels.counts;
+                        for (std::size_t j = 0; j < grey.size(); ++j) mismatches += grey[j] != traced_pixels.grey[j];
                         // Eight columns in a row that all miss: a whole vector on every path.
                         for (int j = 0; j + 8 <= w; j += 8) {
                             bool all_missed = true;
                             for (int k = j; k < j + 8; ++k)
-                                all_missed = all_missed && traced_ray(named.world, pane_point(i, k, w, named.world.z_E),
-                                                                      formula).branch == Branch::miss;
+                                all_missed = all_missed && traced_pixels.branch[static_cast<std::size_t>(k)] == Branch::miss;
                             whole_vectors_missed += all_missed;
                         }
                         for (int b = 0; b < branch_count; ++b)
@@ -334,15 +344,10 @@ TEST_CASE("Drawn float rows: every instruction-set path, each formula, bit-ident
                     for (int i = 0; i < w; ++i) {
                         RowCounts drawn;
                         rows_in_lanes += float_row_in_lanes(world, w, i, grey.data(), formula, drawn);
-                        RowCounts traced;
+                        const TracedRow traced_pixels = traced_row(world, w, i, formula);
+                        RowCounts traced = traced_pixels.counts;
                         traced.sphere_tests = w;
-                        for (int j = 0; j < w; ++j) {
-                            const PixelResult<float> pixel = traced_ray(world, pane_point(i, j, w, world.z_E), formula);
-                            ++traced.branches[static_cast<int>(pixel.branch)];
-                            if (pixel.branch == Branch::non_finite && traced.first_non_finite_j < 0)
-                                traced.first_non_finite_j = j;
-                            mismatches += grey[static_cast<std::size_t>(j)] != to_byte(static_cast<double>(pixel.I_P));
-                        }
+                        for (std::size_t j = 0; j < grey.size(); ++j) mismatches += grey[j] != traced_pixels.grey[j];
                         for (int b = 0; b < branch_count; ++b)
                             count_mismatches += drawn.branches[b] != traced.branches[b];
                         count_mismatches += drawn.first_non_finite_j != traced.first_non_finite_j;
