@@ -9,6 +9,8 @@
 #include <limits>
 #include <vector>
 
+#include "geometry/formula.hpp"
+#include "isa_forced.hpp"
 #include "render/isa.hpp"
 #include "render/renderer.hpp"
 #include "render/trace_pixel.hpp"
@@ -178,14 +180,13 @@ struct BytesSink final : RenderSink {
 TEST_CASE("render without branch counting: the same image, the non-finite pixels still counted", "[render-stats][isa]") {
     Scene overflowing = article_scene();
     overflowing.lights.front().I = std::numeric_limits<double>::max();  // I·D overflows where D > 1
-    const Isa in_use = article_isa();
     for (const Isa isa : supported_isas()) {
-        set_article_isa(isa);
+        PathForced forced(isa);
         for (const Scene& scene : {article_scene(), overflowing})
             for (const Formula formula : {Formula::article, Formula::stable, Formula::geometric})
                 for (const int w : {8, 61, 200}) {
-                    INFO("isa " << static_cast<int>(isa) << ", I = " << scene.lights.front().I << ", formula "
-                                << static_cast<int>(formula) << ", w = " << w);
+                    INFO(isa_name(isa) << ", I = " << scene.lights.front().I << ", " << formula_name(formula)
+                                       << ", w = " << w);
                     RenderSettings counted{w, 1, RealType::double_, formula, 1, true};
                     RenderSettings uncounted = counted;
                     uncounted.count_branches = false;
@@ -205,5 +206,4 @@ TEST_CASE("render without branch counting: the same image, the non-finite pixels
                     if (scene.lights.front().I > 1) CHECK(with_stats.count(Branch::non_finite) > 0);
                 }
     }
-    set_article_isa(in_use);
 }
