@@ -233,6 +233,16 @@ struct LanePixel {
     bool background = false;  // every lane missed the sphere at Δ (I_P the background)
 };
 
+// The first half of a pixel's steps: where its ray meets the sphere, t, or
+// that it misses (pixel.miss; the background's I_P until shaded). Shading
+// (article_shade) needs t and E alone, so a row can find the next vector's
+// t while it shades this one (render/article_row_lanes.hpp's draw_row).
+template <class Lane>
+struct LaneHit {
+    Lane x_E, t{};  // t: 0 where pixel.background
+    LanePixel<Lane> pixel;
+};
+
 // Pixels E = (x_E, y_E, z_E), one a lane, of the row, with the formula Root.
 // The row is an ArticleRow (y_E one number) or any type with its members,
 // where y_E, yy and ySy may be lanes too (render/sample_lanes.hpp: each lane
@@ -245,10 +255,12 @@ struct LanePixel {
 // than they save (bench accuracy --spp 16: 23.4-24.1 -> 22.4-23.1 x spp 1).
 template <template <class> class Root = ArticleRoot, bool EarlyOuts = true, class Lane, class Row,
           class Real = typename LaneTraits<Lane>::Real>
-PROMYK_LANES_INLINE LanePixel<Lane> article_lanes(const Row& row, Lane x_E) {
+PROMYK_LANES_INLINE LaneHit<Lane> article_hit(const Row& row, Lane x_E) {
     const ArticleWorld<Real>& world = row.world;
     using Mask = MaskOf<Lane>;
-    LanePixel<Lane> pixel;
+    LaneHit<Lane> hit;
+    hit.x_E = x_E;
+    LanePixel<Lane>& pixel = hit.pixel;
     // Compute the quadratic's coefficients, named as in the program.
     const Lane EE = (x_E * x_E + row.yy) + row.zz;  // |E|^2
     const Lane C = (x_E * world.S.x + row.ySy) + row.zSz;
@@ -259,10 +271,21 @@ PROMYK_LANES_INLINE LanePixel<Lane> article_lanes(const Row& row, Lane x_E) {
     if constexpr (EarlyOuts)
         if (all(pixel.miss)) {  // the background: nothing to shade
             pixel.background = true;
-            return pixel;
+            return hit;
         }
+    hit.t = root.t(pixel.miss);
+    return hit;
+}
 
-    const Lane t = root.t(pixel.miss);
+// The second half: P, N, K, D and the intensity of the pixels `hit` met.
+template <bool EarlyOuts = true, class Lane, class Row, class Real = typename LaneTraits<Lane>::Real>
+PROMYK_LANES_INLINE LanePixel<Lane> article_shade(const Row& row, const LaneHit<Lane>& hit) {
+    const ArticleWorld<Real>& world = row.world;
+    using Mask = MaskOf<Lane>;
+    LanePixel<Lane> pixel = hit.pixel;
+    if constexpr (EarlyOuts)
+        if (pixel.background) return pixel;
+    const Lane t = hit.t, x_E = hit.x_E;
 
     // Compute P = tE, N = P - S, K = L - P.
     const Lane P_x = t * x_E, P_y = t * row.y_E, P_z = t * world.z_E;
@@ -272,9 +295,9 @@ PROMYK_LANES_INLINE LanePixel<Lane> article_lanes(const Row& row, Lane x_E) {
     const Lane D = (N_x * K_x + N_y * K_y) + N_z * K_z;   // N.K
 
     // Non-finite |K|^2 or D (x * 0 is 0 only for a finite x); then dark.
-    const Mask hit = lane_not(pixel.miss);
-    const Mask undecided = both(hit, lane_not((KK * Real(0) + D * Real(0)) == Real(0)));
-    const Mask decided = both(hit, lane_not(undecided));
+    const Mask hit_lanes = lane_not(pixel.miss);
+    const Mask undecided = both(hit_lanes, lane_not((KK * Real(0) + D * Real(0)) == Real(0)));
+    const Mask decided = both(hit_lanes, lane_not(undecided));
     pixel.dark = both(decided, D <= Real(0));
     const Mask lit = both(decided, lane_not(pixel.dark));
     // No lane lit (each a miss, dark or undecided: a fifth of the article's
@@ -289,6 +312,12 @@ PROMYK_LANES_INLINE LanePixel<Lane> article_lanes(const Row& row, Lane x_E) {
                        select(undecided, splat<Lane>(std::numeric_limits<Real>::quiet_NaN()),
                               select(pixel.dark, splat<Lane>(Real(0)), I_P)));
     return pixel;
+}
+
+// Both halves, one after the other.
+template <template <class> class Root = ArticleRoot, bool EarlyOuts = true, class Lane, class Row>
+PROMYK_LANES_INLINE LanePixel<Lane> article_lanes(const Row& row, Lane x_E) {
+    return article_shade<EarlyOuts>(row, article_hit<Root, EarlyOuts>(row, x_E));
 }
 
 }  // namespace PROMYK_LANES_ISA

@@ -160,12 +160,10 @@ __attribute__((noinline, cold)) void count_non_finite(const ArticleRow<Real>& ro
     counts.branches[static_cast<int>(Branch::non_finite)] = non_finites;
 }
 
-// How draw_row is laid out for a vector type, as measured on one Intel
-// processor (docs/bench.md). For 8 doubles: one vector a step, and the
-// rows that may have a non-finite pixel found by one comparison of the
-// intensities. For the others (16 floats included): two vectors a step (two
-// independent chains of square roots and divisions in flight), and the
-// non-finite mask that article_lanes computes anyway.
+// How draw_row finds a vector's non-finite pixels, as measured on one Intel
+// processor (docs/bench.md): for 8 doubles, by one comparison of the
+// intensities; for the others (16 floats included), by the non-finite
+// mask that article_shade computes anyway.
 template <class Vector>
 constexpr bool wide_vector = sizeof(Vector) >= 64 && std::is_same_v<typename LaneTraits<Vector>::Real, double>;
 
@@ -208,21 +206,29 @@ PROMYK_LANES_INLINE RowCounts draw_row(const ArticleRow<Real>& row, const Real* 
         else
             not_finite = either(not_finite, both(kept, pixel.non_finite));
     };
+    // A vector's hit (t: a square root and a division) is found while the
+    // one before it is shaded (another square root and division): the two
+    // chains are independent, so the processor keeps both units busy where
+    // one vector's steps would wait on each other (docs/bench.md: 6 % on
+    // AVX-512, 17 to 22 % on AVX2 and SSE2 against whole vectors in turn).
     int j = 0;
-    if constexpr (!wide_vector<Vector>) {
-        for (; j + 2 * width <= w; j += 2 * width) {
-            Vector x0, x1;
-            std::memcpy(&x0, x_E + j, sizeof x0);
-            std::memcpy(&x1, x_E + j + width, sizeof x1);
-            const LanePixel<Vector> p0 = article_lanes<Root>(row, x0);
-            const LanePixel<Vector> p1 = article_lanes<Root>(row, x1);
-            take(j, width, p0, ~Mask{});
-            take(j + width, width, p1, ~Mask{});
+    if (w >= width) {
+        Vector x;
+        std::memcpy(&x, x_E, sizeof x);
+        LaneHit<Vector> ahead = article_hit<Root>(row, x);
+        for (; j + 2 * width <= w; j += width) {
+            std::memcpy(&x, x_E + j + width, sizeof x);
+            const LaneHit<Vector> next = article_hit<Root>(row, x);
+            take(j, width, article_shade(row, ahead), ~Mask{});
+            ahead = next;
         }
+        take(j, width, article_shade(row, ahead), ~Mask{});
+        j += width;
     }
-    // The rest, one vector at a time (the last filled past w).
-    for_each_vector<Vector>(x_E + j, w - j, [&](int k, int n, Vector x, Mask kept) __attribute__((always_inline)) {
-        take(j + k, n, article_lanes<Root>(row, x), kept);
+    // The rest, fewer than a vector's pixels (filled past w).
+    for_each_vector<Vector>(x_E + j, w - j, [&](int k, int n, Vector x_rest, Mask kept)
+                                                __attribute__((always_inline)) {
+        take(j + k, n, article_lanes<Root>(row, x_rest), kept);
     });
     RowCounts counts;
     counts.sphere_tests = w;  // one sphere, one primary ray a pixel
