@@ -165,7 +165,8 @@ __attribute__((noinline, cold)) void count_non_finite(const ArticleRow<Real>& ro
 // intensities; for the others (16 floats included), by the non-finite
 // mask that article_shade computes anyway.
 template <class Vector>
-constexpr bool wide_vector = sizeof(Vector) >= 64 && std::is_same_v<typename LaneTraits<Vector>::Real, double>;
+constexpr bool intensity_tells_finite =
+    sizeof(Vector) >= 64 && std::is_same_v<typename LaneTraits<Vector>::Real, double>;
 
 // Row `row` of a w-pixel pane into out[0 .. w), with the sphere's formula
 // Root (render/article_lanes.hpp): x_E[j] is pane_x(j, w), given for the
@@ -201,7 +202,7 @@ PROMYK_LANES_INLINE RowCounts draw_row(const ArticleRow<Real>& row, const Real* 
             miss -= pixel.miss & kept;
             dark -= pixel.dark & kept;
         }
-        if constexpr (wide_vector<Vector>)
+        if constexpr (intensity_tells_finite<Vector>)
             not_finite = either(not_finite, both(kept, lane_not(pixel.I_P <= std::numeric_limits<Real>::max())));
         else
             not_finite = either(not_finite, both(kept, pixel.non_finite));

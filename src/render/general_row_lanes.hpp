@@ -64,6 +64,13 @@ struct RowLanes<Sw, Rgb, Vector, true> {
                                                                 LaneWork<Vector>& work) const {
         return one_sphere_lanes<Sw>(one, x_E, kept, work);
     }
+    // The two halves, for a row that finds one vector's hits while it
+    // shades the one before.
+    PROMYK_LANES_INLINE OneSphereHit<Vector, Rgb> hit(Vector x_E) const { return one_sphere_hit(one, x_E); }
+    PROMYK_LANES_INLINE GeneralLanePixel<Vector, Rgb> shade(const OneSphereHit<Vector, Rgb>& h, MaskOf<Vector> kept,
+                                                           LaneWork<Vector>& work) const {
+        return one_sphere_shade<Sw>(one, h, kept, work);
+    }
 };
 
 // A row's rays and tests beyond its branches: the shadow rays' and their
@@ -137,16 +144,35 @@ PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, const
     const Mask all_kept = lane_not(Mask{});
     const RowLanes<Sw, Rgb, Vector> pixels_at{row};
     int j = 0;
-    // Two vectors a step, computed before either is stored: two independent
-    // chains of square roots and divisions in flight at once.
-    for (; j + 2 * width <= w; j += 2 * width) {
-        Vector x0, x1;
-        std::memcpy(&x0, x_E + j, sizeof x0);
-        std::memcpy(&x1, x_E + j + width, sizeof x1);
-        const GeneralLanePixel<Vector, Rgb> p0 = pixels_at(x0, all_kept, work);
-        const GeneralLanePixel<Vector, Rgb> p1 = pixels_at(x1, all_kept, work);
-        take(j, width, p0, all_kept);
-        take(j + width, width, p1, all_kept);
+    if constexpr (Sw::one) {
+        // One sphere: the next vector's hits found while this one is shaded,
+        // two independent chains of square roots and divisions interleaved
+        // (render/article_row_lanes.hpp's draw_row does the same).
+        if (w >= width) {
+            Vector x;
+            std::memcpy(&x, x_E, sizeof x);
+            auto ahead = pixels_at.hit(x);
+            for (; j + 2 * width <= w; j += width) {
+                std::memcpy(&x, x_E + j + width, sizeof x);
+                const auto next = pixels_at.hit(x);
+                take(j, width, pixels_at.shade(ahead, all_kept, work), all_kept);
+                ahead = next;
+            }
+            take(j, width, pixels_at.shade(ahead, all_kept, work), all_kept);
+            j += width;
+        }
+    } else {
+        // Two vectors a step, computed before either is stored: two
+        // independent chains of square roots and divisions in flight at once.
+        for (; j + 2 * width <= w; j += 2 * width) {
+            Vector x0, x1;
+            std::memcpy(&x0, x_E + j, sizeof x0);
+            std::memcpy(&x1, x_E + j + width, sizeof x1);
+            const GeneralLanePixel<Vector, Rgb> p0 = pixels_at(x0, all_kept, work);
+            const GeneralLanePixel<Vector, Rgb> p1 = pixels_at(x1, all_kept, work);
+            take(j, width, p0, all_kept);
+            take(j + width, width, p1, all_kept);
+        }
     }
     for (; j < w; j += width) {
         const int n = w - j < width ? w - j : width;

@@ -76,14 +76,25 @@ PROMYK_LANES_INLINE bool plain_surface_and_light(const GeneralRow<Rgb>& row) {
     return surface.k_d == 1.0 && is_one(surface.m) && is_one(row.lights[0].c);
 }
 
-// Pixels E = (x_E, y_E, z_E), one a lane; `kept`: the lanes whose work counts.
-template <class Sw, bool Rgb, class Lane>
-PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> one_sphere_lanes(const OneSphereRow<Lane, Rgb>& row, Lane x_E,
-                                                                MaskOf<Lane> kept, LaneWork<Lane>& work) {
-    using Mask = MaskOf<Lane>;
-    using Intensity = LaneIntensity<Lane, Rgb>;
-    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+// The first half of one_sphere_lanes: where each ray meets the sphere (t),
+// from outside or inside, or that it misses; shading needs this and E
+// alone, so a row finds the next vector's hit while it shades this one
+// (render/general_row_lanes.hpp), as the article's rows do.
+template <class Lane, bool Rgb>
+struct OneSphereHit {
+    Lane x_E, t{};  // t: 0 where background
+    MaskOf<Lane> inside{}, alive{};
     GeneralLanePixel<Lane, Rgb> pixel;
+    bool background = false;  // every lane missed the sphere at delta
+};
+
+// Pixels E = (x_E, y_E, z_E), one a lane: their hits.
+template <bool Rgb, class Lane>
+PROMYK_LANES_INLINE OneSphereHit<Lane, Rgb> one_sphere_hit(const OneSphereRow<Lane, Rgb>& row, Lane x_E) {
+    using Mask = MaskOf<Lane>;
+    OneSphereHit<Lane, Rgb> h;
+    h.x_E = x_E;
+    GeneralLanePixel<Lane, Rgb>& pixel = h.pixel;
     pixel.I_P = row.background;
     pixel.non_finite = pixel.lit = pixel.shadowed = Mask{};
 
@@ -92,7 +103,10 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> one_sphere_lanes(const OneSphere
     const Lane C = (x_E * row.S_x + row.ySy) + row.zSz;
     const Lane delta = C * C - EE * row.SS_rr;
     pixel.miss = both(delta <= 0.0, delta >= std::numeric_limits<double>::lowest());
-    if (all(pixel.miss)) return pixel;  // the background: nothing to shade
+    if (all(pixel.miss)) {  // the background: nothing to shade
+        h.background = true;
+        return h;
+    }
     const Mask hit = lane_not(pixel.miss);
     // The nearer root; a NaN or infinite one passes on (non-finite).
     Lane t = (C - lane_sqrt(delta)) / EE;
@@ -108,9 +122,26 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> one_sphere_lanes(const OneSphere
     const Mask finite = finite_lanes(t);
     pixel.non_finite = both(found, lane_not(finite));
     pixel.miss = lane_not(found);
-    Mask alive = both(found, finite);  // shaded on (no early return: the
+    h.alive = both(found, finite);  // shaded on (no early return: the
     // lanes that are not are as rare as in the article's kernel, and the
     // selects below leave their intensities as they are)
+    h.t = t, h.inside = inside;
+    return h;
+}
+
+// The second half: the pixels' intensities; `kept`: the lanes whose work counts.
+template <class Sw, bool Rgb, class Lane>
+PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> one_sphere_shade(const OneSphereRow<Lane, Rgb>& row,
+                                                                const OneSphereHit<Lane, Rgb>& h, MaskOf<Lane> kept,
+                                                                LaneWork<Lane>& work) {
+    using Mask = MaskOf<Lane>;
+    using Intensity = LaneIntensity<Lane, Rgb>;
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    GeneralLanePixel<Lane, Rgb> pixel = h.pixel;
+    if (h.background) return pixel;
+    const Lane t = h.t, x_E = h.x_E;
+    const Mask inside = h.inside;
+    Mask alive = h.alive;
 
     // P = tE; N = P - S, turned towards the eye seen from inside; K = L - P.
     const Lane P_x = t * x_E, P_y = t * row.y_E, P_z = t * row.z_E;
@@ -168,6 +199,13 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> one_sphere_lanes(const OneSphere
     const Mask stopped = both(lane_not(alive), pixel.non_finite);  // NaN
     pixel.I_P = pick(alive, I_P, pick(stopped, every_channel<Lane, Rgb>(nan), pixel.I_P));
     return pixel;
+}
+
+// Both halves, one after the other.
+template <class Sw, bool Rgb, class Lane>
+PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> one_sphere_lanes(const OneSphereRow<Lane, Rgb>& row, Lane x_E,
+                                                                MaskOf<Lane> kept, LaneWork<Lane>& work) {
+    return one_sphere_shade<Sw>(row, one_sphere_hit(row, x_E), kept, work);
 }
 
 }  // namespace PROMYK_LANES_ISA
