@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -202,4 +203,40 @@ TEST_CASE("trace text: the closing note's 3.2 and 3.2² are the trace's own type
         CHECK_THAT(pl, Catch::Contains(std::string("tę samą liczbę ") + expected.type + "."));
         CHECK_THAT(pl, Catch::Contains("więc 3,2² daje " + local_number_text(expected.square, Language::pl)));
     }
+}
+
+TEST_CASE("trace text: the closing note's example is a number of the trace's own scene", "[trace-text]") {
+    // Expected values computed apart from promyk (Python's decimal, 200
+    // digits, and struct for float): 1.1 and 0.4 as double and float hold
+    // them, their first 20 significant digits, and their squares rounded in
+    // the type, as the shortest decimal that reads back to the same value.
+    Scene scene = article_scene();
+    scene.spheres[0].S = {0, 0, 4};
+    scene.spheres[0].r = 1.1;  // z_E = 2 and S come first, and are binary fractions
+    std::string en = flat(text_of(trace_pixel(scene, 8, 3, 4), Language::en));
+    CHECK_THAT(en, Catch::Contains("1.1 is stored as 1.1000000000000000888…, so 1.1² gives 1.2100000000000002, "
+                                   "not 1.21."));
+    const std::string pl = flat(text_of(trace_pixel(scene, 8, 3, 4), Language::pl));
+    CHECK_THAT(pl, Catch::Contains("1,1 jest przechowywane jako 1,1000000000000000888…, więc 1,1² daje "
+                                   "1,2100000000000002, a nie 1,21."));
+    // A negative number is taken by its magnitude, in float as float holds it.
+    scene.spheres[0].r = 1;
+    scene.lights[0].L = {-0.4, 1, 1};
+    en = flat(text_of(trace_pixel(scene, 8, 3, 4, RealType::float_), Language::en));
+    CHECK_THAT(en, Catch::Contains("0.4 is stored as 0.40000000596046447753…, so 0.4² gives 0.16000001, not 0.16."));
+    // 0.3 is no binary fraction, but 0.3² prints as 0.09 in double: it says
+    // nothing, and with every other number a binary fraction the note falls
+    // back to the article's 3.2.
+    scene.lights[0].L = {0.3, 1, 1};
+    en = flat(text_of(trace_pixel(scene, 8, 3, 4), Language::en));
+    CHECK_THAT(en, Catch::Contains("3.2 is stored as 3.2000000000000001776…, so 3.2² gives 10.240000000000002, "
+                                   "not 10.24."));
+    CHECK(type_example("double", {0.3}).number == "3.2");
+    CHECK(type_example("double", {0.001, 20000.5, 1.2345678}).number == "3.2");  // too small, too big, too long
+    const TypeExample small = type_example("double", {std::nan(""), 0.001, -0.07});
+    CHECK(small.number == "0.07");
+    CHECK(small.stored == "0.070000000000000006661");  // Python: Decimal(0.07), 20 significant digits
+    CHECK(small.cut);
+    CHECK(small.square == "0.004900000000000001");      // Python: repr(0.07 * 0.07)
+    CHECK(small.exact_square == "0.0049");
 }

@@ -22,6 +22,21 @@ namespace promyk {
 
 namespace {
 
+// The scene's numbers in the header's order (each object's and light's in
+// turn when there are several), for the closing note's example.
+std::vector<double> given_numbers(const TraceHeader& header) {
+    std::vector<double> numbers;
+    const auto add = [&](const std::vector<GivenValue>& values) {
+        for (const GivenValue& given : values) {
+            if (const double* x = std::get_if<double>(&given.value)) numbers.push_back(*x);
+            if (const Vec3d* v = std::get_if<Vec3d>(&given.value)) numbers.insert(numbers.end(), {v->x, v->y, v->z});
+        }
+    };
+    add(header.given);
+    for (const GivenGroup& group : header.given_groups) add(group.values);
+    return numbers;
+}
+
 constexpr std::size_t columns = 80;
 
 std::string pad(const std::string& text, std::size_t width) {
@@ -384,13 +399,16 @@ std::string footer_text(const PixelTrace& trace, const Vocabulary& vocabulary, c
     out += digits_lost_notes(trace, vocabulary, language) + "\n";
     if (options.digits > 0)
         return out + message(language, "trace_note_digits", {{"digits", std::to_string(options.digits)}}) + "\n";
-    // The note's example in the trace's own type (float's 3.2 is not double's).
-    const TypeExample example = type_example(trace.header.real);
+    // The note's example: a number of this scene, in the trace's own type
+    // (float's 3.2 is not double's).
+    const TypeExample example = type_example(trace.header.real, given_numbers(trace.header));
     return out + wrap("",
                       message(language, "trace_note",
                               {{"type", example.type},
+                               {"number", local_number_text(example.number, language)},
                                {"stored", local_number_text(example.stored, language) + (example.cut ? "…" : "")},
-                               {"square", local_number_text(example.square, language)}}),
+                               {"square", local_number_text(example.square, language)},
+                               {"exact_square", local_number_text(example.exact_square, language)}}),
                       0);
 }
 

@@ -1,5 +1,7 @@
 #include "trace/type_example.hpp"
 
+#include <cmath>
+
 #include "math/decimal.hpp"
 #include "math/real.hpp"
 
@@ -7,39 +9,127 @@ namespace promyk {
 
 namespace {
 
-constexpr double z_S = 3.2;  // the article's sphere centre's z
+constexpr double article_z_S = 3.2;  // the article's sphere centre's z: the example when the scene has none
 constexpr std::size_t shown_digits = 20;
+constexpr std::size_t short_digits = 6;  // a number the reader types: 3.2, 0.125, 1.05
 
-// The exact decimal's first digits, cut, not rounded: the "…" after them
-// stands for the rest. 3.2 in any type has one digit before the point.
-TypeExample stored_as(const TypedNumber& exact, std::string type, std::string square) {
+// ±digits × 10^-scale as a plain decimal (no exponent): "0.016", "10.24", "320".
+std::string plain_text(const std::string& digits, int scale) {
+    const std::string d = strip_zeros(digits);
+    const int before = static_cast<int>(d.size()) - scale;  // digits before the point
+    if (before <= 0) return "0." + std::string(static_cast<std::size_t>(-before), '0') + d;
+    if (before >= static_cast<int>(d.size())) return d + std::string(static_cast<std::size_t>(before) - d.size(), '0');
+    return d.substr(0, static_cast<std::size_t>(before)) + "." + d.substr(static_cast<std::size_t>(before));
+}
+
+// A real_text ("3.2", "0.125", "1e-06") as a TypedNumber; false for
+// anything else (a sign, an infinity).
+bool decimal_of(const std::string& text, TypedNumber& number) {
+    number = TypedNumber{};
+    bool point = false;
+    std::size_t k = 0;
+    for (; k < text.size() && text[k] != 'e'; ++k) {
+        if (text[k] == '.' && !point) {
+            point = true;
+        } else if (text[k] >= '0' && text[k] <= '9') {
+            number.digits += text[k];
+            if (point) ++number.scale;
+        } else {
+            return false;
+        }
+    }
+    if (k < text.size()) {
+        const std::string exponent = text.substr(k + 1);
+        if (exponent.empty() || exponent.size() > 5) return false;
+        number.scale -= std::stoi(exponent);
+    }
+    return !number.digits.empty();
+}
+
+// A number as the reader types it: a plain decimal of at most short_digits
+// significant digits.
+bool short_decimal(const std::string& text, TypedNumber& number) {
+    return text.find('e') == std::string::npos && decimal_of(text, number) &&
+           strip_zeros(number.digits).size() <= short_digits;
+}
+
+// The stored value's first digits, cut, not rounded: the "…" after them
+// stands for the rest.
+template <class Real, class Square>
+TypeExample example_in(Real stored, std::string type, const std::string& text, const TypedNumber& typed,
+                       Square square) {
+    TypeExample example;
+    example.type = std::move(type);
+    example.number = text;
+    const TypedNumber exact = exact_decimal(stored);
     const std::string digits = strip_zeros(exact.digits);
-    const std::string kept = digits.substr(0, shown_digits);
-    return {std::move(type), kept.substr(0, 1) + "." + kept.substr(1), digits.size() > kept.size(), std::move(square)};
+    const int cut_digits = digits.size() > shown_digits ? static_cast<int>(digits.size() - shown_digits) : 0;
+    example.stored = plain_text(digits.substr(0, digits.size() - static_cast<std::size_t>(cut_digits)),
+                                exact.scale - cut_digits);
+    example.cut = cut_digits > 0;
+    example.square = square(stored);
+    const TypedNumber exact_square = multiply(typed, typed);
+    example.exact_square = plain_text(exact_square.digits, exact_square.scale);
+    return example;
+}
+
+// The example for x (> 0) in the trace's type; false when the type holds
+// x's decimal exactly.
+bool example_of(double x, const std::string& real, TypeExample& example) {
+    const std::string text = real_text(x);
+    TypedNumber typed;
+    if (!short_decimal(text, typed)) return false;
+    const auto differs = [&](const TypedNumber& stored) { return !is_zero(absolute_difference(stored, typed)); };
+    if (real == "float") {
+        const float z = static_cast<float>(x);
+        if (!differs(exact_decimal(static_cast<double>(z)))) return false;
+        example = example_in(static_cast<double>(z), "float", text, typed,
+                             [&](double) { return real_text(z * z); });
+        return true;
+    }
+    if (real == "long-double") {
+#if PROMYK_HAS_X87_LONG_DOUBLE
+        const long double z = x;
+        if (!differs(exact_decimal(z))) return false;
+        example = example_in(z, "long double", text, typed, [](long double v) { return real_text(v * v); });
+#else
+        // No x87 here (the wasm): the square rounded to its 64-bit significand.
+        const quad z = x;
+        if (!differs(exact_decimal(z))) return false;
+        example = example_in(z, "long double", text, typed, [](quad v) { return real_text(x87_rounded(v * v)); });
+#endif
+        return true;
+    }
+    if (real == "quad") {
+        const quad z = x;
+        if (!differs(exact_decimal(z))) return false;
+        example = example_in(z, "quad", text, typed, [](quad v) { return real_text(v * v); });
+        return true;
+    }
+    if (!differs(exact_decimal(x))) return false;
+    example = example_in(x, "double", text, typed, [](double v) { return real_text(v * v); });
+    return true;
+}
+
+// 0.3 is no binary fraction, yet 0.3² prints as 0.09 in double: the
+// square's shortest text is the decimal square, and shows nothing.
+bool square_looks_exact(const TypeExample& example) {
+    TypedNumber square, exact_square;
+    return decimal_of(example.square, square) && decimal_of(example.exact_square, exact_square) &&
+           is_zero(absolute_difference(square, exact_square));
 }
 
 }  // namespace
 
-TypeExample type_example(const std::string& real) {
-    if (real == "float") {
-        const float z = static_cast<float>(z_S);
-        return stored_as(exact_decimal(static_cast<double>(z)), "float", real_text(z * z));
+TypeExample type_example(const std::string& real, const std::vector<double>& given) {
+    TypeExample example;
+    for (double value : given) {
+        const double x = std::fabs(value);
+        if (!(x >= 0.01 && x <= 10000)) continue;  // NaN too
+        if (example_of(x, real, example) && !square_looks_exact(example)) return example;
     }
-    if (real == "long-double") {
-#if PROMYK_HAS_X87_LONG_DOUBLE
-        const long double z = z_S;
-        return stored_as(exact_decimal(z), "long double", real_text(z * z));
-#else
-        // No x87 here (the wasm): the square rounded to its 64-bit significand.
-        const quad z = z_S;
-        return stored_as(exact_decimal(z), "long double", real_text(x87_rounded(z * z)));
-#endif
-    }
-    if (real == "quad") {
-        const quad z = z_S;
-        return stored_as(exact_decimal(z), "quad", real_text(z * z));
-    }
-    return stored_as(exact_decimal(z_S), "double", real_text(z_S * z_S));
+    example_of(article_z_S, real, example);
+    return example;
 }
 
 }  // namespace promyk
