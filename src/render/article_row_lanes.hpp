@@ -13,6 +13,7 @@
 
 #include "render/article_lanes.hpp"
 #include "render/kernel.hpp"
+#include "render/row_vectors.hpp"
 
 namespace promyk::lanes {
 inline namespace PROMYK_LANES_ISA {
@@ -121,26 +122,6 @@ PROMYK_LANES_INLINE void put_intensities(const Vec3<Vector>& I_P, std::uint8_t* 
     }
 }
 
-// Calls f(j, n, x, kept) for each vector of row pixels j .. j + n - 1, x
-// their x_E (past n, filler) and kept the lanes within the row.
-template <class Vector, class Real, class F>
-PROMYK_LANES_INLINE void for_each_vector(const Real* x_E, int w, F&& f) {
-    constexpr int width = LaneTraits<Vector>::width;
-    using Mask = MaskOf<Vector>;
-    int j = 0;
-    for (; j + width <= w; j += width) {
-        Vector x;
-        std::memcpy(&x, x_E + j, sizeof x);
-        f(j, width, x, ~Mask{});
-    }
-    if (j < w) {
-        Vector x = splat<Vector>(x_E[j]);
-        Mask kept{};
-        for (int k = 0; k < w - j; ++k) x[k] = x_E[j + k], kept[k] = -1;
-        f(j, w - j, x, kept);
-    }
-}
-
 // The row's non-finite pixels, counted, and the first one's column, into
 // counts: the row computed again with its branches' masks, for a row where
 // a drawn intensity was not finite (rare: kept out of the drawing loop).
@@ -207,29 +188,15 @@ PROMYK_LANES_INLINE RowCounts draw_row(const ArticleRow<Real>& row, const Real* 
         else
             not_finite = either(not_finite, both(kept, pixel.non_finite));
     };
-    // A vector's hit (t: a square root and a division) is found while the
-    // one before it is shaded (another square root and division): the two
-    // chains are independent, so the processor keeps both units busy where
-    // one vector's steps would wait on each other (docs/bench.md: 6 % on
-    // AVX-512, 17 to 22 % on AVX2 and SSE2 against whole vectors in turn).
-    int j = 0;
-    if (w >= width) {
-        Vector x;
-        std::memcpy(&x, x_E, sizeof x);
-        LaneHit<Vector> ahead = article_hit<Root>(row, x);
-        for (; j + 2 * width <= w; j += width) {
-            std::memcpy(&x, x_E + j + width, sizeof x);
-            const LaneHit<Vector> next = article_hit<Root>(row, x);
-            take(j, width, article_shade(row, ahead), ~Mask{});
-            ahead = next;
-        }
-        take(j, width, article_shade(row, ahead), ~Mask{});
-        j += width;
-    }
-    // The rest, fewer than a vector's pixels (filled past w).
-    for_each_vector<Vector>(x_E + j, w - j, [&](int k, int n, Vector x_rest, Mask kept)
-                                                __attribute__((always_inline)) {
-        take(j + k, n, article_lanes<Root>(row, x_rest), kept);
+    // Each vector's hit found while the one before it is shaded
+    // (docs/bench.md: 6 % on AVX-512, 17 to 22 % on AVX2 and SSE2 against
+    // whole vectors in turn); then the rest, fewer than a vector's pixels.
+    const int j = pipelined_vectors<Vector>(
+        x_E, w, [&](Vector x) __attribute__((always_inline)) { return article_hit<Root>(row, x); },
+        [&](const LaneHit<Vector>& hit) __attribute__((always_inline)) { return article_shade(row, hit); },
+        [&](int k, const LanePixel<Vector>& pixel) __attribute__((always_inline)) { take(k, width, pixel, ~Mask{}); });
+    for_each_vector<Vector>(x_E + j, w - j, [&](int k, int n, Vector x, Mask kept) __attribute__((always_inline)) {
+        take(j + k, n, article_lanes<Root>(row, x), kept);
     });
     RowCounts counts;
     counts.sphere_tests = w;  // one sphere, one primary ray a pixel

@@ -14,6 +14,7 @@
 #include "render/general_row_one_sphere.hpp"
 #include "render/general_row.hpp"
 #include "render/kernel.hpp"
+#include "render/row_vectors.hpp"
 
 namespace promyk::lanes {
 inline namespace PROMYK_LANES_ISA {
@@ -95,16 +96,6 @@ PROMYK_LANES_INLINE void count_work(RowCounts& counts, const LaneWork<Vector>& w
     }
 }
 
-// Columns j .. j + n - 1 as a vector: the last one filled past n with
-// column j's x_E, its extra lanes computed and not kept.
-template <class Vector>
-PROMYK_LANES_INLINE Vector columns(const double* x_E, int j, int n, MaskOf<Vector>& kept) {
-    Vector x = splat<Vector>(x_E[j]);
-    kept = MaskOf<Vector>{};
-    for (int k = 0; k < n; ++k) x[k] = x_E[j + k], kept[k] = -1;
-    return x;
-}
-
 // The column of the row's first non-finite pixel, the row computed again
 // (rare: only a row that has one; its work is not counted twice).
 template <class Sw, bool Rgb, class Vector>
@@ -112,15 +103,13 @@ __attribute__((noinline, cold)) int first_non_finite(const GeneralRow<Rgb>& row,
     constexpr int width = LaneTraits<Vector>::width;
     LaneWork<Vector> work;
     const RowLanes<Sw, Rgb, Vector> pixels_at{row};
-    for (int j = 0; j < w; j += width) {
-        const int n = w - j < width ? w - j : width;
-        MaskOf<Vector> kept;
-        const Vector x = columns<Vector>(x_E, j, n, kept);
+    int first = -1;
+    for_each_vector<Vector>(x_E, w, [&](int j, int, Vector x, MaskOf<Vector> kept) __attribute__((always_inline)) {
         const MaskOf<Vector> non_finite = pixels_at(x, kept, work).non_finite & kept;
-        for (int k = 0; k < width; ++k)
-            if (lane_of(non_finite, k)) return j + k;
-    }
-    return -1;
+        for (int k = 0; k < width && first < 0; ++k)
+            if (lane_of(non_finite, k)) first = j + k;
+    });
+    return first;
 }
 
 template <class Sw, bool Rgb, class Vector>
@@ -145,22 +134,14 @@ PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, const
     const RowLanes<Sw, Rgb, Vector> pixels_at{row};
     int j = 0;
     if constexpr (Sw::one) {
-        // One sphere: the next vector's hits found while this one is shaded,
-        // two independent chains of square roots and divisions interleaved
-        // (render/article_row_lanes.hpp's draw_row does the same).
-        if (w >= width) {
-            Vector x;
-            std::memcpy(&x, x_E, sizeof x);
-            auto ahead = pixels_at.hit(x);
-            for (; j + 2 * width <= w; j += width) {
-                std::memcpy(&x, x_E + j + width, sizeof x);
-                const auto next = pixels_at.hit(x);
-                take(j, width, pixels_at.shade(ahead, all_kept, work), all_kept);
-                ahead = next;
-            }
-            take(j, width, pixels_at.shade(ahead, all_kept, work), all_kept);
-            j += width;
-        }
+        // One sphere: each vector's hit found while the one before it is
+        // shaded, as the article's rows are drawn.
+        j = pipelined_vectors<Vector>(
+            x_E, w, [&](Vector x) __attribute__((always_inline)) { return pixels_at.hit(x); },
+            [&](const OneSphereHit<Vector, Rgb>& hit)
+                __attribute__((always_inline)) { return pixels_at.shade(hit, all_kept, work); },
+            [&](int k, const GeneralLanePixel<Vector, Rgb>& pixel)
+                __attribute__((always_inline)) { take(k, width, pixel, all_kept); });
     } else {
         // Two vectors a step, computed before either is stored: two
         // independent chains of square roots and divisions in flight at once.
@@ -174,12 +155,9 @@ PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, const
             take(j + width, width, p1, all_kept);
         }
     }
-    for (; j < w; j += width) {
-        const int n = w - j < width ? w - j : width;
-        Mask kept;
-        const Vector x = columns<Vector>(x_E, j, n, kept);
-        take(j, n, pixels_at(x, kept, work), kept);
-    }
+    for_each_vector<Vector>(x_E + j, w - j, [&](int k, int n, Vector x, Mask kept) __attribute__((always_inline)) {
+        take(j + k, n, pixels_at(x, kept, work), kept);
+    });
     RowCounts counts;
     int misses = 0, lits = 0, shadoweds = 0, non_finites = 0;
     for (int k = 0; k < width; ++k) {
@@ -209,14 +187,11 @@ PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, Gener
 template <class Vector, bool Rgb, class Intensity>
 PROMYK_LANES_INLINE void general_row_intensities(const GeneralRow<Rgb>& row, GeneralLaneStages stages,
                                                  const double* x_E, int w, Intensity* I_P, std::uint8_t* branches) {
-    constexpr int width = LaneTraits<Vector>::width;
     with_switches(stages, row, [&](auto sw) {
         LaneWork<Vector> work;
         const RowLanes<decltype(sw), Rgb, Vector> pixels_at{row};
-        for (int j = 0; j < w; j += width) {
-            const int n = w - j < width ? w - j : width;
-            MaskOf<Vector> kept;
-            const Vector x = columns<Vector>(x_E, j, n, kept);
+        for_each_vector<Vector>(x_E, w, [&](int j, int n, Vector x, MaskOf<Vector> kept)
+                                            __attribute__((always_inline)) {
             const GeneralLanePixel<Vector, Rgb> pixel = pixels_at(x, kept, work);
             for (int k = 0; k < n; ++k) {
                 if constexpr (Rgb)
@@ -230,7 +205,7 @@ PROMYK_LANES_INLINE void general_row_intensities(const GeneralRow<Rgb>& row, Gen
                                                             : Branch::dark;
                 branches[j + k] = static_cast<std::uint8_t>(branch);
             }
-        }
+        });
     });
 }
 
