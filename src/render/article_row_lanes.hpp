@@ -189,8 +189,8 @@ PROMYK_LANES_INLINE RowCounts draw_row(const ArticleRow<Real>& row, const Real* 
             not_finite = either(not_finite, both(kept, pixel.non_finite));
     };
     // Each vector's hit found while the one before it is shaded
-    // (docs/bench.md: 6 % on AVX-512, 17 to 22 % on AVX2 and SSE2 against
-    // whole vectors in turn); then the rest, fewer than a vector's pixels.
+    // (docs/bench.md: 10 % faster on AVX-512, 15 % on SSE2, 23 % on AVX2
+    // than whole vectors in turn); then the rest, fewer than a vector's.
     const int j = pipelined_vectors<Vector>(
         x_E, w, [&](Vector x) __attribute__((always_inline)) { return article_hit<Root>(row, x); },
         [&](const LaneHit<Vector>& hit) __attribute__((always_inline)) { return article_shade(row, hit); },
