@@ -23,9 +23,6 @@
 
 namespace promyk {
 
-// A number in either language's style: a decimal comma or point, a minus
-// '-', '−' (U+2212) or '–', an optional exponent (1.5e-3). Nothing if it is not one.
-std::optional<TypedNumber> parse_typed_number(std::string_view text);
 
 // The most bytes an answer file may have: a lesson of 10^5 pixels, every
 // number of each, fits many times over.
@@ -35,8 +32,6 @@ constexpr std::size_t max_answer_bytes = 64u << 20;
 // ±N (N × 10^-scale), exactly: the double's binary value is expanded in full.
 TypedNumber round_exactly(double value, int scale);
 
-// The number as text in a language's style (decimal comma and '−' in Polish).
-std::string typed_number_text(const TypedNumber& number, Language language);
 
 enum class Verdict {
     right,        // equals the value rounded to the digits written (a fraction: equals the value)

@@ -218,4 +218,51 @@ quad x87_rounded(quad x) {
     return quad_math::signbit(x) ? -magnitude : magnitude;
 }
 
+namespace {
+constexpr int max_typed_scale = 1100;  // parse_typed_number's bound on a number's decimals
+}  // namespace
+
+std::optional<TypedNumber> parse_typed_number(std::string_view text) {
+    TypedNumber number;
+    std::size_t at = 0;
+    for (const std::string_view sign : {"-", "\u2212", "\u2013", "+"}) {
+        if (text.substr(0, sign.size()) == sign) {
+            number.negative = sign != "+";
+            at = sign.size();
+            break;
+        }
+    }
+    bool point = false;
+    int after_point = 0;
+    for (; at < text.size(); ++at) {
+        const char c = text[at];
+        if (c >= '0' && c <= '9') {
+            number.digits += c;
+            if (point) ++after_point;
+        } else if ((c == '.' || c == ',') && !point) {
+            point = true;
+        } else {
+            break;
+        }
+    }
+    if (number.digits.empty() || (point && after_point == 0)) return std::nullopt;
+    int exponent = 0;
+    if (at < text.size() && (text[at] == 'e' || text[at] == 'E')) {
+        ++at;
+        bool negative = false;
+        if (at < text.size() && (text[at] == '-' || text[at] == '+')) negative = text[at++] == '-';
+        const std::size_t start = at;
+        for (; at < text.size() && text[at] >= '0' && text[at] <= '9'; ++at)
+            if (at - start < 6) exponent = exponent * 10 + (text[at] - '0');
+        if (at == start || at - start > 4) return std::nullopt;
+        if (negative) exponent = -exponent;
+    }
+    if (at != text.size()) return std::nullopt;
+    number.scale = after_point - exponent;
+    // A double's exact decimal expansion has at most 1074 decimals; beyond some
+    // such bound a "precision" is a typo (1e-9999), not a claim worth expanding.
+    if (number.scale > max_typed_scale || number.scale < -max_typed_scale) return std::nullopt;
+    return number;
+}
+
 }  // namespace promyk

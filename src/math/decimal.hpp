@@ -20,6 +20,10 @@ struct TypedNumber {
     int scale = 0;       // digits after the decimal point (negative: whole tens, hundreds ...)
 };
 
+// A number in either language's style: a decimal comma or point, a minus
+// '-', '−' (U+2212) or '–', an optional exponent (1.5e-3). Nothing if it is not one.
+std::optional<TypedNumber> parse_typed_number(std::string_view text);
+
 // The value's exact decimal expansion (digits without leading zeros; "0" for
 // zero). The value must be finite.
 TypedNumber exact_decimal(double value);

@@ -169,4 +169,18 @@ std::string shown_value_text(const StepValue& value, const std::string& kind, La
            shown_number(v.y, language, digits) + separator + shown_number(v.z, language, digits) + (bracket ? "]" : ")");
 }
 
+std::string typed_number_text(const TypedNumber& number, Language language) {
+    std::string digits = strip_zeros(number.digits);
+    std::string text;
+    if (number.scale <= 0) {
+        text = digits == "0" ? digits : digits + std::string(static_cast<std::size_t>(-number.scale), '0');
+    } else {
+        const std::size_t scale = static_cast<std::size_t>(number.scale);
+        if (digits.size() < scale + 1) digits.insert(0, scale + 1 - digits.size(), '0');
+        text = digits.substr(0, digits.size() - scale) + (language == Language::pl ? "," : ".") + digits.substr(digits.size() - scale);
+    }
+    if (number.negative && strip_zeros(number.digits) != "0") text = (language == Language::pl ? "\u2212" : "-") + text;
+    return text;
+}
+
 }  // namespace promyk

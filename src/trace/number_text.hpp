@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "math/decimal.hpp"
 #include "math/real.hpp"
 #include "trace/recorder.hpp"
 
@@ -65,6 +66,9 @@ std::string shown_real_text(const std::string& text, RealType type, Language lan
 // U+2212 in both languages, and in Polish a decimal comma ("−1,5e−3";
 // English "−1.5e−3").
 std::string local_number_text(std::string_view text, Language language);
+
+// The number as text in a language's style (decimal comma and '−' in Polish).
+std::string typed_number_text(const TypedNumber& number, Language language);
 
 // A step's value as shown_number shows its numbers (`digits` 0: every digit).
 std::string shown_value_text(const StepValue& value, const std::string& kind, Language language, int digits);

@@ -1,9 +1,11 @@
 #include "trace/type_example.hpp"
 
 #include <cmath>
+#include <optional>
 
 #include "math/decimal.hpp"
 #include "math/real.hpp"
+#include "trace/number_text.hpp"
 
 namespace promyk {
 
@@ -13,44 +15,19 @@ constexpr double article_z_S = 3.2;  // the article's sphere centre's z: the exa
 constexpr std::size_t shown_digits = 20;
 constexpr std::size_t short_digits = 6;  // a number the reader types: 3.2, 0.125, 1.05
 
-// ±digits × 10^-scale as a plain decimal (no exponent): "0.016", "10.24", "320".
-std::string plain_text(const std::string& digits, int scale) {
-    const std::string d = strip_zeros(digits);
-    const int before = static_cast<int>(d.size()) - scale;  // digits before the point
-    if (before <= 0) return "0." + std::string(static_cast<std::size_t>(-before), '0') + d;
-    if (before >= static_cast<int>(d.size())) return d + std::string(static_cast<std::size_t>(before) - d.size(), '0');
-    return d.substr(0, static_cast<std::size_t>(before)) + "." + d.substr(static_cast<std::size_t>(before));
-}
-
-// A real_text ("3.2", "0.125", "1e-06") as a TypedNumber; false for
-// anything else (a sign, an infinity).
-bool decimal_of(const std::string& text, TypedNumber& number) {
-    number = TypedNumber{};
-    bool point = false;
-    std::size_t k = 0;
-    for (; k < text.size() && text[k] != 'e'; ++k) {
-        if (text[k] == '.' && !point) {
-            point = true;
-        } else if (text[k] >= '0' && text[k] <= '9') {
-            number.digits += text[k];
-            if (point) ++number.scale;
-        } else {
-            return false;
-        }
-    }
-    if (k < text.size()) {
-        const std::string exponent = text.substr(k + 1);
-        if (exponent.empty() || exponent.size() > 5) return false;
-        number.scale -= std::stoi(exponent);
-    }
-    return !number.digits.empty();
-}
-
-// A number as the reader types it: a plain decimal of at most short_digits
-// significant digits.
+// A number as the reader types it: a plain decimal (no exponent) of at
+// most short_digits significant digits.
 bool short_decimal(const std::string& text, TypedNumber& number) {
-    return text.find('e') == std::string::npos && decimal_of(text, number) &&
-           strip_zeros(number.digits).size() <= short_digits;
+    const std::optional<TypedNumber> typed = parse_typed_number(text);
+    if (!typed || text.find('e') != std::string::npos || strip_zeros(typed->digits).size() > short_digits)
+        return false;
+    number = *typed;
+    return true;
+}
+
+// ±digits × 10^-scale as a plain decimal with a point: "0.016", "10.24".
+std::string plain_text(std::string digits, int scale) {
+    return typed_number_text(TypedNumber{false, std::move(digits), scale}, Language::en);
 }
 
 // The stored value's first digits, cut, not rounded: the "…" after them
@@ -114,9 +91,9 @@ bool example_of(double x, const std::string& real, TypeExample& example) {
 // 0.3 is no binary fraction, yet 0.3² prints as 0.09 in double: the
 // square's shortest text is the decimal square, and shows nothing.
 bool square_looks_exact(const TypeExample& example) {
-    TypedNumber square, exact_square;
-    return decimal_of(example.square, square) && decimal_of(example.exact_square, exact_square) &&
-           is_zero(absolute_difference(square, exact_square));
+    const std::optional<TypedNumber> square = parse_typed_number(example.square);
+    const std::optional<TypedNumber> exact_square = parse_typed_number(example.exact_square);
+    return square && exact_square && is_zero(absolute_difference(*square, *exact_square));
 }
 
 }  // namespace
