@@ -9,6 +9,7 @@
 #include <limits>
 #include <vector>
 
+#include "general_scenes_support.hpp"
 #include "geometry/formula.hpp"
 #include "isa_forced.hpp"
 #include "render/isa.hpp"
@@ -173,37 +174,94 @@ struct BytesSink final : RenderSink {
 
 }  // namespace
 
-// render without --stats draws the article's rows without counting each
-// pixel's branch (RenderSettings::count_branches): the image must not
-// change, and the non-finite pixels (render's warning) are still counted,
-// the first one found, on every instruction-set path this processor has.
+// render without --stats draws the article's rows, and its sampled rows in
+// double and in float, without counting each pixel's branch
+// (RenderSettings::count_branches): the image must not change, and the
+// non-finite pixels (render's warning) are still counted, the first one
+// found, on every instruction-set path this processor has (a sampled
+// pixel uncounted is non-finite when its mean is).
 TEST_CASE("render without branch counting: the same image, the non-finite pixels still counted", "[render-stats][isa]") {
     Scene overflowing = article_scene();
     overflowing.lights.front().I = std::numeric_limits<double>::max();  // I·D overflows where D > 1
     for (const Isa isa : supported_isas()) {
         PathForced forced(isa);
         for (const Scene& scene : {article_scene(), overflowing})
-            for (const Formula formula : {Formula::article, Formula::stable, Formula::geometric})
-                for (const int w : {8, 61, 200}) {
-                    INFO(isa_name(isa) << ", I = " << scene.lights.front().I << ", " << formula_name(formula)
-                                       << ", w = " << w);
-                    RenderSettings counted{w, 1, RealType::double_, formula, 1, true};
-                    RenderSettings uncounted = counted;
-                    uncounted.count_branches = false;
-                    BytesSink with(w), without(w);
-                    RenderStats with_stats, without_stats;
-                    render(scene, counted, PixelSelection{}, with, &with_stats);
-                    render(scene, uncounted, PixelSelection{}, without, &without_stats);
-                    REQUIRE(with.bytes.size() == static_cast<std::size_t>(w) * w);
-                    CHECK(with.bytes == without.bytes);
-                    CHECK(without_stats.count(Branch::non_finite) == with_stats.count(Branch::non_finite));
-                    CHECK(without_stats.first_non_finite_i == with_stats.first_non_finite_i);
-                    CHECK(without_stats.first_non_finite_j == with_stats.first_non_finite_j);
-                    // Only what was asked: no lit or dark pixel counted.
-                    CHECK(without_stats.count(Branch::lit) == 0);
-                    CHECK(without_stats.count(Branch::dark) == 0);
-                    CHECK(with_stats.count(Branch::lit) + with_stats.count(Branch::non_finite) > 0);
-                    if (scene.lights.front().I > 1) CHECK(with_stats.count(Branch::non_finite) > 0);
-                }
+            for (const RealType real : {RealType::double_, RealType::float_})
+                for (const int spp : {1, 4, 9})
+                    for (const Formula formula : {Formula::article, Formula::stable, Formula::geometric})
+                        for (const int w : {8, 61, 200}) {
+                            // float at spp 1 draws its rows counting (only double's skip it)
+                            const bool uncounted_path = real == RealType::double_ || spp > 1;
+                            INFO(isa_name(isa) << ", I = " << scene.lights.front().I << ", "
+                                               << (real == RealType::double_ ? "double" : "float") << ", spp "
+                                               << spp << ", " << formula_name(formula) << ", w = " << w);
+                            RenderSettings counted{w, 1, real, formula, spp, true};
+                            RenderSettings uncounted = counted;
+                            uncounted.count_branches = false;
+                            BytesSink with(w), without(w);
+                            RenderStats with_stats, without_stats;
+                            render(scene, counted, PixelSelection{}, with, &with_stats);
+                            render(scene, uncounted, PixelSelection{}, without, &without_stats);
+                            REQUIRE(with.bytes.size() == static_cast<std::size_t>(w) * w);
+                            CHECK(with.bytes == without.bytes);
+                            CHECK(without_stats.count(Branch::non_finite) == with_stats.count(Branch::non_finite));
+                            CHECK(without_stats.first_non_finite_i == with_stats.first_non_finite_i);
+                            CHECK(without_stats.first_non_finite_j == with_stats.first_non_finite_j);
+                            // Only what was asked: no lit or dark pixel counted.
+                            if (uncounted_path) {
+                                CHECK(without_stats.count(Branch::lit) == 0);
+                                CHECK(without_stats.count(Branch::dark) == 0);
+                                CHECK(without_stats.disagreeing == 0);
+                            }
+                            CHECK(with_stats.count(Branch::lit) + with_stats.count(Branch::non_finite) > 0);
+                            if (scene.lights.front().I > 1) CHECK(with_stats.count(Branch::non_finite) > 0);
+                            if (spp > 1 && w == 200) CHECK(with_stats.disagreeing > 0);
+                        }
     }
+}
+
+// The same for the general tracer's sampled rows (every example scene, and
+// hostile ones whose deltas, shadow tests and intensities overflow, in grey
+// and in colour): without --stats only the non-finite pixels are counted,
+// and the image is the same.
+TEST_CASE("render without branch counting: the general tracer's samples", "[render-stats][isa]") {
+    struct ImageSink final : RenderSink {
+        std::vector<std::uint8_t> bytes;
+        std::size_t row_bytes;
+        explicit ImageSink(std::size_t n) : row_bytes(n) {}
+        void image_rows(const std::uint8_t* rows, int count) override {
+            bytes.insert(bytes.end(), rows, rows + static_cast<std::ptrdiff_t>(row_bytes) * count);
+        }
+    };
+    std::vector<general_scenes_support::NamedScene> scenes = general_scenes_support::example_scenes();
+    for (general_scenes_support::NamedScene& named : general_scenes_support::hostile_scenes(12))
+        scenes.push_back(std::move(named));
+    long long non_finite = 0;
+    for (const Isa isa : supported_isas()) {
+        PathForced forced(isa);
+        for (const general_scenes_support::NamedScene& named : scenes)
+            for (const int spp : {4, 9}) {
+                const int w = named.panes.front();
+                INFO(isa_name(isa) << ", " << named.name << ", spp " << spp << ", w = " << w);
+                const RenderSettings counted{w, 1, RealType::double_, Formula::article, spp, true};
+                RenderSettings uncounted = counted;
+                uncounted.count_branches = false;
+                const std::size_t row_bytes = static_cast<std::size_t>(w) * image_channels(named.scene);
+                ImageSink with(row_bytes), without(row_bytes);
+                RenderStats with_stats, without_stats;
+                render(named.scene, counted, PixelSelection{}, with, &with_stats);
+                render(named.scene, uncounted, PixelSelection{}, without, &without_stats);
+                REQUIRE(with.bytes.size() == row_bytes * w);
+                CHECK(with.bytes == without.bytes);
+                CHECK(without_stats.count(Branch::non_finite) == with_stats.count(Branch::non_finite));
+                CHECK(without_stats.first_non_finite_i == with_stats.first_non_finite_i);
+                CHECK(without_stats.first_non_finite_j == with_stats.first_non_finite_j);
+                CHECK(without_stats.count(Branch::lit) == 0);
+                CHECK(without_stats.count(Branch::dark) == 0);
+                CHECK(without_stats.count(Branch::shadowed) == 0);
+                CHECK(without_stats.disagreeing == 0);
+                non_finite += with_stats.count(Branch::non_finite);
+            }
+    }
+    CHECK(non_finite > 0);  // the hostile scenes have some
 }

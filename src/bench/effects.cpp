@@ -69,10 +69,13 @@ int run_effects_bench(const EffectsOptions& options) {
     const int w = options.w;
     const int spp = options.spp;
     const double pixels = static_cast<double>(w) * w;
-    // One thread, spp samples a pixel (or n).
-    const auto settings = [&](int n) {
+    // One thread, spp samples a pixel (or n). Timed as `promyk render` runs
+    // without --stats, counting only the non-finite pixels (as bench speed
+    // does); the untimed runs that fill the work columns count every branch.
+    const auto settings = [&](int n, bool counted = false) {
         RenderSettings s;
         s.w = w, s.threads = 1, s.spp = n;
+        s.count_branches = counted;
         return s;
     };
     std::vector<RenderStats> stats(scenes.size());
@@ -91,7 +94,7 @@ int run_effects_bench(const EffectsOptions& options) {
     std::vector<TimedWork> jobs;
     for (std::size_t k = 0; k < scenes.size(); ++k) {
         NullSink sink;
-        render(scenes[k], settings(spp), PixelSelection{}, sink, &stats[k]);  // the work columns (untimed)
+        render(scenes[k], settings(spp, true), PixelSelection{}, sink, &stats[k]);  // the work columns (untimed)
         jobs.push_back(repeated([&, k] {
             NullSink timed_sink;
             render(scenes[k], settings(spp), PixelSelection{}, timed_sink);
@@ -113,10 +116,11 @@ int run_effects_bench(const EffectsOptions& options) {
     set_background_skipping(false);
     {
         NullSink sink;
-        render(article_scene, settings(spp), PixelSelection{}, sink, &stats[no_skipping]);
-        render(*general, article_scene, settings(spp), PixelSelection{}, sink, &stats[forced_general]);
+        render(article_scene, settings(spp, true), PixelSelection{}, sink, &stats[no_skipping]);
+        render(*general, article_scene, settings(spp, true), PixelSelection{}, sink, &stats[forced_general]);
     }
     set_background_skipping(skipping);
+    general->set_branch_counting(false);  // timed as the article's kernel is (settings)
     jobs.push_back(repeated([&] {
         NullSink timed_sink;
         set_background_skipping(false);
@@ -131,6 +135,7 @@ int run_effects_bench(const EffectsOptions& options) {
     // too), in the same rounds: a sample's cost against its own pixel's.
     const std::size_t rows = jobs.size();
     const std::unique_ptr<Kernel> general_1 = make_general_kernel(article_scene);
+    general_1->set_branch_counting(false);
     if (spp > 1) {
         for (std::size_t k = 0; k < scenes.size(); ++k)
             jobs.push_back(repeated([&, k] {

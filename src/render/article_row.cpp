@@ -242,7 +242,7 @@ RowCounts one_pixel_row(const ArticleWorld<double>& world, int w, int i, std::ui
 }  // namespace
 
 bool sampled_row_in_lanes(const ArticleWorld<double>& world, int w, int i, int spp, std::uint8_t* out, Formula formula,
-                          RowCounts& counts, double* I_P, std::uint8_t* branches) {
+                          RowCounts& counts, double* I_P, std::uint8_t* branches, bool count_branches) {
 #if defined(PROMYK_ISA_KERNELS)
     if (spp <= 1) return false;
     const double background = sampled_background(world.background, spp);
@@ -256,20 +256,21 @@ bool sampled_row_in_lanes(const ArticleWorld<double>& world, int w, int i, int s
     switch (article_isa()) {
         case Isa::avx512:
             counts = lanes::avx512::draw_sampled_article_row(row, w, i, spp, span.lo, span.hi, out, I_P, branches,
-                                                             formula);
+                                                             formula, count_branches);
             break;
         case Isa::avx2:
             counts = lanes::avx2::draw_sampled_article_row(row, w, i, spp, span.lo, span.hi, out, I_P, branches,
-                                                           formula);
+                                                           formula, count_branches);
             break;
         default:
             counts = lanes::draw_sampled_row<lanes::Double2>(row, w, i, spp, span.lo, span.hi, out, I_P, branches,
-                                                             formula);
+                                                             formula, count_branches);
     }
     fill_skipped(span, w, background, out, counts, I_P, branches);
     return true;
 #else
-    (void)world, (void)w, (void)i, (void)spp, (void)out, (void)formula, (void)counts, (void)I_P, (void)branches;
+    (void)world, (void)w, (void)i, (void)spp, (void)out, (void)formula, (void)counts, (void)I_P, (void)branches,
+        (void)count_branches;
     return false;
 #endif
 }

@@ -31,10 +31,12 @@ RowCounts render_row(const ArticleWorld<double>& world, int w, int i, std::uint8
 // sphere's formula: each pixel's grey level, branch and counts (RowCounts,
 // disagreeing pixels too) bit for bit as render/sampling.hpp's sample_pixel
 // over trace_ray gives them. When I_P and branches are given, each pixel's
-// mean and Branch (a byte) too, for the tests. False, and nothing drawn,
-// where there are no lanes (the wasm, the fma formula).
+// mean and Branch (a byte) too, for the tests. count_branches false: only
+// non-finite pixels are counted (Kernel::counts_branches). False, and
+// nothing drawn, where there are no lanes (the wasm, the fma formula).
 bool sampled_row_in_lanes(const ArticleWorld<double>& world, int w, int i, int spp, std::uint8_t* out, Formula formula,
-                          RowCounts& counts, double* I_P = nullptr, std::uint8_t* branches = nullptr);
+                          RowCounts& counts, double* I_P = nullptr, std::uint8_t* branches = nullptr,
+                          bool count_branches = true);
 
 // Row i's intensities into I_P[0 .. w), and, when `branches` is given, each
 // pixel's Branch as a byte. Bit for bit what trace_ray gives each pixel

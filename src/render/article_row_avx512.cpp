@@ -21,8 +21,8 @@ void article_row_intensities(const ArticleRow<double>& row, const double* x_E, i
 
 RowCounts draw_sampled_article_row(const ArticleRow<double>& row, int w, int i, int spp, int lo, int hi,
                                    std::uint8_t* out,
-                                   double* I_P, std::uint8_t* branches, Formula formula) {
-    return draw_sampled_row<Double8>(row, w, i, spp, lo, hi, out, I_P, branches, formula);
+                                   double* I_P, std::uint8_t* branches, Formula formula, bool count_branches) {
+    return draw_sampled_row<Double8>(row, w, i, spp, lo, hi, out, I_P, branches, formula, count_branches);
 }
 
 }  // namespace avx512

@@ -54,7 +54,8 @@ bool float_row_in_lanes(const ArticleWorld<float>& world, int w, int i, std::uin
 }
 
 bool sampled_float_row_in_lanes(const ArticleWorld<float>& world, int w, int i, int spp, std::uint8_t* out,
-                                Formula formula, RowCounts& counts, float* I_P, std::uint8_t* branches) {
+                                Formula formula, RowCounts& counts, float* I_P, std::uint8_t* branches,
+                                bool count_branches) {
 #if defined(PROMYK_ISA_KERNELS)
     if (spp <= 1) return false;
     const float background = sampled_background(world.background, spp);
@@ -68,20 +69,21 @@ bool sampled_float_row_in_lanes(const ArticleWorld<float>& world, int w, int i, 
     switch (article_isa()) {
         case Isa::avx512:
             counts = lanes::avx512::draw_sampled_float_row(row, w, i, spp, span.lo, span.hi, out, I_P, branches,
-                                                           formula);
+                                                           formula, count_branches);
             break;
         case Isa::avx2:
             counts = lanes::avx2::draw_sampled_float_row(row, w, i, spp, span.lo, span.hi, out, I_P, branches,
-                                                         formula);
+                                                         formula, count_branches);
             break;
         default:  // SSE2's four floats, their points in two registers of doubles
             counts = lanes::draw_sampled_row<lanes::Float4>(row, w, i, spp, span.lo, span.hi, out, I_P, branches,
-                                                            formula);
+                                                            formula, count_branches);
     }
     fill_skipped(span, w, background, out, counts, I_P, branches);
     return true;
 #else
-    (void)world, (void)w, (void)i, (void)spp, (void)out, (void)formula, (void)counts, (void)I_P, (void)branches;
+    (void)world, (void)w, (void)i, (void)spp, (void)out, (void)formula, (void)counts, (void)I_P, (void)branches,
+        (void)count_branches;
     return false;
 #endif
 }

@@ -24,9 +24,10 @@ bool float_row_in_lanes(const ArticleWorld<float>& world, int w, int i, std::uin
 // The same from spp > 1 samples a pixel (false, too, for spp 1): each
 // pixel's grey level, branch and counts (disagreeing pixels too) bit for
 // bit sample_pixel's over trace_ray<float>. When I_P and branches are given,
-// each pixel's mean and Branch (a byte) too, for the tests.
+// each pixel's mean and Branch (a byte) too, for the tests. count_branches
+// false: only non-finite pixels are counted.
 bool sampled_float_row_in_lanes(const ArticleWorld<float>& world, int w, int i, int spp, std::uint8_t* out,
                                 Formula formula, RowCounts& counts, float* I_P = nullptr,
-                                std::uint8_t* branches = nullptr);
+                                std::uint8_t* branches = nullptr, bool count_branches = true);
 
 }  // namespace promyk

@@ -14,8 +14,9 @@ RowCounts draw_float_row(const ArticleRow<float>& row, const float* x_E, int w, 
 }
 
 RowCounts draw_sampled_float_row(const ArticleRow<float>& row, int w, int i, int spp, int lo, int hi,
-                                 std::uint8_t* out, float* I_P, std::uint8_t* branches, Formula formula) {
-    return draw_sampled_row<Float8>(row, w, i, spp, lo, hi, out, I_P, branches, formula);
+                                 std::uint8_t* out, float* I_P, std::uint8_t* branches, Formula formula,
+                                 bool count_branches) {
+    return draw_sampled_row<Float8>(row, w, i, spp, lo, hi, out, I_P, branches, formula, count_branches);
 }
 
 }  // namespace avx2

@@ -77,19 +77,20 @@ bool intensities(const World<double, Rgb>& world, GeneralLaneStages stages, int 
 // Row i from spp samples a pixel; I_P and branches for the tests, else null.
 template <bool Rgb, class Intensity>
 bool draw_sampled(const World<double, Rgb>& world, GeneralLaneStages stages, int w, int i, int spp, std::uint8_t* out,
-                  RowCounts& counts, Intensity* I_P, std::uint8_t* branches) {
+                  RowCounts& counts, Intensity* I_P, std::uint8_t* branches, bool count_branches = true) {
     if (spp <= 1) return false;
     const lanes::GeneralRow<Rgb>& row = row_of(world, w, i);  // its heights unused: each sample's own
     if (!has_object(row)) return false;
     switch (article_isa()) {
         case Isa::avx512:
-            counts = lanes::avx512::draw_sampled_general_row(row, stages, w, i, spp, out, I_P, branches);
+            counts = lanes::avx512::draw_sampled_general_row(row, stages, w, i, spp, out, I_P, branches, count_branches);
             break;
         case Isa::avx2:
-            counts = lanes::avx2::draw_sampled_general_row(row, stages, w, i, spp, out, I_P, branches);
+            counts = lanes::avx2::draw_sampled_general_row(row, stages, w, i, spp, out, I_P, branches, count_branches);
             break;
         default:
-            counts = lanes::draw_sampled_general_row<lanes::Double2>(row, stages, w, i, spp, out, I_P, branches);
+            counts = lanes::draw_sampled_general_row<lanes::Double2>(row, stages, w, i, spp, out, I_P, branches,
+                                                                     count_branches);
     }
     return true;
 }
@@ -97,12 +98,12 @@ bool draw_sampled(const World<double, Rgb>& world, GeneralLaneStages stages, int
 }  // namespace
 
 bool general_sampled_row_in_lanes(const World<double, false>& world, GeneralLaneStages stages, int w, int i, int spp,
-                                  std::uint8_t* out, RowCounts& counts) {
-    return draw_sampled(world, stages, w, i, spp, out, counts, static_cast<double*>(nullptr), nullptr);
+                                  std::uint8_t* out, RowCounts& counts, bool count_branches) {
+    return draw_sampled(world, stages, w, i, spp, out, counts, static_cast<double*>(nullptr), nullptr, count_branches);
 }
 bool general_sampled_row_in_lanes(const World<double, true>& world, GeneralLaneStages stages, int w, int i, int spp,
-                                  std::uint8_t* out, RowCounts& counts) {
-    return draw_sampled(world, stages, w, i, spp, out, counts, static_cast<Vec3d*>(nullptr), nullptr);
+                                  std::uint8_t* out, RowCounts& counts, bool count_branches) {
+    return draw_sampled(world, stages, w, i, spp, out, counts, static_cast<Vec3d*>(nullptr), nullptr, count_branches);
 }
 bool general_sampled_row_intensities(const World<double, false>& world, GeneralLaneStages stages, int w, int i,
                                      int spp, std::uint8_t* out, RowCounts& counts, double* I_P,
@@ -135,11 +136,11 @@ bool general_row_intensities(const World<double, true>& world, GeneralLaneStages
 #else  // no lanes in this build
 
 bool general_sampled_row_in_lanes(const World<double, false>&, GeneralLaneStages, int, int, int, std::uint8_t*,
-                                  RowCounts&) {
+                                  RowCounts&, bool) {
     return false;
 }
 bool general_sampled_row_in_lanes(const World<double, true>&, GeneralLaneStages, int, int, int, std::uint8_t*,
-                                  RowCounts&) {
+                                  RowCounts&, bool) {
     return false;
 }
 bool general_sampled_row_intensities(const World<double, false>&, GeneralLaneStages, int, int, int, std::uint8_t*,

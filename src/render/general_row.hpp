@@ -35,12 +35,13 @@ bool general_row_in_lanes(const World<double, true>& world, GeneralLaneStages st
 // Row i drawn from spp > 1 samples a pixel (render/general_sample_lanes.hpp):
 // each byte to_byte of sample_pixel over trace_general's mean, the row's
 // counts (branches, disagreeing pixels, first non-finite column, rays and
-// tests) as GeneralKernel counts them. False, with nothing drawn, where
+// tests) as GeneralKernel counts them; count_branches false: of the
+// branches, only the non-finite pixels. False, with nothing drawn, where
 // this build has no lanes or the world no object.
 bool general_sampled_row_in_lanes(const World<double, false>& world, GeneralLaneStages stages, int w, int i, int spp,
-                                  std::uint8_t* out, RowCounts& counts);
+                                  std::uint8_t* out, RowCounts& counts, bool count_branches = true);
 bool general_sampled_row_in_lanes(const World<double, true>& world, GeneralLaneStages stages, int w, int i, int spp,
-                                  std::uint8_t* out, RowCounts& counts);
+                                  std::uint8_t* out, RowCounts& counts, bool count_branches = true);
 
 // For the tests: the same sampled row, with its pixels' means and branches.
 bool general_sampled_row_intensities(const World<double, false>& world, GeneralLaneStages stages, int w, int i,

@@ -26,12 +26,12 @@ void general_row_intensities(const GeneralRow<true>& row, GeneralLaneStages stag
     general_row_intensities<Double4>(row, stages, x_E, w, I_P, branches);
 }
 RowCounts draw_sampled_general_row(const GeneralRow<false>& row, GeneralLaneStages stages, int w, int i, int spp,
-                                   std::uint8_t* out, double* I_P, std::uint8_t* branches) {
-    return draw_sampled_general_row<Double4>(row, stages, w, i, spp, out, I_P, branches);
+                                   std::uint8_t* out, double* I_P, std::uint8_t* branches, bool count_branches) {
+    return draw_sampled_general_row<Double4>(row, stages, w, i, spp, out, I_P, branches, count_branches);
 }
 RowCounts draw_sampled_general_row(const GeneralRow<true>& row, GeneralLaneStages stages, int w, int i, int spp,
-                                   std::uint8_t* out, Vec3d* I_P, std::uint8_t* branches) {
-    return draw_sampled_general_row<Double4>(row, stages, w, i, spp, out, I_P, branches);
+                                   std::uint8_t* out, Vec3d* I_P, std::uint8_t* branches, bool count_branches) {
+    return draw_sampled_general_row<Double4>(row, stages, w, i, spp, out, I_P, branches, count_branches);
 }
 
 }  // namespace avx2

@@ -32,9 +32,9 @@ void general_row_intensities(const GeneralRow<false>& row, GeneralLaneStages sta
 void general_row_intensities(const GeneralRow<true>& row, GeneralLaneStages stages, const double* x_E, int w,
                              Vec3d* I_P, std::uint8_t* branches);
 RowCounts draw_sampled_general_row(const GeneralRow<false>& row, GeneralLaneStages stages, int w, int i, int spp,
-                                   std::uint8_t* out, double* I_P, std::uint8_t* branches);
+                                   std::uint8_t* out, double* I_P, std::uint8_t* branches, bool count_branches);
 RowCounts draw_sampled_general_row(const GeneralRow<true>& row, GeneralLaneStages stages, int w, int i, int spp,
-                                   std::uint8_t* out, Vec3d* I_P, std::uint8_t* branches);
+                                   std::uint8_t* out, Vec3d* I_P, std::uint8_t* branches, bool count_branches);
 }
 namespace avx512 {
 RowCounts draw_general_row(const GeneralRow<false>& row, GeneralLaneStages stages, const double* x_E, int w,
@@ -46,9 +46,9 @@ void general_row_intensities(const GeneralRow<false>& row, GeneralLaneStages sta
 void general_row_intensities(const GeneralRow<true>& row, GeneralLaneStages stages, const double* x_E, int w,
                              Vec3d* I_P, std::uint8_t* branches);
 RowCounts draw_sampled_general_row(const GeneralRow<false>& row, GeneralLaneStages stages, int w, int i, int spp,
-                                   std::uint8_t* out, double* I_P, std::uint8_t* branches);
+                                   std::uint8_t* out, double* I_P, std::uint8_t* branches, bool count_branches);
 RowCounts draw_sampled_general_row(const GeneralRow<true>& row, GeneralLaneStages stages, int w, int i, int spp,
-                                   std::uint8_t* out, Vec3d* I_P, std::uint8_t* branches);
+                                   std::uint8_t* out, Vec3d* I_P, std::uint8_t* branches, bool count_branches);
 }
 #if defined(__clang__)
 #pragma clang diagnostic pop

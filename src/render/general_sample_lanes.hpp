@@ -53,11 +53,11 @@ template <class Sw, bool Rgb, class Lane>
 struct GeneralShooter : GeneralSamples<Sw, Rgb, Lane> {
     using GeneralSamples<Sw, Rgb, Lane>::GeneralSamples;
     using Mask = MaskOf<Lane>;
-    PROMYK_LANES_INLINE void operator()(const SamplePoint<Lane>& E, SampledLanes<Lane, LaneIntensity<Lane, Rgb>>& p,
-                                        Mask kept) {
+    PROMYK_LANES_INLINE SampleResult<Lane, LaneIntensity<Lane, Rgb>> operator()(const SamplePoint<Lane>& E,
+                                                                                Mask kept) {
         const GeneralLanePixel<Lane, Rgb> pixel = this->pixel(E.x, E.y, kept);
         const Mask dark = lane_not(either(either(pixel.miss, pixel.non_finite), either(pixel.lit, pixel.shadowed)));
-        take_result(pixel.I_P, branch_code<CodeOf<Lane>>(pixel.miss, dark, pixel.non_finite, pixel.shadowed), E, p);
+        return {pixel.I_P, branch_code<CodeOf<Lane>>(pixel.miss, dark, pixel.non_finite, pixel.shadowed)};
     }
     // The row's rays and tests (count_work): one eye's ray a sample.
     PROMYK_LANES_INLINE void count(RowCounts& counts, int pixels, int spp) const {
@@ -66,17 +66,20 @@ struct GeneralShooter : GeneralSamples<Sw, Rgb, Lane> {
 };
 
 // Row i of a w-pixel pane, spp > 1 samples a pixel, the stages chosen at run
-// time (once a row). Every sample's point is computed by division (by_w and
-// by_cell not specialised for powers of two: the same bits, one
-// instantiation per stage where the article's kernel has four).
+// time (once a row). Every sample's cell is found by division (by_cell not
+// specialised for powers of two: the same bits, one instantiation per stage
+// where the article's kernel has two). count_branches false (render
+// without --stats): only the non-finite pixels are counted.
 template <class Lane, bool Rgb, class Out>
 PROMYK_LANES_INLINE RowCounts draw_sampled_general_row(const GeneralRow<Rgb>& row, GeneralLaneStages stages, int w,
                                                        int i, int spp, std::uint8_t* out, Out* I_P,
-                                                       std::uint8_t* branches) {
+                                                       std::uint8_t* branches, bool count_branches) {
     const SampleGrid grid = sample_grid(w, i, spp);
+    const bool count = count_branches || I_P != nullptr || branches != nullptr;
     return with_switches(stages, row, [&](auto sw) {
         GeneralShooter<decltype(sw), Rgb, Lane> shoot(row);
-        return draw_sampled_row<Lane, false, false>(shoot, grid, 0, w, out, I_P, branches);
+        return count ? draw_sampled_row<Lane, false, true>(shoot, grid, 0, w, out, I_P, branches)
+                     : draw_sampled_row<Lane, false, false>(shoot, grid, 0, w, out, I_P, branches);
     });
 }
 

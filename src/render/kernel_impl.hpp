@@ -200,10 +200,12 @@ private:
         RowCounts counts;
         if constexpr (in_lanes) {
             // The samples in lanes (render/sample_lanes.hpp), the same bits.
-            if (sampled_row_in_lanes(world_, w, i, spp(), out, F::id, counts)) return counts;
+            if (sampled_row_in_lanes(world_, w, i, spp(), out, F::id, counts, nullptr, nullptr, counts_branches()))
+                return counts;
         }
         if constexpr (in_float_lanes) {
-            if (sampled_float_row_in_lanes(world_, w, i, spp(), out, F::id, counts)) return counts;
+            if (sampled_float_row_in_lanes(world_, w, i, spp(), out, F::id, counts, nullptr, nullptr, counts_branches()))
+                return counts;
         }
         NullRecorder none;
         counts.sphere_tests = static_cast<long long>(w) * spp();
@@ -257,7 +259,7 @@ public:
         if constexpr (in_lanes) {
             const GeneralLaneStages stages{Sw::shadows, Sw::ambient, Sw::many, Sw::phong};
             if (spp() == 1 ? general_row_in_lanes(world_, stages, w, i, out, counts)
-                           : general_sampled_row_in_lanes(world_, stages, w, i, spp(), out, counts))
+                           : general_sampled_row_in_lanes(world_, stages, w, i, spp(), out, counts, counts_branches()))
                 return counts;
         }
         if (spp() > 1) {

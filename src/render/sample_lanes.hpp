@@ -183,9 +183,9 @@ struct SampleRow {
 // the same bits (subnormal results too: IEEE rounds both the same way; the
 // product cannot overflow, and a NaN or infinity stays what it was).
 // Otherwise a division, or for the samples' coordinates in double (Whole)
-// two fmas (render/whole_divisor.hpp). Chosen once a row (a template
-// argument, so the sample loop has no branch on it), or once a pixel for
-// the mean (exact). d is n in the lanes' own precision, as sample_point's
+// two fmas (render/whole_divisor.hpp). Chosen once a row: the cell's as a
+// template argument, so the sample loop has no branch on it; w's at run
+// time (divided_by_w); the mean's once a pixel (MeanDivisor). d is n in the lanes' own precision, as sample_point's
 // Real(w) and sample_pixel's Real(spp).
 PROMYK_LANES_INLINE bool power_of_two(int n) { return n > 0 && (n & (n - 1)) == 0; }
 template <class Vector, bool Exact, bool Whole = false>
@@ -332,6 +332,15 @@ struct OffsetLanes {
     Lane u, v;
 };
 
+// a / w, as sample_point divides by Real(w): where w is a power of two
+// (grid.w_exact, the same every sample of a row), the multiply by 1/w,
+// the same bits as Divisor's.
+template <class Lane, class WDivisor>
+PROMYK_LANES_INLINE Lane divided_by_w(const SampleGrid& grid, const WDivisor& by_w, Lane a) {
+    if (grid.w_exact) return a * by_w.reciprocal;
+    return by_w.divide(a);
+}
+
 // Sample c.s's point for the vector's pixels, as sample_point computes it:
 // in double, x's and y's numerators rounded to the kernel's Real before
 // by_w divides them by Real(w). In float lanes with an exact cell, only
@@ -357,10 +366,10 @@ PROMYK_LANES_INLINE auto sample_point_lanes(const SampleGrid& grid, const CellDi
         column = mix32_lanes(p.j_hash ^ c.hash);
     const auto h = mix32_lanes(grid.i_hash ^ column);
     if constexpr (parts == 1 && std::is_same_v<Real, double>) {
-        // Both divisors exact (template arguments): a whole grid, the test
-        // constant and the rest of this function not compiled. The general
-        // rows (one instantiation for every grid) test grid.whole at run time.
-        if ((CellDivisor::exact && WDivisor::exact) || grid.whole) {
+        // A whole grid, decided once a row (a branch taken the same way
+        // every sample: one instantiation for w a power of two or not cost
+        // 0 to 0.7 % a sample against two, 2026-12-05).
+        if (grid.whole) {
             // n and w powers of two: u = U / (2^16 n) with the whole number
             // U = 2^16 (s mod n) + h_u - 2^15 n, |U| <= 2^15 n <= 2^20, and
             // sample_point's steps are all exact (x0 + 2 u, dividing by w,
@@ -408,16 +417,8 @@ PROMYK_LANES_INLINE auto sample_point_lanes(const SampleGrid& grid, const CellDi
             y[k] = __builtin_convertvector(grid.minus_y0 - 2.0 * v, RealPart);
             E.d[k] = u * u + v * v;
         }
-        // w a power of two where the row's divisor was not told so (the
-        // general tracer's rows, one instantiation for every grid): the
-        // multiply by 1/w, the same bits as in Divisor, decided at run time.
-        const auto divide_by_w = [&](Lane a) __attribute__((always_inline)) {
-            if constexpr (!WDivisor::exact)
-                if (grid.w_exact) return a * by_w.reciprocal;
-            return by_w.divide(a);
-        };
-        E.x = divide_by_w(joined<Lane>(x)) - Real(1);
-        E.y = divide_by_w(joined<Lane>(y)) + Real(1);
+        E.x = divided_by_w(grid, by_w, joined<Lane>(x)) - Real(1);
+        E.y = divided_by_w(grid, by_w, joined<Lane>(y)) + Real(1);
         return E;
     }
 }
@@ -430,8 +431,8 @@ PROMYK_LANES_INLINE SamplePoint<Lane, true> point_at(const OffsetLanes<Lane>& o,
     using Real = typename LaneTraits<Lane>::Real;
     SamplePoint<Lane, true> E;
     E.u = o.u, E.v = o.v;
-    E.x = by_w.divide(p.x0_real + Real(2) * o.u) - Real(1);
-    E.y = by_w.divide(static_cast<Real>(grid.minus_y0) - Real(2) * o.v) + Real(1);
+    E.x = divided_by_w(grid, by_w, p.x0_real + Real(2) * o.u) - Real(1);
+    E.y = divided_by_w(grid, by_w, static_cast<Real>(grid.minus_y0) - Real(2) * o.v) + Real(1);
     E.d = o.u * o.u + o.v * o.v;
     return E;
 }
@@ -477,13 +478,24 @@ PROMYK_LANES_INLINE MaskOf<Lane> nearer_in_real(const SamplePoint<Lane, true>& E
     return nearer;
 }
 
+// What a shooter gives for a sample: its intensities and branch codes.
+template <class Lane, class Intensity>
+struct SampleResult {
+    Intensity I_P;
+    CodeOf<Lane> code;
+};
+
 // A sample's intensities at the vector's points E, and its branch codes,
-// taken into the pixels' sums and counts.
-template <class Lane, bool InReal, class Intensity>
-PROMYK_LANES_INLINE void take_result(const Intensity& I_P, CodeOf<Lane> code, const SamplePoint<Lane, InReal>& E,
+// taken into the pixels' sums and counts. CountBranches false (render
+// without --stats): the sums alone; the codes, the distance d and the
+// nearest sample are then never computed (dead code once inlined).
+template <bool CountBranches, class Lane, bool InReal, class Intensity>
+PROMYK_LANES_INLINE void take_result(const SampleResult<Lane, Intensity>& result, const SamplePoint<Lane, InReal>& E,
                                      SampledLanes<Lane, Intensity>& p) {
     using Code = CodeOf<Lane>;
-    p.sum = plus(p.sum, I_P);
+    const Code code = result.code;
+    p.sum = plus(p.sum, result.I_P);
+    if constexpr (!CountBranches) return;
     p.branches += code;
     // Whether the sample is the nearest yet to its pixel's centre; -1
     // (true) stays all ones in the code's width.
@@ -523,9 +535,9 @@ struct ArticleSamples {
     // pixels (about 75 instructions a pair of vectors on the baseline path).
     const ArticleRow<Real> row;
     template <class Lane, bool InReal>
-    PROMYK_LANES_INLINE void operator()(const SamplePoint<Lane, InReal>& E, SampledLanes<Lane>& p, MaskOf<Lane>) {
+    PROMYK_LANES_INLINE SampleResult<Lane, Lane> operator()(const SamplePoint<Lane, InReal>& E, MaskOf<Lane>) {
         const LanePixel<Lane> pixel = article_lanes<Root, EarlyOuts>(SampleRow<Lane>(row, E.y), E.x);
-        take_result(pixel.I_P, branch_code<CodeOf<Lane>>(pixel.miss, pixel.dark, pixel.non_finite), E, p);
+        return {pixel.I_P, branch_code<CodeOf<Lane>>(pixel.miss, pixel.dark, pixel.non_finite)};
     }
     // The row's work beyond its branches: one test of the sphere a sample.
     static void count(RowCounts& counts, int pixels, int spp) {
@@ -546,8 +558,10 @@ struct RowTally {
 // levels (or r, g, b) into out, their branches into the tally (and, for the
 // tests, I_P and branches). A pixel's branch is its centre sample's, or
 // non-finite when its mean is; its samples agree when each branch took none
-// or all of them.
-template <class Lane, class Intensity, class Div, class Out>
+// or all of them. CountBranches false: only the non-finite pixels, those
+// whose mean is not finite (a non-finite sample's intensity is NaN or
+// infinite, so a non-finite centre sample makes the mean so too).
+template <bool CountBranches, class Lane, class Intensity, class Div, class Out>
 PROMYK_LANES_INLINE void put_sampled(const SampledLanes<Lane, Intensity>& p, int spp, const Div& by_spp, int j, int n,
                                      MaskOf<Lane> kept, std::uint8_t* out, RowTally<Lane>& tally, Out* I_P,
                                      std::uint8_t* branches) {
@@ -557,6 +571,14 @@ PROMYK_LANES_INLINE void put_sampled(const SampledLanes<Lane, Intensity>& p, int
     constexpr int width = LaneTraits<Lane>::width;
     const Intensity mean = divided(by_spp, p.sum);  // sum / spp
     put_intensities(mean, out, j, n);
+    if constexpr (!CountBranches) {
+        const Mask non_finite = ~finite_channels(mean) & kept;
+        tally.non_finite -= non_finite;
+        if (tally.first_non_finite_j < 0 && any(non_finite))  // rare
+            for (int k = width - 1; k >= 0; --k)
+                if (non_finite[k]) tally.first_non_finite_j = j + k;
+        return;
+    }
     // The samples agree when all took one branch: their codes' sum is spp
     // times that branch's code (0 where all are lit).
     const Element all = static_cast<Element>(spp), one = 1;
@@ -604,8 +626,10 @@ PROMYK_LANES_INLINE void put_sampled(const SampledLanes<Lane, Intensity>& p, int
 // Columns [lo, hi) of row grid.i into out from grid.spp samples a pixel,
 // each traced by `shoot` (ArticleSamples, or the general tracer's): two
 // vectors of pixels in flight (two independent chains of square roots and
-// divisions), then one for the rest.
-template <class Lane, bool ExactCell, bool ExactW, class Shooter, class Out>
+// divisions), then one for the rest. CountBranches false: only the
+// non-finite pixels are counted (put_sampled), and I_P and branches must
+// be null.
+template <class Lane, bool ExactCell, bool CountBranches = true, class Shooter, class Out>
 PROMYK_LANES_INLINE RowCounts draw_sampled_row(Shooter& shoot, const SampleGrid& grid, int lo, int hi,
                                                std::uint8_t* out, Out* I_P, std::uint8_t* branches) {
     using Real = typename LaneTraits<Lane>::Real;
@@ -619,7 +643,7 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(Shooter& shoot, const SampleGrid&
     // WholeDivisor's fmas may stand for the division (in double); by_spp
     // divides any sum.
     const Divisor<Points, ExactCell, true> by_cell(65536 * grid.n);
-    const Divisor<Lane, ExactW, true> by_w(grid.w);
+    const Divisor<Lane, false, true> by_w(grid.w);  // divided_by_w
     const MeanDivisor<Lane> by_spp(grid.spp);
     RowTally<Lane> tally;
     const int spp = grid.spp;
@@ -648,8 +672,13 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(Shooter& shoot, const SampleGrid&
     const auto points = [&](const SampleCounter& c, const Pixels& p) __attribute__((always_inline)) {
         return sample_point_lanes(grid, by_cell, by_w, c, p);
     };
-    const auto at = [&](const auto& E, const Pixels& p) __attribute__((always_inline)) -> decltype(auto) {
-        return point_at(E, grid, by_w, p);
+    // Sample E's of the pixels p, traced and taken.
+    const auto sample = [&](const auto& E_ahead, Pixels& p, Mask kept) __attribute__((always_inline)) {
+        const auto& E = point_at(E_ahead, grid, by_w, p);
+        take_result<CountBranches>(shoot(E, kept), E, p);
+    };
+    const auto put = [&](const Pixels& p, int j, int lanes, Mask kept) __attribute__((always_inline)) {
+        put_sampled<CountBranches>(p, spp, by_spp, j, lanes, kept, out, tally, I_P, branches);
     };
     const Mask all_kept = ~Mask{};
     // Each sample's points are computed a sample ahead, in the step before
@@ -667,16 +696,16 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(Shooter& shoot, const SampleGrid&
                 SampleCounter c_next = c;
                 c_next.next(n);
                 const auto next0 = points(c_next, p0), next1 = points(c_next, p1);
-                shoot(at(E0, p0), p0, all_kept);
-                shoot(at(E1, p1), p1, all_kept);
+                sample(E0, p0, all_kept);
+                sample(E1, p1, all_kept);
                 c = c_next, E0 = next0, E1 = next1;
             }
             const Pixels q0 = pixels(j + 2 * width), q1 = pixels(j + 3 * width);
             const auto next0 = points(SampleCounter{}, q0), next1 = points(SampleCounter{}, q1);
-            shoot(at(E0, p0), p0, all_kept);
-            shoot(at(E1, p1), p1, all_kept);
-            put_sampled(p0, spp, by_spp, j, width, all_kept, out, tally, I_P, branches);
-            put_sampled(p1, spp, by_spp, j + width, width, all_kept, out, tally, I_P, branches);
+            sample(E0, p0, all_kept);
+            sample(E1, p1, all_kept);
+            put(p0, j, width, all_kept);
+            put(p1, j + width, width, all_kept);
             p0 = q0, p1 = q1, E0 = next0, E1 = next1;
         }
     }
@@ -686,8 +715,8 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(Shooter& shoot, const SampleGrid&
         Mask kept{};
         for (int k = 0; k < kept_lanes; ++k) kept[k] = -1;
         SampleCounter c;
-        for (; c.s < spp; c.next(n)) shoot(at(points(c, p), p), p, kept);
-        put_sampled(p, spp, by_spp, j, kept_lanes, kept, out, tally, I_P, branches);
+        for (; c.s < spp; c.next(n)) sample(points(c, p), p, kept);
+        put(p, j, kept_lanes, kept);
     }
     RowCounts counts;
     int miss = 0, dark = 0, non_finite = 0, shadowed = 0;
@@ -702,7 +731,7 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(Shooter& shoot, const SampleGrid&
     counts.branches[static_cast<int>(Branch::dark)] = dark;
     counts.branches[static_cast<int>(Branch::non_finite)] = non_finite;
     counts.branches[static_cast<int>(Branch::shadowed)] = shadowed;
-    counts.branches[static_cast<int>(Branch::lit)] = (hi - lo) - miss - dark - non_finite - shadowed;
+    if (CountBranches) counts.branches[static_cast<int>(Branch::lit)] = (hi - lo) - miss - dark - non_finite - shadowed;
     counts.first_non_finite_j = tally.first_non_finite_j;
     shoot.count(counts, hi - lo, spp);
     return counts;
@@ -729,21 +758,26 @@ PROMYK_LANES_INLINE SampleGrid sample_grid(int w, int i, int spp) {
 
 // Columns [lo, hi) of row i of a w-pixel pane, spp > 1 samples a pixel, the
 // formula chosen at run time (once a row); Lane: doubles or floats.
+// count_branches false (render without --stats): only the non-finite
+// pixels are counted (11 to 17 % faster a sample: docs/bench.md).
 template <class Lane, class Real = typename LaneTraits<Lane>::Real>
 PROMYK_LANES_INLINE RowCounts draw_sampled_row(const ArticleRow<Real>& row, int w, int i, int spp, int lo, int hi,
                                                std::uint8_t* out, Real* I_P, std::uint8_t* branches,
-                                               Formula formula) {
+                                               Formula formula, bool count_branches = true) {
     const SampleGrid grid = sample_grid(w, i, spp);
     // In float, an exact cell also takes the points in float lanes
     // (sample_point_lanes), which needs 2 w + 1 below 2^24.
     const bool cell_exact = power_of_two(grid.n) && (std::is_same_v<Real, double> || w <= (1 << 22));
-    const bool w_exact = power_of_two(w);
+    // Every branch counted for --stats and wherever a pixel's is asked for
+    // (branches: maps and tests).
+    const bool count = count_branches || I_P != nullptr || branches != nullptr;
+    const auto draw_counting = [&](auto shoot, auto counting) __attribute__((always_inline)) {
+        constexpr bool c = decltype(counting)::value;
+        return cell_exact ? draw_sampled_row<Lane, true, c>(shoot, grid, lo, hi, out, I_P, branches)
+                          : draw_sampled_row<Lane, false, c>(shoot, grid, lo, hi, out, I_P, branches);
+    };
     const auto draw = [&](auto shoot) __attribute__((always_inline)) {
-        if (cell_exact)
-            return w_exact ? draw_sampled_row<Lane, true, true>(shoot, grid, lo, hi, out, I_P, branches)
-                           : draw_sampled_row<Lane, true, false>(shoot, grid, lo, hi, out, I_P, branches);
-        return w_exact ? draw_sampled_row<Lane, false, true>(shoot, grid, lo, hi, out, I_P, branches)
-                       : draw_sampled_row<Lane, false, false>(shoot, grid, lo, hi, out, I_P, branches);
+        return count ? draw_counting(shoot, std::true_type{}) : draw_counting(shoot, std::false_type{});
     };
     return with_root(formula, [&](auto root) {
         using R = decltype(root);
