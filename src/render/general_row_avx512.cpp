@@ -1,10 +1,10 @@
-// The general tracer's rows in avx512: compiled with its instruction set
+// The general tracer's rows of one sample a pixel in avx512 (its sampled
+// rows: render/general_sample_avx512.cpp): compiled with its instruction set
 // (src/CMakeLists.txt) and PROMYK_LANES_ISA=avx512, so every template here is
 // promyk::lanes::avx512::..., apart from the baseline's copies.
 // First: it opens the inline namespace the declarations below extend.
 #include "render/general_row_lanes.hpp"
 #include "render/general_row_isa.hpp"
-#include "render/general_sample_lanes.hpp"
 
 namespace promyk::lanes {
 inline namespace avx512 {  // inline, as lanes.hpp opened it in this file
@@ -24,14 +24,6 @@ void general_row_intensities(const GeneralRow<false>& row, GeneralLaneStages sta
 void general_row_intensities(const GeneralRow<true>& row, GeneralLaneStages stages, const double* x_E, int w,
                              Vec3d* I_P, std::uint8_t* branches) {
     general_row_intensities<Double8>(row, stages, x_E, w, I_P, branches);
-}
-RowCounts draw_sampled_general_row(const GeneralRow<false>& row, GeneralLaneStages stages, int w, int i, int spp,
-                                   std::uint8_t* out, double* I_P, std::uint8_t* branches, bool count_branches) {
-    return draw_sampled_general_row<Double8>(row, stages, w, i, spp, out, I_P, branches, count_branches);
-}
-RowCounts draw_sampled_general_row(const GeneralRow<true>& row, GeneralLaneStages stages, int w, int i, int spp,
-                                   std::uint8_t* out, Vec3d* I_P, std::uint8_t* branches, bool count_branches) {
-    return draw_sampled_general_row<Double8>(row, stages, w, i, spp, out, I_P, branches, count_branches);
 }
 
 }  // namespace avx512

@@ -1,7 +1,9 @@
 // The general tracer's rows compiled for each wider instruction set
 // (render/general_row_lanes.hpp in render/general_row_avx2.cpp and
-// ..._avx512.cpp); render/general_row.cpp calls the one render/isa.hpp
-// chose. Declared in each set's own namespace (see render/article_row_isa.hpp).
+// ..._avx512.cpp; render/general_sample_lanes.hpp in
+// render/general_sample_avx2.cpp and ..._avx512.cpp); render/general_row.cpp
+// calls the one render/isa.hpp chose. Declared in each set's own namespace
+// (see render/article_row_isa.hpp).
 #pragma once
 
 #include <cstdint>
