@@ -33,7 +33,6 @@ set(PROMYK_PORTABLE_SOURCES
   render/article_row.cpp
   render/float_row.cpp
   render/general_row.cpp
-  render/general_sample.cpp
   render/pane_columns.cpp
   render/sample_hashes.cpp
   render/isa.cpp

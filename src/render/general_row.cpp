@@ -1,7 +1,6 @@
 // The general tracer's rows in lanes (render/general_row.hpp): the
-// baseline's two doubles here (its sampled rows in render/general_sample.cpp),
-// the wider sets in their own translation units (render/general_row_isa.hpp),
-// chosen by render/isa.hpp. Compiled
+// baseline's two doubles here, the wider sets in their own translation
+// units (render/general_row_isa.hpp), chosen by render/isa.hpp. Compiled
 // with -fno-math-errno (src/CMakeLists.txt): a square root that need not set
 // errno is one sqrtpd for its lanes, with the same bits. The wasm compiles
 // this file without lanes (PROMYK_ISA_KERNELS unset): its rows stay one pixel
@@ -11,9 +10,9 @@
 #include <vector>
 
 #if defined(PROMYK_ISA_KERNELS)
-// First: it opens the baseline's namespace as inline, which general_row_isa.hpp extends.
-#include "render/general_row_lanes.hpp"
 #include "render/general_row_isa.hpp"
+#include "render/general_row_lanes.hpp"
+#include "render/general_sample_lanes.hpp"
 #include "render/isa.hpp"
 #include "render/pane.hpp"
 #include "render/pane_columns.hpp"
@@ -90,8 +89,8 @@ bool draw_sampled(const World<double, Rgb>& world, GeneralLaneStages stages, int
             counts = lanes::avx2::draw_sampled_general_row(row, stages, w, i, spp, out, I_P, branches, count_branches);
             break;
         default:
-            counts = lanes::baseline::draw_sampled_general_row(row, stages, w, i, spp, out, I_P, branches,
-                                                               count_branches);
+            counts = lanes::draw_sampled_general_row<lanes::Double2>(row, stages, w, i, spp, out, I_P, branches,
+                                                                     count_branches);
     }
     return true;
 }
