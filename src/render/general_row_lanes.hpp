@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 #include "render/article_row_lanes.hpp"  // put_grey_levels
 #include "render/general_lanes.hpp"
@@ -96,20 +97,50 @@ PROMYK_LANES_INLINE void count_work(RowCounts& counts, const LaneWork<Vector>& w
     }
 }
 
-// The column of the row's first non-finite pixel, the row computed again
-// (rare: only a row that has one; its work is not counted twice).
-template <class Sw, bool Rgb, class Vector>
-__attribute__((noinline, cold)) int first_non_finite(const GeneralRow<Rgb>& row, const double* x_E, int w) {
-    constexpr int width = LaneTraits<Vector>::width;
+// The row's intensities and branches, every column computed, as
+// draw_general_row computes them: for the tests, and for the first
+// non-finite pixel of a row that has one (rare). One copy of the pixel's
+// steps serves both (each copy of the stages' 64 is compile time; its work
+// is not counted).
+template <class Sw, bool Rgb, class Vector, class Intensity>
+__attribute__((noinline, cold)) void row_pixels(const GeneralRow<Rgb>& row, const double* x_E, int w, Intensity* I_P,
+                                                std::uint8_t* branches) {
     LaneWork<Vector> work;
     const RowLanes<Sw, Rgb, Vector> pixels_at{row};
-    int first = -1;
-    for_each_vector<Vector>(x_E, w, [&](int j, int, Vector x, MaskOf<Vector> kept) __attribute__((always_inline)) {
-        const MaskOf<Vector> non_finite = pixels_at(x, kept, work).non_finite & kept;
-        for (int k = 0; k < width && first < 0; ++k)
-            if (lane_of(non_finite, k)) first = j + k;
+    for_each_vector<Vector>(x_E, w, [&](int j, int n, Vector x, MaskOf<Vector> kept) __attribute__((always_inline)) {
+        const GeneralLanePixel<Vector, Rgb> pixel = pixels_at(x, kept, work);
+        for (int k = 0; k < n; ++k) {
+            if constexpr (Rgb)
+                I_P[j + k] = {pixel.I_P.x[k], pixel.I_P.y[k], pixel.I_P.z[k]};
+            else
+                I_P[j + k] = pixel.I_P[k];
+            const Branch branch = pixel.miss[k]         ? Branch::miss
+                                  : pixel.non_finite[k] ? Branch::non_finite
+                                  : pixel.lit[k]        ? Branch::lit
+                                  : pixel.shadowed[k]   ? Branch::shadowed
+                                                        : Branch::dark;
+            branches[j + k] = static_cast<std::uint8_t>(branch);
+        }
     });
-    return first;
+}
+
+// The column of the row's first non-finite pixel, the row computed again
+// (rare: only a row that has one), a stretch of columns at a time into
+// buffers of its own (no heap: std::vector's code, compiled here, could be
+// the copy the linker gives every instruction set).
+template <class Sw, bool Rgb, class Vector>
+__attribute__((noinline, cold)) int first_non_finite(const GeneralRow<Rgb>& row, const double* x_E, int w) {
+    using Intensity = std::conditional_t<Rgb, Vec3d, double>;
+    constexpr int stretch = 256;
+    Intensity I_P[stretch];
+    std::uint8_t branches[stretch];
+    for (int j = 0; j < w; j += stretch) {
+        const int n = w - j < stretch ? w - j : stretch;
+        row_pixels<Sw, Rgb, Vector>(row, x_E + j, n, I_P, branches);
+        for (int k = 0; k < n; ++k)
+            if (branches[k] == static_cast<std::uint8_t>(Branch::non_finite)) return j + k;
+    }
+    return -1;
 }
 
 template <class Sw, bool Rgb, class Vector>
@@ -187,26 +218,8 @@ PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, Gener
 template <class Vector, bool Rgb, class Intensity>
 PROMYK_LANES_INLINE void general_row_intensities(const GeneralRow<Rgb>& row, GeneralLaneStages stages,
                                                  const double* x_E, int w, Intensity* I_P, std::uint8_t* branches) {
-    with_switches(stages, row, [&](auto sw) {
-        LaneWork<Vector> work;
-        const RowLanes<decltype(sw), Rgb, Vector> pixels_at{row};
-        for_each_vector<Vector>(x_E, w, [&](int j, int n, Vector x, MaskOf<Vector> kept)
-                                            __attribute__((always_inline)) {
-            const GeneralLanePixel<Vector, Rgb> pixel = pixels_at(x, kept, work);
-            for (int k = 0; k < n; ++k) {
-                if constexpr (Rgb)
-                    I_P[j + k] = {pixel.I_P.x[k], pixel.I_P.y[k], pixel.I_P.z[k]};
-                else
-                    I_P[j + k] = pixel.I_P[k];
-                const Branch branch = pixel.miss[k]         ? Branch::miss
-                                      : pixel.non_finite[k] ? Branch::non_finite
-                                      : pixel.lit[k]        ? Branch::lit
-                                      : pixel.shadowed[k]   ? Branch::shadowed
-                                                            : Branch::dark;
-                branches[j + k] = static_cast<std::uint8_t>(branch);
-            }
-        });
-    });
+    with_switches(stages, row,
+                  [&](auto sw) { row_pixels<decltype(sw), Rgb, Vector>(row, x_E, w, I_P, branches); });
 }
 
 }  // namespace PROMYK_LANES_ISA
