@@ -8,7 +8,6 @@
 
 #include <cstdint>
 #include <cstring>
-#include <type_traits>
 
 #include "render/article_row_lanes.hpp"  // put_grey_levels
 #include "render/general_lanes.hpp"
@@ -100,8 +99,8 @@ PROMYK_LANES_INLINE void count_work(RowCounts& counts, const LaneWork<Vector>& w
 // The row's intensities and branches, every column computed, as
 // draw_general_row computes them: for the tests, and for the first
 // non-finite pixel of a row that has one (rare). One copy of the pixel's
-// steps serves both (each copy of the stages' 64 is compile time; its work
-// is not counted).
+// steps for both: every copy is compiled once per stage combination and
+// instruction set. Its work is not counted.
 template <class Sw, bool Rgb, class Vector, class Intensity>
 __attribute__((noinline, cold)) void row_pixels(const GeneralRow<Rgb>& row, const double* x_E, int w, Intensity* I_P,
                                                 std::uint8_t* branches) {
@@ -130,7 +129,7 @@ __attribute__((noinline, cold)) void row_pixels(const GeneralRow<Rgb>& row, cons
 // the copy the linker gives every instruction set).
 template <class Sw, bool Rgb, class Vector>
 __attribute__((noinline, cold)) int first_non_finite(const GeneralRow<Rgb>& row, const double* x_E, int w) {
-    using Intensity = std::conditional_t<Rgb, Vec3d, double>;
+    using Intensity = typename GeneralRow<Rgb>::Intensity;  // double, or Vec3d for r, g, b
     constexpr int stretch = 256;
     Intensity I_P[stretch];
     std::uint8_t branches[stretch];
