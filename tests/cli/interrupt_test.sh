@@ -9,7 +9,7 @@
 #   - SIGINT, SIGTERM, SIGHUP during one pixel's trace of 1,500 spheres and
 #     1,500 lights with shadows (2.25 million shadow tests): trace (text and
 #     JSON), lesson shadows, render --traces; within a second (3 s under the
-#     sanitizers, PROMYK_SIGNAL_DELAY >= 1), with nothing on standard output;
+#     sanitizers, PROMYK_SANITIZED=1), with nothing on standard output;
 #   - SIGINT, SIGTERM, SIGHUP during bench accuracy (with --json), during
 #     render --map (branch with traces, error, digits-lost) and during the
 #     trace-size estimate of render --traces: the same exit code, within the
@@ -24,35 +24,50 @@ fresh() { rm -rf "$dir" && mkdir -p "$dir" && cd "$dir" || exit 1; }
 fail() { echo "$1"; cat err.txt; failed=$((failed + 1)); }
 # The files left in the folder besides the test's own.
 left() { ls -A | grep -vE '^(out|err)\.txt$|^scene\.json$'; }
+# Waits until process $1 has installed its handlers of SIGHUP, SIGINT and
+# SIGTERM (bits 0, 1 and 14 of /proc's SigCgt mask) or has ended, for up to
+# a minute. A signal sent before that is lost or kills it: a sanitizer build
+# takes most of a second to reach main, any build longer on a busy machine.
+wait_for_handlers() {
+    local k state
+    for ((k = 0; k < 3000; ++k)); do
+        state=$(awk '/^State:/ {s = $2} /^SigCgt:/ {m = $2} END {print s, m}' "/proc/$1/status" 2>/dev/null)
+        case $state in
+            "" | " " | Z*) return ;;  # ended
+        esac
+        (((16#${state#* } & 0x4003) == 0x4003)) && return
+        sleep 0.02
+    done
+}
+
 # interrupt SIGNAL SECONDS COMMAND...: runs promyk COMMAND in the background,
-# sends SIGNAL after SECONDS, and sets `code` to its exit status.
+# sends SIGNAL SECONDS after it has its handlers, and sets `code` to its exit
+# status.
 interrupt() {
     local signal=$1 delay=$2
     shift 2
     "$promyk" "$@" >out.txt 2>err.txt &
     local pid=$!
+    wait_for_handlers "$pid"
     sleep "$delay"
     kill -s "$signal" "$pid"
     local sent
     sent=$(date +%s%N)
     # A signal that came too early is lost (a background job of a script
     # starts with SIGINT ignored, until promyk installs its handlers): fail
-    # after a minute rather than hang the suite.
-    (sleep 60 && kill -s KILL "$pid" 2>/dev/null) &
-    local watchdog=$!
+    # after a minute rather than hang the suite. (tail --pid ends with
+    # promyk. No background watchdog: a sleep left running with the test's
+    # standard output open kept CTest waiting for it.)
+    timeout 60 tail --pid="$pid" -s 0.01 -f /dev/null || kill -s KILL "$pid" 2>/dev/null
     wait "$pid"
     code=$?
     took_ms=$((($(date +%s%N) - sent) / 1000000))
-    kill "$watchdog" 2>/dev/null
-    wait "$watchdog" 2>/dev/null
 }
 
 for signal in INT TERM HUP; do
     fresh
     # The largest pane (about 6 s in a release build): still running when the signal comes.
-    # The signal must come after promyk has started: a sanitizer build takes
-    # most of a second to reach main (PROMYK_SIGNAL_DELAY, set by CMake there).
-    interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" render --w 32768 -o big.png --traces big.jsonl --trace-region 0,0,32767,3
+    interrupt "$signal" 0.5 render --w 32768 -o big.png --traces big.jsonl --trace-region 0,0,32767,3
     expected=$((128 + $(kill -l "$signal")))
     before=$failed
     [ "$code" = "$expected" ] || fail "render SIG$signal: exit $code, expected $expected"
@@ -85,7 +100,7 @@ before=$failed
 for signal in INT TERM; do
     fresh
     mkfifo scene.json
-    interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.3}" trace --scene scene.json
+    interrupt "$signal" 0.3 trace --scene scene.json
     expected=$((128 + $(kill -l "$signal")))
     before=$failed
     [ "$code" = "$expected" ] || fail "scene FIFO SIG$signal: exit $code, expected $expected"
@@ -98,7 +113,7 @@ done
 # The same for render, which must not have created its image's temporary yet.
 fresh
 mkfifo scene.json
-interrupt INT "${PROMYK_SIGNAL_DELAY:-0.3}" render --scene scene.json -o x.png
+interrupt INT 0.3 render --scene scene.json -o x.png
 before=$failed
 [ "$code" = 130 ] || fail "render scene FIFO SIGINT: exit $code, expected 130"
 [ -z "$(left)" ] || fail "render scene FIFO SIGINT: files left behind: $(left)"
@@ -109,8 +124,8 @@ before=$failed
 # 1 GB, past the default limit: --max-trace-size lets it run.
 # Within a second of the signal; the sanitizers' build is slower to unwind.
 limit_ms=1000
-sanitized=0
-[ "${PROMYK_SIGNAL_DELAY:-0}" != 0 ] && [ "${PROMYK_SIGNAL_DELAY%%.*}" -ge 1 ] 2>/dev/null && sanitized=1 && limit_ms=3000
+sanitized=${PROMYK_SANITIZED:-0}
+[ "$sanitized" = 1 ] && limit_ms=3000
 # The signals sent during each long command: all three in the release pass;
 # under the sanitizers, where each case waits 3 s for promyk to reach main,
 # one a command, in turn, so every signal still meets every kind of loop.
@@ -132,11 +147,11 @@ for case in "trace text" "trace json" "lesson" "render traces"; do
         many_scene 1500 1500 >scene.json
         big="--scene scene.json --max-trace-size 1TB"
         case $case in
-            "trace text") interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" trace $big --pixel 4,4 ;;
-            "trace json") interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" trace $big --pixel 4,4 --format json ;;
-            "lesson") interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" lesson shadows $big --pixel 4,4 ;;
+            "trace text") interrupt "$signal" 0.5 trace $big --pixel 4,4 ;;
+            "trace json") interrupt "$signal" 0.5 trace $big --pixel 4,4 --format json ;;
+            "lesson") interrupt "$signal" 0.5 lesson shadows $big --pixel 4,4 ;;
             "render traces")
-                interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" render $big --w 8 -o x.png --traces t.jsonl \
+                interrupt "$signal" 0.5 render $big --w 8 -o x.png --traces t.jsonl \
                     --trace-pixel 4,4 ;;
         esac
         expected=$((128 + $(kill -l "$signal")))
@@ -161,18 +176,18 @@ for case in "bench accuracy" "bench accuracy json" "map branch traces" "map erro
     for signal in "${signals[@]}"; do
         fresh
         case $case in
-            "bench accuracy") interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" bench accuracy --threads 1 ;;
+            "bench accuracy") interrupt "$signal" 0.5 bench accuracy --threads 1 ;;
             "bench accuracy json")
-                interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" bench accuracy --threads 1 --json a.json ;;
+                interrupt "$signal" 0.5 bench accuracy --threads 1 --json a.json ;;
             "map branch traces")
-                interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" render --w 16384 --map branch -o m.png \
+                interrupt "$signal" 0.5 render --w 16384 --map branch -o m.png \
                     --traces t.jsonl --trace-region 0,0,16383,7 ;;
             "map error")
-                interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" render --w 1024 --spp 16 --map error -o m.png ;;
+                interrupt "$signal" 0.5 render --w 1024 --spp 16 --map error -o m.png ;;
             "map error 4096")
-                interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" render --w 4096 --map error -o m.png ;;
+                interrupt "$signal" 0.5 render --w 4096 --map error -o m.png ;;
             "map digits-lost")
-                interrupt "$signal" "${PROMYK_SIGNAL_DELAY:-0.5}" render --w 1024 --spp 16 --map digits-lost \
+                interrupt "$signal" 0.5 render --w 1024 --spp 16 --map digits-lost \
                     --traces t.jsonl --trace-pixel 5,5 -o m.png ;;
         esac
         expected=$((128 + $(kill -l "$signal")))
