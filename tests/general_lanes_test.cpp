@@ -30,6 +30,7 @@
 #include "render/stages.hpp"
 #include "render/world.hpp"
 #include "scene/scene_json.hpp"
+#include "sweep_size.hpp"
 #include "trace/recorder.hpp"
 
 namespace {
@@ -37,8 +38,8 @@ namespace {
 using namespace promyk;
 using namespace general_scenes_support;
 
-// What the traced path gives a pane: each pixel's intensity and branch, and
-// each row's counts.
+// What the traced path gives a pane's rows (rows_checked): each pixel's
+// intensity and branch, and each row's counts.
 struct Traced {
     std::vector<Vec3d> I_P;  // grey: the level in x
     std::vector<Branch> branch;
@@ -46,9 +47,9 @@ struct Traced {
 };
 
 template <class Sw, bool Rgb>
-Traced traced_pane(const World<double, Rgb>& world, int w) {
+Traced traced_pane(const World<double, Rgb>& world, int w, const std::vector<int>& rows) {
     Traced traced;
-    for (int i = 0; i < w; ++i) {
+    for (const int i : rows) {
         RowCounts counts;
         WorkCounts work;
         for (int j = 0; j < w; ++j) {
@@ -73,8 +74,8 @@ Traced traced_pane(const World<double, Rgb>& world, int w) {
 
 // The traced pane with the scene's stages as template arguments.
 template <bool Rgb>
-Traced traced_pane(const World<double, Rgb>& world, const Stages& s, int w) {
-    return with_stage_switches(s, [&](auto sw) { return traced_pane<decltype(sw)>(world, w); });
+Traced traced_pane(const World<double, Rgb>& world, const Stages& s, int w, const std::vector<int>& rows) {
+    return with_stage_switches(s, [&](auto sw) { return traced_pane<decltype(sw)>(world, w, rows); });
 }
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
@@ -83,10 +84,10 @@ struct Mismatches {
     int bits = 0, branches = 0, bytes = 0, counts = 0;
 };
 
-// Every row of the pane on the path in use, against the traced pane.
+// The pane's rows on the path in use, against the traced pane's.
 template <bool Rgb>
 Mismatches compare_pane(const Scene& scene, const World<double, Rgb>& world, const Stages& stages, int w,
-                        const Traced& traced) {
+                        const std::vector<int>& rows, const Traced& traced) {
     Mismatches found;
     const GeneralLaneStages lane_stages{stages.shadows, stages.ambient, stages.objects, stages.phong};
     const std::unique_ptr<Kernel> kernel = make_general_kernel(scene);
@@ -95,11 +96,12 @@ Mismatches compare_pane(const Scene& scene, const World<double, Rgb>& world, con
     using Intensity = std::conditional_t<Rgb, Vec3d, double>;
     std::vector<Intensity> I_P(static_cast<std::size_t>(w));
     std::vector<std::uint8_t> branches(static_cast<std::size_t>(w)), out(static_cast<std::size_t>(w * channels));
-    for (int i = 0; i < w; ++i) {
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+        const int i = rows[r];
         REQUIRE(general_row_intensities(world, lane_stages, w, i, I_P.data(), branches.data()));
         const RowCounts drawn = kernel->row(w, i, out.data());  // GeneralKernel::row: the lanes
         for (int j = 0; j < w; ++j) {
-            const std::size_t at = static_cast<std::size_t>(i) * w + j;
+            const std::size_t at = r * static_cast<std::size_t>(w) + j;
             const Vec3d& want = traced.I_P[at];
             if constexpr (Rgb)
                 found.bits += !same_bits(I_P[j].x, want.x) || !same_bits(I_P[j].y, want.y) ||
@@ -111,7 +113,7 @@ Mismatches compare_pane(const Scene& scene, const World<double, Rgb>& world, con
             for (int c = 0; c < channels; ++c)
                 found.bytes += out[static_cast<std::size_t>(channels * j + c)] != to_byte(channel[c]);
         }
-        const RowCounts& want = traced.rows[static_cast<std::size_t>(i)];
+        const RowCounts& want = traced.rows[r];
         for (int b = 0; b < branch_count; ++b) found.counts += drawn.branches[b] != want.branches[b];
         found.counts += drawn.first_non_finite_j != want.first_non_finite_j;
         found.counts += drawn.shadow_rays != want.shadow_rays;
@@ -128,11 +130,12 @@ void check_scene(const NamedScene& named) {
     const Stages stages = plan_stages(named.scene);
     const World<double, Rgb> world = compile_world<double, Rgb>(named.scene);
     for (const int w : named.panes) {
-        const Traced traced = traced_pane(world, stages, w);
+        const std::vector<int> rows = rows_checked(named, w);
+        const Traced traced = traced_pane(world, stages, w, rows);
         for (const Isa isa : supported_isas()) {
             PathForced forced(isa);
             INFO(named.name << ", w = " << w << ", " << isa_name(isa));
-            const Mismatches found = compare_pane(named.scene, world, stages, w, traced);
+            const Mismatches found = compare_pane(named.scene, world, stages, w, rows, traced);
             CHECK(found.bits == 0);
             CHECK(found.branches == 0);
             CHECK(found.bytes == 0);
@@ -153,7 +156,7 @@ void check_scene(const NamedScene& named) {
 TEST_CASE("General rows in lanes: one sphere and one light, plain or not, hostile too, every path, bit-identical to "
           "the traced path",
           "[lanes][isa][non-finite]") {
-    for (const NamedScene& named : one_sphere_scenes(60)) check_scene(named);
+    for (const NamedScene& named : one_sphere_scenes(sweep_size(60, 15))) check_scene(named);
 }
 
 TEST_CASE("General rows in lanes: the example scenes, every path, bit-identical to the traced path", "[lanes][isa]") {
@@ -175,11 +178,11 @@ TEST_CASE("General rows in lanes: the hard cases and hostile scenes, every path,
     int checked = 0;
     for (const NamedScene& named : hard_case_scenes()) check_scene(named), ++checked;
     CHECK(checked >= 10);
-    for (const NamedScene& named : hostile_scenes(60)) check_scene(named);
+    for (const NamedScene& named : hostile_scenes(sweep_size(60, 15))) check_scene(named);
 }
 
 TEST_CASE("General rows in lanes: random scenes, ties and an eye inside, every path, bit-identical to the traced path",
           "[lanes][isa]") {
-    for (const NamedScene& named : random_scenes(36)) check_scene(named);
+    for (const NamedScene& named : random_scenes(sweep_size(36, 12))) check_scene(named);
     for (const NamedScene& named : tie_scenes()) check_scene(named);
 }

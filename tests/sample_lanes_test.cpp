@@ -30,6 +30,7 @@
 #include "render/world.hpp"
 #include "geometry/sphere_formulas.hpp"
 #include "scene/scene_json.hpp"
+#include "sweep_size.hpp"
 
 namespace {
 
@@ -110,10 +111,13 @@ TEST_CASE("Sampled rows in lanes: every pixel's mean, branch, grey level and the
     REQUIRE(worlds.size() >= 30);
     const std::vector<Isa> paths = supported_isas();
     long long disagreeing = 0, non_finite = 0;
+    long long index = 0;  // of the (path, formula, world, run) checked, for in_sweep
     for (const Isa isa : paths) {
         PathForced forced(isa);
         for (const Formula formula : lane_formulas) {
+            ++index;
             for (const NamedWorld& named : worlds) {
+                ++index;
                 // Panes and cells (n x n a pixel) of a power of two (the
                 // reciprocal's multiplication) and not (the division, or two
                 // fmas), each with each; whole vectors of 2, 4 and 8 pixels
@@ -124,6 +128,7 @@ TEST_CASE("Sampled rows in lanes: every pixel's mean, branch, grey level and the
                 std::vector<Run> runs = {{64, 4}, {61, 9}, {67, 16}, {32, 16}, {64, 9}, {8, 1024}, {5, 1024}};
                 if (named.w > 0) runs.push_back({named.w, 4}), runs.push_back({named.w, 9});
                 for (const Run run : runs) {
+                    if (!in_sweep(++index, 3)) continue;
                     INFO(isa_name(isa) << ", " << formula_name(formula) << ", " << named.name << ", w = " << run.w
                                        << ", spp " << run.spp);
                     const PaneCheck check = check_pane(named.world, run.w, run.spp, formula);
@@ -160,10 +165,13 @@ TEST_CASE("Sampled rows in float lanes: every pixel's mean, branch, grey level a
                           {2 * scale, {0.5 * scale, 0.25 * scale, 6 * scale}, 1.1 * scale, {1.5, 1, 1}, 1, 0.5},
                           0});
     long long disagreeing = 0, non_finite = 0, skipped = 0;
+    long long index = 0;  // as above
     for (const Isa isa : supported_isas()) {
         PathForced forced(isa);
         for (const Formula formula : lane_formulas) {
+            ++index;
             for (const NamedWorld& named : worlds) {
+                ++index;
                 const ArticleWorld<float> world = world_as<float>(named.world);
                 struct Run {
                     int w, spp;
@@ -171,6 +179,7 @@ TEST_CASE("Sampled rows in float lanes: every pixel's mean, branch, grey level a
                 std::vector<Run> runs = {{64, 4}, {61, 9}, {35, 16}, {32, 16}, {5, 1024}};
                 if (named.w > 0) runs.push_back({named.w, 4});
                 for (const Run run : runs) {
+                    if (!in_sweep(++index, 3)) continue;
                     INFO(isa_name(isa) << ", " << formula_name(formula) << ", " << named.name << ", w = " << run.w
                                        << ", spp " << run.spp);
                     const PaneCheck check = check_pane(world, run.w, run.spp, formula);
