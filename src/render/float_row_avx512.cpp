@@ -1,23 +1,5 @@
 // The float rows in avx512: compiled with its instruction set
 // (src/CMakeLists.txt) and PROMYK_LANES_ISA=avx512, so every template here is
 // promyk::lanes::avx512::..., apart from the baseline's copies.
-// First: it opens the inline namespace the declarations below extend.
-#include "render/article_row_lanes.hpp"
-#include "render/article_row_isa.hpp"
-#include "render/sample_lanes.hpp"
-
-namespace promyk::lanes {
-inline namespace avx512 {  // inline, as lanes.hpp opened it in this file
-
-RowCounts draw_float_row(const ArticleRow<float>& row, const float* x_E, int w, std::uint8_t* out, Formula formula) {
-    return draw_row<Float16>(row, x_E, w, out, formula);
-}
-
-RowCounts draw_sampled_float_row(const ArticleRow<float>& row, int w, int i, int spp, int lo, int hi,
-                                 std::uint8_t* out, float* I_P, std::uint8_t* branches, Formula formula,
-                                 bool count_branches) {
-    return draw_sampled_row<Float16>(row, w, i, spp, lo, hi, out, I_P, branches, formula, count_branches);
-}
-
-}  // namespace avx512
-}  // namespace promyk::lanes
+// The wrappers are the same in every wider set: render/float_row_wide.inc.
+#include "render/float_row_wide.inc"

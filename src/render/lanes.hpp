@@ -54,6 +54,16 @@ typedef float Float8 __attribute__((vector_size(32)));
 typedef float Float16 __attribute__((vector_size(64)));
 using Mask8f = decltype(Float8{} < Float8{});
 using Mask16f = decltype(Float16{} < Float16{});
+// The widest vectors of a wider set's translation unit (PROMYK_LANES_BITS,
+// set beside PROMYK_LANES_ISA by src/CMakeLists.txt): the lane types of
+// render/*_wide.inc, the rows' body each wider set compiles.
+#if defined(PROMYK_LANES_BITS) && PROMYK_LANES_BITS == 512
+using WideDouble = Double8;
+using WideFloat = Float16;
+#elif defined(PROMYK_LANES_BITS) && PROMYK_LANES_BITS == 256
+using WideDouble = Double4;
+using WideFloat = Float8;
+#endif
 
 template <class Lane>
 struct LaneTraits;
