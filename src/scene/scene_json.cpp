@@ -33,10 +33,13 @@ std::string errno_text(int error) { return std::error_code(error, std::generic_c
 // end of the file (read() returning 0), not until a short read. A signal that
 // interrupts open() (waiting for a FIFO's writer) or read() (EINTR) is
 // promyk's interrupt (SIGINT, SIGTERM: Interrupted, exit 128 + signal) or
-// else harmless, and the call is made again.
+// else harmless, and the call is made again. A signal that came before the
+// call (promyk still starting) interrupts nothing: it is looked at before
+// each call, or a FIFO with no writer would keep promyk waiting for ever.
 Scene load_scene_file(const std::string& path) {
     int fd = -1;
     for (;;) {
+        throw_if_interrupted();
         fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
         if (fd >= 0) break;
         const int error = errno;
@@ -50,6 +53,7 @@ Scene load_scene_file(const std::string& path) {
     std::string text;
     char buffer[1 << 16];
     for (;;) {
+        throw_if_interrupted();
         const ssize_t got = ::read(file.fd, buffer, sizeof buffer);
         if (got == 0) break;
         if (got < 0) {
