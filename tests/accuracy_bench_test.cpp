@@ -224,16 +224,16 @@ TEST_CASE("a tiny run: one row per scene x spp x type x formula, the baseline ti
         CHECK(polish.find(english) == std::string::npos);
     }
 
-    const nlohmann::json json = nlohmann::json::parse(accuracy_json(report));
-    CHECK(json["bench"] == "accuracy");
-    CHECK(json["w"] == 6);
-    REQUIRE(json["results"].size() == 16);
-    for (const nlohmann::json& result : json["results"]) {
+    const nlohmann::json report_json = nlohmann::json::parse(accuracy_json(report));
+    CHECK(report_json["bench"] == "accuracy");
+    CHECK(report_json["w"] == 6);
+    REQUIRE(report_json["results"].size() == 16);
+    for (const nlohmann::json& result : report_json["results"]) {
         CHECK(result["ratio"].is_number());
         CHECK_FALSE(result.contains("untimed"));
     }
-    CHECK(json["timeable"] == true);
-    CHECK(json["scenes"][1]["scene_content"]["spheres"][0]["r"] == 1);
+    CHECK(report_json["timeable"] == true);
+    CHECK(report_json["scenes"][1]["scene_content"]["spheres"][0]["r"] == 1);
 }
 
 TEST_CASE("the bench's reference, quad/geometric, agrees with the mpmath reference to the last bit of a double",

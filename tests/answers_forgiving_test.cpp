@@ -36,15 +36,15 @@ std::vector<PixelAnswers> read(const std::string& text, Language language = Lang
 }
 
 // The traces of the pixels the answers name, in double, and the same pixels in quad (the exact values).
-struct Traced {
+struct ForgivingTraced {
     std::vector<PixelTrace> traces, exact;
 };
 
-Traced traced(const std::vector<PixelAnswers>& answers, int w = 8) {
+ForgivingTraced traced(const std::vector<PixelAnswers>& answers, int w = 8) {
     const Scene scene = article_scene();
     const TraceHeader header = trace_header(scene, w);
     const std::unique_ptr<Kernel> quad_kernel = make_kernel(scene, RealType::quad_, Formula::article, 1);
-    Traced out;
+    ForgivingTraced out;
     for (const PixelAnswers& pixel : answers) {
         out.traces.push_back(trace_pixel(scene, w, pixel.pixel.i, pixel.pixel.j));
         out.exact.push_back(quad_kernel->trace(header, pixel.pixel.i, pixel.pixel.j));
@@ -52,13 +52,13 @@ Traced traced(const std::vector<PixelAnswers>& answers, int w = 8) {
     return out;
 }
 
-std::vector<AnswerCheck> check(const std::string& text, Language language = Language::en, int w = 8) {
+std::vector<AnswerCheck> check_forgiving(const std::string& text, Language language = Language::en, int w = 8) {
     const std::vector<PixelAnswers> answers = read(text, language, w);
-    const Traced t = traced(answers, w);
+    const ForgivingTraced t = traced(answers, w);
     return check_answers(answers, t.traces, t.exact);
 }
 
-Verdict verdict_of(const std::vector<AnswerCheck>& checks, int line) {
+Verdict forgiving_verdict_of(const std::vector<AnswerCheck>& checks, int line) {
     for (const AnswerCheck& c : checks)
         if (c.answer.line == line) return c.verdict;
     FAIL("no answer at line " << line);
@@ -79,7 +79,7 @@ std::string refused(const std::string& text) {
 
 std::string report_of(const std::string& text, Language language) {
     const std::vector<PixelAnswers> answers = read(text, language);
-    const Traced t = traced(answers);
+    const ForgivingTraced t = traced(answers);
     std::string report = answers_report(check_answers(answers, t.traces, t.exact), t.traces, builtin_vocabulary(), language, t.exact);
     // An unreadable answer's lines fit 80 columns; a long one goes on, indented, on the next.
     std::size_t start = 0;
@@ -125,13 +125,13 @@ int significant(const std::string& text) {
 TEST_CASE("a bad line is one unreadable answer: the rest are checked", "[answers][forgiving]") {
     // Line 2 right, line 3 an unknown key, lines 4 and 5 the same key twice, line 6 wrong.
     const std::string text = "[3,4]\nC = 6,40\ndetla = 4,5\nEE = 4,03125\nEE = 4.03\nt = 9\n";
-    const std::vector<AnswerCheck> checks = check(text);
+    const std::vector<AnswerCheck> checks = check_forgiving(text);
     REQUIRE(checks.size() == 5);
-    CHECK(verdict_of(checks, 2) == Verdict::right);
-    CHECK(verdict_of(checks, 3) == Verdict::unreadable);
-    CHECK(verdict_of(checks, 4) == Verdict::unreadable);  // right, but which of the two counts?
-    CHECK(verdict_of(checks, 5) == Verdict::unreadable);
-    CHECK(verdict_of(checks, 6) == Verdict::wrong);
+    CHECK(forgiving_verdict_of(checks, 2) == Verdict::right);
+    CHECK(forgiving_verdict_of(checks, 3) == Verdict::unreadable);
+    CHECK(forgiving_verdict_of(checks, 4) == Verdict::unreadable);  // right, but which of the two counts?
+    CHECK(forgiving_verdict_of(checks, 5) == Verdict::unreadable);
+    CHECK(forgiving_verdict_of(checks, 6) == Verdict::wrong);
     CHECK_FALSE(all_right(checks));
     const std::string en = report_of(text, Language::en);
     INFO(en);
@@ -152,14 +152,14 @@ TEST_CASE("a bad line is one unreadable answer: the rest are checked", "[answers
     // Every kind of bad line is unreadable, not the file's end.
     for (const char* bad : {"C 6,4", "C = six", "[3;4]", "[8,0]", "P = (0,1, 0,2, 3)", "C.x = 6,4", "nearest = sphere 0",
                                    "C = 1/0", "delta@double,double = 1"}) {
-        const std::vector<AnswerCheck> some = check(std::string("t = 9\n") + bad + "\nC = 6,4\n");
+        const std::vector<AnswerCheck> some = check_forgiving(std::string("t = 9\n") + bad + "\nC = 6,4\n");
         INFO(bad);
-        CHECK(verdict_of(some, 2) == Verdict::unreadable);
-        CHECK(verdict_of(some, 1) == Verdict::wrong);
+        CHECK(forgiving_verdict_of(some, 2) == Verdict::unreadable);
+        CHECK(forgiving_verdict_of(some, 1) == Verdict::wrong);
     }
     // Under an unreadable heading, each line says so (it would be checked against the wrong pixel).
-    const std::vector<AnswerCheck> under = check("C = 6,4\n[3;5]\nt = 1\n");
-    CHECK(verdict_of(under, 3) == Verdict::unreadable);
+    const std::vector<AnswerCheck> under = check_forgiving("C = 6,4\n[3;5]\nt = 1\n");
+    CHECK(forgiving_verdict_of(under, 3) == Verdict::unreadable);
     CHECK(under.back().answer.unreadable.find("heading of line 2") != std::string::npos);
 }
 
@@ -187,7 +187,7 @@ TEST_CASE("a forgiving read still refuses a file with nothing to read: not UTF-8
 TEST_CASE("JSON answers forgive too: a key given twice, an unknown key, a fraction", "[answers][forgiving]") {
     const std::vector<PixelAnswers> answers = read(R"({"C": 6.4, "C": 6.5, "detla": 1, "EE": "129/32", "t": 1.06})");
     REQUIRE(answers.size() == 1);
-    const Traced t = traced(answers);
+    const ForgivingTraced t = traced(answers);
     const std::vector<AnswerCheck> checks = check_answers(answers, t.traces, t.exact);
     REQUIRE(checks.size() == 4);
     const auto of = [&](const std::string& pointer) {
@@ -226,21 +226,21 @@ TEST_CASE("fractions are numbers: 1/2, −3/4 with U+2212, inside points with a 
 
     // E at (3,4) of the 8 × 8 pane is ((2j+1)/w − 1, −(2i+1)/w + 1, 2) = (1/8, 1/8, 2), 0.125 exactly in double.
     const std::vector<AnswerCheck> at34 =
-        check("[3,4]\nE.x = 1/8\nE = (1/8; 0,125; 4/2)\nE.y = 2/16\nE.z = 2/1\nEE = 1/8\nE.x = 1/7\n");
-    CHECK(verdict_of(at34, 2) == Verdict::unreadable);  // E.x twice (lines 2 and 7)
-    CHECK(verdict_of(at34, 3) == Verdict::right);
-    CHECK(verdict_of(at34, 4) == Verdict::right);
-    CHECK(verdict_of(at34, 5) == Verdict::right);
-    CHECK(verdict_of(at34, 6) == Verdict::wrong);
-    const std::vector<AnswerCheck> x34 = check("[3,4]\nE.x = 1/8\nE.y = 1/7\nEE = 129/32\n");
-    CHECK(verdict_of(x34, 2) == Verdict::right);
-    CHECK(verdict_of(x34, 3) == Verdict::wrong);
-    CHECK(verdict_of(x34, 4) == Verdict::right);  // |E|² = 1/64 + 1/64 + 4
+        check_forgiving("[3,4]\nE.x = 1/8\nE = (1/8; 0,125; 4/2)\nE.y = 2/16\nE.z = 2/1\nEE = 1/8\nE.x = 1/7\n");
+    CHECK(forgiving_verdict_of(at34, 2) == Verdict::unreadable);  // E.x twice (lines 2 and 7)
+    CHECK(forgiving_verdict_of(at34, 3) == Verdict::right);
+    CHECK(forgiving_verdict_of(at34, 4) == Verdict::right);
+    CHECK(forgiving_verdict_of(at34, 5) == Verdict::right);
+    CHECK(forgiving_verdict_of(at34, 6) == Verdict::wrong);
+    const std::vector<AnswerCheck> x34 = check_forgiving("[3,4]\nE.x = 1/8\nE.y = 1/7\nEE = 129/32\n");
+    CHECK(forgiving_verdict_of(x34, 2) == Verdict::right);
+    CHECK(forgiving_verdict_of(x34, 3) == Verdict::wrong);
+    CHECK(forgiving_verdict_of(x34, 4) == Verdict::right);  // |E|² = 1/64 + 1/64 + 4
     // −3/4 is x_E of column 0 in a 4 × 4 pane: (2·0+1)/4 − 1.
-    const std::vector<AnswerCheck> w4 = check("[1,0]\nE.x = \u22123/4\nE.y = \u20133/4\nE = (\u22123/4; 1/4; 2)\n", Language::pl, 4);
-    CHECK(verdict_of(w4, 2) == Verdict::right);
-    CHECK(verdict_of(w4, 3) == Verdict::wrong);  // y_E = −3/4 + 1 = 1/4
-    CHECK(verdict_of(w4, 4) == Verdict::right);
+    const std::vector<AnswerCheck> w4 = check_forgiving("[1,0]\nE.x = \u22123/4\nE.y = \u20133/4\nE = (\u22123/4; 1/4; 2)\n", Language::pl, 4);
+    CHECK(forgiving_verdict_of(w4, 2) == Verdict::right);
+    CHECK(forgiving_verdict_of(w4, 3) == Verdict::wrong);  // y_E = −3/4 + 1 = 1/4
+    CHECK(forgiving_verdict_of(w4, 4) == Verdict::right);
     const std::string pl = report_of("[3,4]\nE.y = 1/7\n", Language::pl);
     INFO(pl);
     CHECK(pl.find("✗ E.y = 1/7: źle; obliczona wartość to 0,125\n") != std::string::npos);
@@ -260,25 +260,25 @@ TEST_CASE("more digits than a double holds: right when at least as near the exac
     REQUIRE(fabsq(farther - true_t) > fabsq(static_cast<__float128>(t_double) - true_t));
 
     const std::vector<AnswerCheck> checks =
-        check("[5,1]\nt = 1.3667504955662156\nC = 6.4000000000000004\nEE = 4.53125000000000000001\n"
+        check_forgiving("[5,1]\nt = 1.3667504955662156\nC = 6.4000000000000004\nEE = 4.53125000000000000001\n"
               "delta = 0,042812500000003695\n[5,1]\n");
-    CHECK(verdict_of(checks, 2) == Verdict::right_more_digits);
-    CHECK(verdict_of(checks, 5) == Verdict::right);  // double's own digits, rounded as typed
-    CHECK(verdict_of(checks, 4) == Verdict::wrong);  // |E|² is exactly 4.53125
-    CHECK(verdict_of(check("[5,1]\nt = 1.3667504955662120\n"), 2) == Verdict::wrong);
-    CHECK(verdict_of(check("[5,1]\nt = 1.3667504955662138\n"), 2) == Verdict::right);
+    CHECK(forgiving_verdict_of(checks, 2) == Verdict::right_more_digits);
+    CHECK(forgiving_verdict_of(checks, 5) == Verdict::right);  // double's own digits, rounded as typed
+    CHECK(forgiving_verdict_of(checks, 4) == Verdict::wrong);  // |E|² is exactly 4.53125
+    CHECK(forgiving_verdict_of(check_forgiving("[5,1]\nt = 1.3667504955662120\n"), 2) == Verdict::wrong);
+    CHECK(forgiving_verdict_of(check_forgiving("[5,1]\nt = 1.3667504955662138\n"), 2) == Verdict::right);
     // No more digits than a double holds (15): rounded as before (double's t rounds down to ...621).
-    CHECK(verdict_of(check("[5,1]\nt = 1.36675049556622\n"), 2) == Verdict::wrong_way);
+    CHECK(forgiving_verdict_of(check_forgiving("[5,1]\nt = 1.36675049556622\n"), 2) == Verdict::wrong_way);
     // 16 digits, nearer the true t: more than a double holds.
-    CHECK(verdict_of(check("[5,1]\nt = 1.366750495566216\n"), 2) == Verdict::right_more_digits);
+    CHECK(forgiving_verdict_of(check_forgiving("[5,1]\nt = 1.366750495566216\n"), 2) == Verdict::right_more_digits);
     // A fraction nearer the true t than double's t, but not double's t: right.
-    CHECK(verdict_of(check("[5,1]\nt = 13667504955662155/10000000000000000\n"), 2) == Verdict::right_nearer);
+    CHECK(forgiving_verdict_of(check_forgiving("[5,1]\nt = 13667504955662155/10000000000000000\n"), 2) == Verdict::right_nearer);
     // Without the quad trace the 17 digits are wrong against double's t alone, and the check says it needs the exact value.
     const std::vector<PixelAnswers> alone = read("[5,1]\nt = 1.3667504955662156\nC = 6.40000000000000035527\nt_hit = 2\n");
     const std::vector<AnswerCheck> without = check_answers(alone, traced(alone).traces);
     REQUIRE(without.size() == 3);
-    CHECK(verdict_of(without, 3) == Verdict::right);  // C: double's 6.4 to 20 decimals
-    CHECK(verdict_of(without, 2) == Verdict::wrong);
+    CHECK(forgiving_verdict_of(without, 3) == Verdict::right);  // C: double's 6.4 to 20 decimals
+    CHECK(forgiving_verdict_of(without, 2) == Verdict::wrong);
     for (const AnswerCheck& c : without) CHECK(c.needs_exact == (c.answer.line == 2));  // t_hit = 2: one digit, rounded
     const std::string en = report_of("[5,1]\nt = 1.3667504955662156\n", Language::en);
     CHECK(en.find("✓ t = 1.3667504955662156: right, and more digits than a double holds") != std::string::npos);
@@ -323,7 +323,7 @@ TEST_CASE("property: the computed value typed in full is right, one unit off in 
                         if (significant(nudged(rounded, by)) <= 15) off[by > 0 ? 0 : 1] += name + " = " + nudged(rounded, by) + "\n";
                 }
             }
-            const std::vector<AnswerCheck> all_full = check(full), all_near = check(near);
+            const std::vector<AnswerCheck> all_full = check_forgiving(full), all_near = check_forgiving(near);
             for (const AnswerCheck& c : all_full) {
                 INFO(i << "," << j << " " << c.answer.key << c.answer.component << " = " << c.answer.text);
                 CHECK(c.verdict == Verdict::right);
@@ -333,7 +333,7 @@ TEST_CASE("property: the computed value typed in full is right, one unit off in 
                 CHECK(c.verdict == Verdict::right);
             }
             for (const std::string& text : off)
-                for (const AnswerCheck& c : check(text)) {
+                for (const AnswerCheck& c : check_forgiving(text)) {
                     INFO(i << "," << j << " " << c.answer.key << c.answer.component << " = " << c.answer.text);
                     CHECK_FALSE(right(c.verdict));
                     ++checked;

@@ -46,7 +46,7 @@ std::string fault_of(const std::string& text) {
 // A number rounded to `decimals` as a student would write it: fmt's rounding,
 // independent of the checker's (the article's pixels have no exact tie at the
 // decimals used here, where fmt's halves-to-even would differ).
-std::string written(double value, int decimals, Language language) {
+std::string answers_written(double value, int decimals, Language language) {
     std::string text = fmt::format("{:.{}f}", value, decimals);
     if (language == Language::pl) {
         if (text.front() == '-') text.replace(0, 1, "\u2212");
@@ -65,14 +65,14 @@ std::string answer_file(const std::vector<PixelTrace>& traces, int decimals, Lan
             std::string value;
             if (const Vec3d* v = std::get_if<Vec3d>(&step.value)) {
                 const char* separator = language == Language::pl ? "; " : ", ";
-                value = "(" + written(v->x, decimals, language) + separator + written(v->y, decimals, language) + separator +
-                        written(v->z, decimals, language) + ")";
+                value = "(" + answers_written(v->x, decimals, language) + separator + answers_written(v->y, decimals, language) + separator +
+                        answers_written(v->z, decimals, language) + ")";
             } else {
-                value = written(std::get<double>(step.value), decimals, language);
+                value = answers_written(std::get<double>(step.value), decimals, language);
             }
             out += fmt::format("{} = {}   # step\n", key_name(step.key), value);
         }
-        out += "I_P = " + written(trace.result, decimals, language) + "\n\n";
+        out += "I_P = " + answers_written(trace.result, decimals, language) + "\n\n";
     }
     return out;
 }
@@ -249,9 +249,9 @@ TEST_CASE("JSON answers: a flat object with numbers as typed, and a whole trace"
     CHECK(flat[0].answers[0].numbers[0].scale == 2);
     CHECK(all_right(check_answers(flat, traces)));
     for (const PixelTrace& trace : traces) {
-        std::string json;
-        append_trace_json(json, trace);
-        const std::vector<PixelAnswers> whole = parse_answers(json, "t.json", builtin_vocabulary(), Language::pl, {0, 0}, 8);
+        std::string json_text;
+        append_trace_json(json_text, trace);
+        const std::vector<PixelAnswers> whole = parse_answers(json_text, "t.json", builtin_vocabulary(), Language::pl, {0, 0}, 8);
         REQUIRE(whole.size() == 1);
         CHECK(whole[0].pixel.i == trace.header.i);
         CHECK(whole[0].pixel.j == trace.header.j);
@@ -261,9 +261,9 @@ TEST_CASE("JSON answers: a flat object with numbers as typed, and a whole trace"
         CHECK(std::all_of(checks.begin(), checks.end(), [](const AnswerCheck& c) { return c.verdict == Verdict::right; }));
     }
     // Another pane's trace is not this lesson's.
-    std::string json;
-    append_trace_json(json, trace_pixel(article_scene(), 16, 3, 4));
-    CHECK(fault_of(json) == "/w");
+    std::string json_text;
+    append_trace_json(json_text, trace_pixel(article_scene(), 16, 3, 4));
+    CHECK(fault_of(json_text) == "/w");
 }
 
 TEST_CASE("answers name values inside groups: sphere[1].t = 1.85, light[0].sphere[0].s_1, and a whole general trace",
@@ -282,7 +282,7 @@ TEST_CASE("answers name values inside groups: sphere[1].t = 1.85, light[0].spher
     const std::string text = fmt::format(
         "[7,2]\nlight[0].sphere[0].s_1 = {}\nplane[0].t_plane = 1,2571\nt_hit = 1.2571\nlight[0].K.y = 4,1\n"
         "[3,4]\nsphere[1].t = {}\nsphere[0].t = 9\nlight[0].plane[0].s =\n",
-        written(s1, 4, Language::en), written(t1, 3, Language::pl));
+        answers_written(s1, 4, Language::en), answers_written(t1, 3, Language::pl));
     const std::vector<AnswerCheck> checks =
         check_answers(parse_answers(text, "a.txt", builtin_vocabulary(), Language::en, {7, 2}, 8), traces);
     REQUIRE(checks.size() == 7);
@@ -300,7 +300,7 @@ TEST_CASE("answers name values inside groups: sphere[1].t = 1.85, light[0].spher
     CHECK(checks[6].verdict == Verdict::blank);
     const std::string report = answers_report(checks, traces, builtin_vocabulary(), Language::en);
     INFO(report);
-    CHECK(report.find("✓ s₁ (light[0].sphere[0].s_1) = " + written(s1, 4, Language::en) + ": right") != std::string::npos);
+    CHECK(report.find("✓ s₁ (light[0].sphere[0].s_1) = " + answers_written(s1, 4, Language::en) + ": right") != std::string::npos);
     // A word is shown filled in: there is nothing to check.
     CHECK(fault_of("nearest = sphere 0\n") == "line 1");
     CHECK(fault_of("cone[0].t = 1\n") == "line 1");
@@ -308,9 +308,9 @@ TEST_CASE("answers name values inside groups: sphere[1].t = 1.85, light[0].spher
     CHECK(fault_of("{\"sphere[0].t\": 1.06}").empty());
     // A whole trace of a general scene: every number, in its group, is right.
     for (const PixelTrace& trace : traces) {
-        std::string json;
-        append_trace_json(json, trace);
-        const std::vector<PixelAnswers> whole = parse_answers(json, "t.json", builtin_vocabulary(), Language::en, {0, 0}, 8);
+        std::string json_text;
+        append_trace_json(json_text, trace);
+        const std::vector<PixelAnswers> whole = parse_answers(json_text, "t.json", builtin_vocabulary(), Language::en, {0, 0}, 8);
         REQUIRE(whole.size() == 1);
         std::size_t numbers = 1;  // and I_P
         for (const Step& step : trace.steps) numbers += std::holds_alternative<std::string>(step.value) ? 0 : 1;

@@ -12,7 +12,7 @@ using namespace promyk;
 
 namespace {
 
-TypedNumber number(const std::string& text) {
+TypedNumber diff_number(const std::string& text) {
     const std::optional<TypedNumber> parsed = parse_typed_number(text);
     REQUIRE(parsed);
     return *parsed;
@@ -42,15 +42,15 @@ const DiffStep& step_of(const DiffResult& result, const std::string& path) {
 }  // namespace
 
 TEST_CASE("Digits that agree are computed exactly") {
-    CHECK(digits_agreeing(number("3.14159"), number("3.14160")) == 5);
+    CHECK(digits_agreeing(diff_number("3.14159"), diff_number("3.14160")) == 5);
     // float's 0.1 is 0.100000001490116119384765625: its shortest double text agrees to 8 digits.
-    CHECK(digits_agreeing(number("0.1"), number("0.10000000149011612")) == 8);
-    CHECK(digits_agreeing(number("0.1"), *exact_value_of("0.1", RealType::float_)) == 8);
-    CHECK_FALSE(digits_agreeing(number("6.40"), number("6,4")).has_value());  // equal: all digits
-    CHECK(digits_agreeing(number("1"), number("-1")) == 0);
-    CHECK(digits_agreeing(number("0"), number("1e-17")) == 0);
-    CHECK(digits_agreeing(number("999.95"), number("1000.05")) == 4);  // 0.1 apart: within half a unit of the 4th digit (1000)
-    CHECK(digits_agreeing(number("1.0005"), number("1.0000")) == 4);   // exactly half a unit of the 4th digit
+    CHECK(digits_agreeing(diff_number("0.1"), diff_number("0.10000000149011612")) == 8);
+    CHECK(digits_agreeing(diff_number("0.1"), *exact_value_of("0.1", RealType::float_)) == 8);
+    CHECK_FALSE(digits_agreeing(diff_number("6.40"), diff_number("6,4")).has_value());  // equal: all digits
+    CHECK(digits_agreeing(diff_number("1"), diff_number("-1")) == 0);
+    CHECK(digits_agreeing(diff_number("0"), diff_number("1e-17")) == 0);
+    CHECK(digits_agreeing(diff_number("999.95"), diff_number("1000.05")) == 4);  // 0.1 apart: within half a unit of the 4th digit (1000)
+    CHECK(digits_agreeing(diff_number("1.0005"), diff_number("1.0000")) == 4);   // exactly half a unit of the 4th digit
 }
 
 TEST_CASE("Exact values of the real types") {
@@ -162,7 +162,7 @@ TEST_CASE("The report and the JSON name the first divergence") {
     CHECK_THAT(en, Catch::Contains("7 significant digits agree"));
     const std::string pl = diff_report(result, a, b, {}, builtin_vocabulary(), Language::pl);
     CHECK_THAT(pl, Catch::Contains("Pierwsza rozbieżność: SS (|S|²): A 10,240001"));
-    const std::string json = diff_json(result, a, b, {});
-    CHECK_THAT(json, Catch::Contains("\"first_divergence\":\"SS\""));
-    CHECK_THAT(json, Catch::Contains("\"agree\":false"));
+    const std::string json_text = diff_json(result, a, b, {});
+    CHECK_THAT(json_text, Catch::Contains("\"first_divergence\":\"SS\""));
+    CHECK_THAT(json_text, Catch::Contains("\"agree\":false"));
 }

@@ -23,13 +23,14 @@
 #include "trace/recorder.hpp"
 #include "trace/trace_text.hpp"
 #include "trace/vocabulary.hpp"
+#include "same_bits.hpp"
 
 using namespace promyk;
 
 namespace {
 
 // The step `key` at the top level or in the first group that has it.
-const Step& step_of(const std::vector<Step>& steps, Key key) {
+const Step& lost_step_of(const std::vector<Step>& steps, Key key) {
     for (const Step& step : steps)
         if (step.key == key) return step;
     FAIL("no step " << key_name(key));
@@ -50,12 +51,7 @@ double full_digits_of(const std::string& real) {
     return full_digits<quad>();
 }
 
-bool same_bits(double a, double b) {
-    std::uint64_t x, y;
-    std::memcpy(&x, &a, sizeof x);
-    std::memcpy(&y, &b, sizeof y);
-    return x == y;
-}
+using promyk::testing::same_bits;
 
 // The keys whose steps carry an estimate (docs/traces.md: digits lost; the schema).
 const std::set<Key> estimated_keys = {Key::C,   Key::c_0, Key::delta, Key::delta_fma, Key::t,     Key::t_far,
@@ -96,32 +92,32 @@ TEST_CASE("digits lost: the article's pixel (3, 4), by hand", "[digits-lost]") {
     const PixelTrace trace = trace_pixel(article_scene(), 8, 3, 4);
     // delta = C^2 - |E|^2 (|S|^2 - r^2) with C = 6.4, C^2 = 40.96 the larger
     // operand (|E|^2 (|S|^2 - r^2) = 4.03125 * 9.03 = 36.4), delta = 4.5578125.
-    CHECK(step_of(trace.steps, Key::delta).digits_lost == Approx(std::log10(40.96 / 4.5578125)).epsilon(1e-12));
+    CHECK(lost_step_of(trace.steps, Key::delta).digits_lost == Approx(std::log10(40.96 / 4.5578125)).epsilon(1e-12));
     // t's numerator C - sqrt(delta): 6.4 against 6.4 - 2.13490...
     const double root = std::sqrt(4.5578125);
-    CHECK(step_of(trace.steps, Key::t).digits_lost == Approx(std::log10(6.4 / (6.4 - root))).epsilon(1e-9));
+    CHECK(lost_step_of(trace.steps, Key::t).digits_lost == Approx(std::log10(6.4 / (6.4 - root))).epsilon(1e-9));
     // C = 0.125*0 + 0.125*0 + 2*3.2: nothing cancels.
-    CHECK(step_of(trace.steps, Key::C).digits_lost == 0);
+    CHECK(lost_step_of(trace.steps, Key::C).digits_lost == 0);
     // N = P - S: the largest operand 3.2 (S.z) against N's largest
     // component, its z, P.z - 3.2.
-    const Vec3d P = std::get<Vec3d>(step_of(trace.steps, Key::P).value);
-    CHECK(step_of(trace.steps, Key::N).digits_lost == Approx(std::log10(3.2 / (3.2 - P.z))).epsilon(1e-9));
+    const Vec3d P = std::get<Vec3d>(lost_step_of(trace.steps, Key::P).value);
+    CHECK(lost_step_of(trace.steps, Key::N).digits_lost == Approx(std::log10(3.2 / (3.2 - P.z))).epsilon(1e-9));
     // K = L - P: the largest operand P.z (about 2.1) against K's largest
     // component, its x, 1.5 - P.x.
-    CHECK(step_of(trace.steps, Key::K).digits_lost == Approx(std::log10(P.z / (1.5 - P.x))).epsilon(1e-9));
+    CHECK(lost_step_of(trace.steps, Key::K).digits_lost == Approx(std::log10(P.z / (1.5 - P.x))).epsilon(1e-9));
     // D: three positive terms, nothing cancels.
-    CHECK(step_of(trace.steps, Key::D).digits_lost == 0);
+    CHECK(lost_step_of(trace.steps, Key::D).digits_lost == 0);
     // No estimate where nothing is subtracted.
     for (const Key key : {Key::E, Key::EE, Key::SS, Key::Delta, Key::P, Key::KK, Key::cos_alpha})
-        CHECK(std::isnan(step_of(trace.steps, key).digits_lost));
+        CHECK(std::isnan(lost_step_of(trace.steps, key).digits_lost));
     // The stable formula's q adds two numbers of one sign: 0.
     const PixelTrace stable = trace_pixel(article_scene(), 8, 3, 4, RealType::double_, Formula::stable);
-    CHECK(step_of(stable.steps, Key::q).digits_lost == 0);
+    CHECK(lost_step_of(stable.steps, Key::q).digits_lost == 0);
     // JSON: rounded to one decimal, only where there is an estimate.
     std::string line;
     append_trace_json(line, trace);
-    const nlohmann::json json = nlohmann::json::parse(line);
-    for (const auto& step : json["steps"]) {
+    const nlohmann::json line_json = nlohmann::json::parse(line);
+    for (const auto& step : line_json["steps"]) {
         if (step["key"] == "delta") CHECK(step["digits_lost"] == 1.0);
         if (step["key"] == "t") CHECK(step["digits_lost"] == 0.2);
         if (step["key"] == "EE" || step["key"] == "E") CHECK_FALSE(step.contains("digits_lost"));
@@ -141,17 +137,17 @@ TEST_CASE("digits lost: a unit sphere 10^4 away loses every digit of delta in fl
 
     // In double, delta keeps about 7 of its 16 digits: the estimate is the hand's.
     const auto in_double = article_steps(Vec3d{x, 0, 2}, Vec3d{0, 0, 1e4}, 1.0);
-    CHECK(step_of(in_double, Key::delta).digits_lost == Approx(by_hand).margin(1e-6));
+    CHECK(lost_step_of(in_double, Key::delta).digits_lost == Approx(by_hand).margin(1e-6));
 
     // In float, delta is rounding noise: the estimate from the float values
     // (the larger of C^2 and |E|^2 (|S|^2 - r^2) against delta), and nearly
     // every one of float's 7.2 digits.
     const auto in_float = article_steps(Vec3<float>{float(x), 0, 2}, Vec3<float>{0, 0, 1e4f}, 1.0f);
-    const double C = std::get<double>(step_of(in_float, Key::C).value);
-    const double EE = std::get<double>(step_of(in_float, Key::EE).value);
-    const double SS = std::get<double>(step_of(in_float, Key::SS).value);
-    const double delta = std::get<double>(step_of(in_float, Key::delta).value);
-    const double lost = step_of(in_float, Key::delta).digits_lost;
+    const double C = std::get<double>(lost_step_of(in_float, Key::C).value);
+    const double EE = std::get<double>(lost_step_of(in_float, Key::EE).value);
+    const double SS = std::get<double>(lost_step_of(in_float, Key::SS).value);
+    const double delta = std::get<double>(lost_step_of(in_float, Key::delta).value);
+    const double lost = lost_step_of(in_float, Key::delta).digits_lost;
     if (delta == 0) {
         CHECK(lost == full_digits<float>());
     } else {
@@ -165,14 +161,14 @@ TEST_CASE("digits lost: a unit sphere 10^4 away loses every digit of delta in fl
     // to 4 · 1e8 in float (10^8 - 1 needs 27 bits): delta = 0 exactly, every
     // digit lost.
     const auto centre = article_steps(Vec3<float>{0, 0, 2}, Vec3<float>{0, 0, 1e4f}, 1.0f);
-    CHECK(std::get<double>(step_of(centre, Key::delta).value) == 0);
-    CHECK(step_of(centre, Key::delta).digits_lost == full_digits<float>());
+    CHECK(std::get<double>(lost_step_of(centre, Key::delta).value) == 0);
+    CHECK(lost_step_of(centre, Key::delta).digits_lost == full_digits<float>());
 
     // The geometric formula: delta_g = r^2 - |l|^2 = 1 - 0.81 cancels little.
     RecordingRecorder record;
     intersect_sphere_geometric(Vec3<float>{float(x), 0, 2}, Vec3<float>{0, 0, 1e4f}, 1.0f, record);
     const auto geometric = record.take_steps();
-    CHECK(step_of(geometric, Key::delta_g).digits_lost < 1);
+    CHECK(lost_step_of(geometric, Key::delta_g).digits_lost < 1);
 }
 
 TEST_CASE("digits lost: the text trace counts 3 digits or more, and marks and advises only losses that matter",

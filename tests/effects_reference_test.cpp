@@ -34,6 +34,7 @@
 
 #include "render/stages.hpp"
 #include "render/trace_pixel.hpp"
+#include "same_bits.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_json.hpp"
 #include "trace/keys.hpp"
@@ -75,14 +76,8 @@ long double text_long_double(const json& text) {
     return value;
 }
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-
-std::string show(long double v) {
-    std::ostringstream out;
-    out.precision(21);
-    out << v;
-    return out.str();
-}
+using promyk::testing::same_bits;
+using promyk::testing::show_digits;
 
 // The reference's value of one channel (a grey scene's result is a number,
 // a coloured scene's [r, g, b]).
@@ -122,9 +117,10 @@ void check_pixel(const promyk::Scene& scene, const json& pixel, bool coloured, c
         const long double exact = text_long_double(channel(result.at("exact"), coloured, k));
         const long double bound = text_long_double(channel(result.at("error_bound"), coloured, k));
         const long double error = std::fabs(static_cast<long double>(value) - exact);
-        INFO("channel " << k << ": engine " << show(value) << ", reference double " << show(expected) << ", exact "
-                        << show(exact) << ", enclosure [" << show(lo) << ", " << show(hi) << "], error " << show(error)
-                        << " (bound " << show(bound) << ")");
+        INFO("channel " << k << ": engine " << show_digits(value) << ", reference double " << show_digits(expected)
+                        << ", exact " << show_digits(exact) << ", enclosure [" << show_digits(lo) << ", "
+                        << show_digits(hi) << "], error " << show_digits(error) << " (bound " << show_digits(bound)
+                        << ")");
         CHECK(same_bits(value, expected));
         CHECK(lo <= value);
         CHECK(value <= hi);

@@ -18,6 +18,7 @@
 #include "scene/scene.hpp"
 #include "scene/scene_json.hpp"
 #include "render/stages.hpp"
+#include "same_bits.hpp"
 
 using namespace promyk;
 
@@ -63,7 +64,7 @@ Scene base(double z_E) {
 
 // The floor y = -1 seen by pixel (1, 0) of a 2 x 2 pane at z_E = 1:
 // E = (-1/2, -1/2, 1), n.E = -1/2, n.Q = -1, t = 2, P = (-1, -1, 2), all exact.
-Scene floor_scene() {
+Scene effects_floor_scene() {
     Scene scene = base(1);
     scene.planes = {Plane{{0, -1, 0}, {0, 1, 0}}};
     scene.lights = {Light{{-1, 2, 2}, 0.75}};  // straight above P, 3 units up
@@ -117,7 +118,7 @@ TEST_CASE("a ray parallel to a plane misses it without a division", "[effects]")
 }
 
 TEST_CASE("a light straight above a point of the floor: cos alpha = 1, I_P = I", "[effects]") {
-    const PixelTrace trace = trace_pixel(floor_scene(), 2, 1, 0);
+    const PixelTrace trace = trace_pixel(effects_floor_scene(), 2, 1, 0);
     CHECK(number(trace, Key::t_plane, "plane 0") == 2);
     CHECK(vector(trace, Key::P) == Vec3d{-1, -1, 2});
     CHECK(vector(trace, Key::K, "light 0") == Vec3d{0, 3, 0});
@@ -157,7 +158,7 @@ TEST_CASE("a sphere behind the eye is not drawn, its trace shows the program's t
 }
 
 TEST_CASE("Phong's peak: a light mirrored from the eye about the normal gives R = V", "[effects]") {
-    Scene scene = floor_scene();
+    Scene scene = effects_floor_scene();
     // V = -P / |P| with P = (-1, -1, 2); its mirror about N = (0, 1, 0) is
     // along (-1, 1, 2) from P: a light there makes R = V, so RV = 1.
     scene.lights = {Light{{-2, 0, 4}, 0.5}};
@@ -180,7 +181,7 @@ TEST_CASE("Phong's peak: a light mirrored from the eye about the normal gives R 
 }
 
 TEST_CASE("a sphere exactly between P and the light shadows P, ambient remains", "[effects]") {
-    Scene scene = floor_scene();
+    Scene scene = effects_floor_scene();
     scene.shadows = true;
     scene.spheres = {Sphere{{-1, 0.5, 2}, 0.5}};  // centre halfway between P = (-1, -1, 2) and L = (-1, 2, 2)
     scene.materials = {Material{0.25, 1, 0, 10, white}};
@@ -214,7 +215,7 @@ TEST_CASE("a sphere exactly between P and the light shadows P, ambient remains",
 
 TEST_CASE("with two lights: lit if one reaches, shadowed if every faced one is blocked, dark if none faces",
           "[effects]") {
-    Scene scene = floor_scene();
+    Scene scene = effects_floor_scene();
     scene.shadows = true;
     scene.spheres = {Sphere{{-1, 0.5, 2}, 0.5}};
     scene.lights = {Light{{-1, 2, 2}, 0.75}, Light{{-1, -3, 2}, 0.5}};  // above (blocked), below (faces away)
@@ -302,7 +303,7 @@ std::vector<Scene> example_scene_files() {
     return scenes;
 }
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using promyk::testing::same_bits;
 
 }  // namespace
 

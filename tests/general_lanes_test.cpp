@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "geometry/sphere_formulas.hpp"
 #include "general_scenes_support.hpp"
+#include "geometry/sphere_formulas.hpp"
 #include "image/quantize.hpp"
 #include "isa_forced.hpp"
 #include "render/general_kernel.hpp"
@@ -29,6 +29,7 @@
 #include "render/pane.hpp"
 #include "render/stages.hpp"
 #include "render/world.hpp"
+#include "same_bits.hpp"
 #include "scene/scene_json.hpp"
 #include "sweep_size.hpp"
 #include "trace/recorder.hpp"
@@ -78,7 +79,7 @@ Traced traced_pane(const World<double, Rgb>& world, const Stages& s, int w, cons
     return with_stage_switches(s, [&](auto sw) { return traced_pane<decltype(sw)>(world, w, rows); });
 }
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using promyk::testing::same_bits;
 
 struct Mismatches {
     int bits = 0, branches = 0, bytes = 0, counts = 0;

@@ -25,6 +25,7 @@
 #include "render/sampling.hpp"
 #include "render/stages.hpp"
 #include "render/world.hpp"
+#include "same_bits.hpp"
 #include "trace/recorder.hpp"
 
 namespace {
@@ -74,12 +75,9 @@ Sampled<Rgb> sampled_pane(const World<double, Rgb>& world, const Stages& s, int 
     return with_stage_switches(s, [&](auto sw) { return sampled_pane<decltype(sw)>(world, w, spp); });
 }
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-bool same_bits(const Vec3d& a, const Vec3d& b) {
-    return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z);
-}
+using promyk::testing::same_bits;
 
-struct Mismatches {
+struct SampleMismatches {
     int bits = 0, branches = 0, bytes = 0, counts = 0, kernel = 0;
 };
 
@@ -99,9 +97,9 @@ int count_mismatches(const RowCounts& drawn, const RowCounts& want) {
 // lanes' own row (means and branches), and the kernel's row (its bytes and
 // counts: GeneralKernel::row draws it in lanes).
 template <bool Rgb>
-Mismatches compare_pane(const Scene& scene, const World<double, Rgb>& world, const Stages& stages, int w, int spp,
-                        const Sampled<Rgb>& sampled) {
-    Mismatches found;
+SampleMismatches compare_sampled_pane(const Scene& scene, const World<double, Rgb>& world, const Stages& stages, int w, int spp,
+                              const Sampled<Rgb>& sampled) {
+    SampleMismatches found;
     const GeneralLaneStages lane_stages{stages.shadows, stages.ambient, stages.objects, stages.phong};
     const std::unique_ptr<Kernel> kernel = make_general_kernel(scene, RealType::double_, Formula::article, spp);
     const int channels = Rgb ? 3 : 1;
@@ -137,7 +135,7 @@ Mismatches compare_pane(const Scene& scene, const World<double, Rgb>& world, con
 
 // Checks the scene at each spp on every path.
 template <bool Rgb>
-void check_scene(const NamedScene& named, const std::vector<int>& spps, const std::vector<int>& panes) {
+void check_sampled_scene(const NamedScene& named, const std::vector<int>& spps, const std::vector<int>& panes) {
     const Stages stages = plan_stages(named.scene);
     const World<double, Rgb> world = compile_world<double, Rgb>(named.scene);
     for (const int spp : spps) {
@@ -146,7 +144,7 @@ void check_scene(const NamedScene& named, const std::vector<int>& spps, const st
             for (const Isa isa : supported_isas()) {
                 PathForced forced(isa);
                 INFO(named.name << ", w = " << w << ", spp = " << spp << ", " << isa_name(isa));
-                const Mismatches found = compare_pane(named.scene, world, stages, w, spp, sampled);
+                const SampleMismatches found = compare_sampled_pane(named.scene, world, stages, w, spp, sampled);
                 CHECK(found.bits == 0);
                 CHECK(found.branches == 0);
                 CHECK(found.bytes == 0);
@@ -157,15 +155,15 @@ void check_scene(const NamedScene& named, const std::vector<int>& spps, const st
     }
 }
 
-void check_scene(const NamedScene& named, const std::vector<int>& spps, const std::vector<int>& panes) {
+void check_sampled_scene(const NamedScene& named, const std::vector<int>& spps, const std::vector<int>& panes) {
     if (plan_stages(named.scene).colour)
-        check_scene<true>(named, spps, panes);
+        check_sampled_scene<true>(named, spps, panes);
     else
-        check_scene<false>(named, spps, panes);
+        check_sampled_scene<false>(named, spps, panes);
 }
 
-void check_scene(const NamedScene& named, const std::vector<int>& spps) {
-    check_scene(named, spps, named.panes);
+void check_sampled_scene(const NamedScene& named, const std::vector<int>& spps) {
+    check_sampled_scene(named, spps, named.panes);
 }
 
 // Panes of two vectors and more (the loop that keeps two in flight) and
@@ -177,13 +175,13 @@ const std::vector<int> sample_panes = {7, 19};
 TEST_CASE("General sampled rows in lanes: one sphere and one light, plain or not, hostile too, every path, "
           "bit-identical to the traced path's samples",
           "[sample_lanes][lanes][isa][non-finite]") {
-    for (const NamedScene& named : one_sphere_scenes(24)) check_scene(named, {4, 9}, sample_panes);
+    for (const NamedScene& named : one_sphere_scenes(24)) check_sampled_scene(named, {4, 9}, sample_panes);
 }
 
 TEST_CASE("General sampled rows in lanes: the example scenes, every path, bit-identical to the traced path's samples",
           "[sample_lanes][lanes][isa]") {
     int checked = 0;
-    for (const NamedScene& named : example_scenes()) check_scene(named, {4, 9}, {19, 24}), ++checked;
+    for (const NamedScene& named : example_scenes()) check_sampled_scene(named, {4, 9}, {19, 24}), ++checked;
     CHECK(checked >= 10);
 }
 
@@ -191,11 +189,11 @@ TEST_CASE("General sampled rows in lanes: the hard cases, hostile and random sce
           "path, bit-identical to the traced path's samples",
           "[sample_lanes][lanes][isa][hard][non-finite]") {
     int checked = 0;
-    for (const NamedScene& named : hard_case_scenes()) check_scene(named, {4}, sample_panes), ++checked;
+    for (const NamedScene& named : hard_case_scenes()) check_sampled_scene(named, {4}, sample_panes), ++checked;
     CHECK(checked >= 10);
-    for (const NamedScene& named : hostile_scenes(24)) check_scene(named, {4, 9}, {5, 9});
-    for (const NamedScene& named : random_scenes(24)) check_scene(named, {4, 9}, sample_panes);
-    for (const NamedScene& named : tie_scenes()) check_scene(named, {4, 9}, sample_panes);
+    for (const NamedScene& named : hostile_scenes(24)) check_sampled_scene(named, {4, 9}, {5, 9});
+    for (const NamedScene& named : random_scenes(24)) check_sampled_scene(named, {4, 9}, sample_panes);
+    for (const NamedScene& named : tie_scenes()) check_sampled_scene(named, {4, 9}, sample_panes);
 }
 
 // w a power of two: with n one too, the points computed without dividing
@@ -205,11 +203,11 @@ TEST_CASE("General sampled rows in lanes: panes of a power of two, whole grids (
           "path, bit-identical to the traced path's samples",
           "[sample_lanes][lanes][isa]") {
     int checked = 0;
-    for (const NamedScene& named : example_scenes()) check_scene(named, {4, 9, 16}, {2, 32}), ++checked;
+    for (const NamedScene& named : example_scenes()) check_sampled_scene(named, {4, 9, 16}, {2, 32}), ++checked;
     CHECK(checked >= 10);
-    for (const NamedScene& named : one_sphere_scenes(24)) check_scene(named, {4, 64}, {4, 16});
-    for (const NamedScene& named : random_scenes(24)) check_scene(named, {16}, {16});
-    for (const NamedScene& named : tie_scenes()) check_scene(named, {4}, {16});
+    for (const NamedScene& named : one_sphere_scenes(24)) check_sampled_scene(named, {4, 64}, {4, 16});
+    for (const NamedScene& named : random_scenes(24)) check_sampled_scene(named, {16}, {16});
+    for (const NamedScene& named : tie_scenes()) check_sampled_scene(named, {4}, {16});
 }
 
 TEST_CASE("General sampled rows in lanes: 1024 samples a pixel, every branch's field full, every path",
@@ -231,8 +229,8 @@ TEST_CASE("General sampled rows in lanes: 1024 samples a pixel, every branch's f
     CHECK(bottom.branches[static_cast<int>(Branch::shadowed)] == 1024);
     CHECK(sampled.rows[0].disagreeing == 3);
     CHECK(sampled.rows[1].disagreeing > 0);
-    check_scene(shade, {1024});
+    check_sampled_scene(shade, {1024});
     const std::vector<NamedScene> one = one_sphere_scenes(0);
-    check_scene(one[1], {1024}, {2});   // shadows
-    check_scene(one[17], {1024}, {2});  // the eye inside, shadows
+    check_sampled_scene(one[1], {1024}, {2});   // shadows
+    check_sampled_scene(one[17], {1024}, {2});  // the eye inside, shadows
 }

@@ -12,13 +12,14 @@
 #include <string>
 #include <vector>
 
+#include "collect_rows.hpp"
 #include "image/bitmap_font.hpp"
 #include "image/canvas.hpp"
 #include "image/framed_writer.hpp"
-#include "image/legend.hpp"
-#include "image/pane_labels.hpp"
 #include "image/image_writer.hpp"
+#include "image/legend.hpp"
 #include "image/map_legend.hpp"
+#include "image/pane_labels.hpp"
 #include "render/maps.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
@@ -81,13 +82,7 @@ std::string write_pane(const TempDir& dir, const Pane& pane, int scale, bool gri
     return path;
 }
 
-struct Collect final : RenderSink {
-    std::vector<std::uint8_t> bytes;
-    void image_rows(const std::uint8_t* rows, int count) override {
-        bytes.insert(bytes.end(), rows, rows + static_cast<std::size_t>(count) * row_bytes);
-    }
-    std::size_t row_bytes = 0;
-};
+using promyk::testing::Collect;
 
 Pane article_pane(int w) {
     Collect sink;

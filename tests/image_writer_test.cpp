@@ -55,12 +55,8 @@ void write_image(ImageWriter& writer, const std::vector<std::uint8_t>& pixels) {
     }
 }
 
-std::string read_bytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-void write_bytes(const std::string& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
+using testing::read_bytes;
+using testing::write_bytes;
 
 struct Grey {
     int width = 0;

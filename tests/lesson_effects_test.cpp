@@ -13,26 +13,27 @@
 
 #include <fmt/format.h>
 
+#include "flat_text.hpp"
 #include "lesson/lesson_check.hpp"
 #include "lesson/lesson_library.hpp"
 #include "lesson/lesson_render.hpp"
+#include "parsed_lesson.hpp"
 #include "render/stages.hpp"
 #include "render/trace_pixel.hpp"
 #include "scene/scene_json.hpp"
 #include "trace/intensity_formula.hpp"
 #include "trace/trace_text.hpp"
 #include "util/wrap.hpp"
-#include "flat_text.hpp"
 
 using namespace promyk;
 
 namespace {
 
-const std::string source = PROMYK_SOURCE_DIR;
+const std::string lesson_source = PROMYK_SOURCE_DIR;
 
-std::vector<std::string> example_scenes() {
+std::vector<std::string> effects_example_scenes() {
     std::vector<std::string> out;
-    for (const auto& entry : std::filesystem::directory_iterator(source + "/lessons/scenes"))
+    for (const auto& entry : std::filesystem::directory_iterator(lesson_source + "/lessons/scenes"))
         if (entry.path().extension() == ".json" && entry.path().string().find(".schema.") == std::string::npos)
             out.push_back(entry.path().filename().string());
     std::sort(out.begin(), out.end());
@@ -53,13 +54,7 @@ std::vector<std::string> foreign_symbols(const Scene& scene) {
     return out;
 }
 
-Lesson parsed(const std::string& text, Language language = Language::en) {
-    std::vector<LessonProblem> problems;
-    Lesson lesson = parse_lesson(text, "x.md", language, problems);
-    check_lesson(lesson, builtin_vocabulary(), problems);
-    for (const LessonProblem& problem : problems) FAIL_CHECK(problem.line << ": " << problem.message);
-    return lesson;
-}
+using promyk::testing::parsed;
 
 LessonView view_of(const Lesson& lesson, const Scene& scene, std::vector<PixelTrace> traces, const std::string& file,
                    int w) {
@@ -71,7 +66,7 @@ LessonView view_of(const Lesson& lesson, const Scene& scene, std::vector<PixelTr
     return view;
 }
 
-double number(const PixelTrace& trace, const std::string& path) {
+double lesson_number(const PixelTrace& trace, const std::string& path) {
     const std::optional<StepValue> value = lesson_value(trace, path);
     REQUIRE(value);
     return std::get<double>(*value);
@@ -83,8 +78,8 @@ TEST_CASE("no formula shown mentions an effect the scene does not use", "[lesson
     const Lesson rows = parsed(
         "---\nname: demo\ntitle: T\nsummary: S\n---\n## [a] A\n\n= I_P light[*].contribution\n\n::: pixel\n"
         "({i}, {j}): {branch}\n:::\n");
-    for (const std::string& file : example_scenes()) {
-        const Scene scene = load_scene_file(source + "/lessons/scenes/" + file);
+    for (const std::string& file : effects_example_scenes()) {
+        const Scene scene = load_scene_file(lesson_source + "/lessons/scenes/" + file);
         const std::vector<std::string> foreign = foreign_symbols(scene);
         const std::string effects = effect_set(scene);
         // A pixel of every branch of an 8 × 8 pane.
@@ -136,7 +131,7 @@ TEST_CASE("no formula shown mentions an effect the scene does not use", "[lesson
     }
     // The property can fail: everything.json's full formula has every letter.
     CHECK(intensity_formula("lights+shadows+phong+colour").formula.find("⊙") != std::string::npos);
-    CHECK(effect_set(load_scene_file(source + "/lessons/scenes/everything.json")) == "lights+shadows+phong+colour");
+    CHECK(effect_set(load_scene_file(lesson_source + "/lessons/scenes/everything.json")) == "lights+shadows+phong+colour");
     CHECK(intensity_formula("lights+shadows+phong+colour").formula.find("vₖ") != std::string::npos);
 }
 
@@ -201,10 +196,10 @@ TEST_CASE("the planes exercise's needs hold exactly where the floor is the neare
 TEST_CASE("Phong's squarings and the shadow ray's entry point are trace steps", "[lesson][effects][trace]") {
     // Phong: RV^2, RV^4, ... are the squarings power() makes, recorded while 2^k <= n.
     for (const int n : {1, 2, 20, 31, 10000}) {
-        Scene scene = load_scene_file(source + "/lessons/scenes/phong.json");
+        Scene scene = load_scene_file(lesson_source + "/lessons/scenes/phong.json");
         scene.materials[0].exponent = n;
         const PixelTrace trace = trace_pixel(scene, 8, 3, 5);
-        const double RV = number(trace, "light[0].RV");
+        const double RV = lesson_number(trace, "light[0].RV");
         REQUIRE(RV > 0);
         double square = RV;
         for (int k = 1; k <= squaring_count; ++k) {
@@ -212,15 +207,15 @@ TEST_CASE("Phong's squarings and the shadow ray's entry point are trace steps", 
             INFO("n = " << n << ", " << path);
             if ((1 << k) <= n) {
                 square = square * square;
-                CHECK(number(trace, path) == square);  // the same products, the same bits
+                CHECK(lesson_number(trace, path) == square);  // the same products, the same bits
             } else {
                 CHECK_FALSE(lesson_value(trace, path));
             }
         }
-        CHECK(number(trace, "light[0].RV_n") == Approx(std::pow(RV, n)).epsilon(1e-12));
+        CHECK(lesson_number(trace, "light[0].RV_n") == Approx(std::pow(RV, n)).epsilon(1e-12));
     }
     // Shadows: P + s1 K lies on the blocking sphere.
-    const Scene shadows = load_scene_file(source + "/lessons/scenes/shadows.json");
+    const Scene shadows = load_scene_file(lesson_source + "/lessons/scenes/shadows.json");
     int entered = 0;
     for (int i = 0; i < 8; ++i) {
         for (int j = 0; j < 8; ++j) {
@@ -231,12 +226,12 @@ TEST_CASE("Phong's squarings and the shadow ray's entry point are trace steps", 
             }
             const Vec3d P = std::get<Vec3d>(*lesson_value(trace, "P"));
             const Vec3d K = std::get<Vec3d>(*lesson_value(trace, "light[0].K"));
-            const double s_1 = number(trace, "light[0].sphere[0].s_1");
+            const double s_1 = lesson_number(trace, "light[0].sphere[0].s_1");
             const Vec3d P_s1 = std::get<Vec3d>(*lesson_value(trace, "light[0].sphere[0].P_s1"));
             CHECK(P_s1.x == P.x + s_1 * K.x);
             CHECK(P_s1.y == P.y + s_1 * K.y);
             CHECK(P_s1.z == P.z + s_1 * K.z);
-            CHECK(number(trace, "light[0].sphere[0].d_s1") == Approx(shadows.spheres[0].r).epsilon(1e-12));
+            CHECK(lesson_number(trace, "light[0].sphere[0].d_s1") == Approx(shadows.spheres[0].r).epsilon(1e-12));
             ++entered;
         }
     }
@@ -258,7 +253,7 @@ TEST_CASE("the phong and shadows lessons show the chain and the point for every 
                 for (std::size_t k = 0; k < lesson->steps.size(); ++k) text += render_step(view, k) + render_answers(view, k);
                 INFO("pixel (" << i << ", " << j << ")");
                 // RV⁸ in the answer, to four decimals: this pixel's own.
-                std::string RV_8 = fmt::format("{:.4f}", number(trace, "light[0].RV_8"));
+                std::string RV_8 = fmt::format("{:.4f}", lesson_number(trace, "light[0].RV_8"));
                 if (language == Language::pl) RV_8[1] = ',';
                 CHECK(flat(text).find("RV⁸ = " + RV_8) != std::string::npos);
             }
@@ -275,7 +270,7 @@ TEST_CASE("the phong and shadows lessons show the chain and the point for every 
                 const LessonView view = view_of(*lesson9, shadows, {trace}, "shadows.json", 8);
                 const std::string text = flat(render_answers(view, lesson9->steps.size() - 1));
                 INFO("pixel (" << i << ", " << j << "): " << text);
-                CHECK(text.find("|P + s₁K − S| = " + shown_number(number(trace, "light[0].sphere[0].d_s1"), language, 4)) !=
+                CHECK(text.find("|P + s₁K − S| = " + shown_number(lesson_number(trace, "light[0].sphere[0].d_s1"), language, 4)) !=
                       std::string::npos);
             }
         }

@@ -7,39 +7,35 @@
 #include <map>
 #include <optional>
 
+#include "flat_text.hpp"
 #include "geometry/unit_normal.hpp"
 #include "lesson/lesson_check.hpp"
 #include "lesson/lesson_library.hpp"
 #include "lesson/lesson_render.hpp"
+#include "parsed_lesson.hpp"
 #include "render/trace_pixel.hpp"
 #include "trace/intensity_formula.hpp"
 #include "trace/messages.hpp"
 #include "trace/number_text.hpp"
 #include "trace/trace_text.hpp"
-#include "flat_text.hpp"
 
 using namespace promyk;
 
 namespace {
 
-std::string with_body(const std::string& body, const std::string& header = "") {
+std::string guarded_lesson(const std::string& body, const std::string& header = "") {
     return "---\nname: demo\ntitle: T\nsummary: S\n" + header + "---\n" + body;
 }
 
-Lesson parsed(const std::string& text, Language language = Language::en) {
-    std::vector<LessonProblem> problems;
-    Lesson lesson = parse_lesson(text, "x.md", language, problems);
-    check_lesson(lesson, builtin_vocabulary(), problems);
-    for (const LessonProblem& problem : problems) FAIL_CHECK(problem.line << ": " << problem.message);
-    return lesson;
-}
+using promyk::testing::parsed;
 
 // A lesson's whole text for the pixels on a scene, as the runner shows it.
-struct Run {
+struct RunText {
     Scene scene;
     LessonView view;
     std::shared_ptr<std::map<std::pair<int, int>, PixelTrace>> pane = std::make_shared<std::map<std::pair<int, int>, PixelTrace>>();
-    Run(const Lesson& lesson, Scene s, const std::vector<std::pair<int, int>>& pixels, const std::string& file, int w = 8)
+    RunText(const Lesson& lesson, Scene s, const std::vector<std::pair<int, int>>& pixels, const std::string& file,
+            int w = 8)
         : scene(std::move(s)), view{lesson, builtin_vocabulary(), {}, scene.name, w} {
         view.scene = &scene;
         view.scene_file = file;
@@ -86,8 +82,9 @@ TEST_CASE("a block may be guarded by conditions on values: has:, no:, >, <=", "[
     CHECK_FALSE(parse_condition("D>0,5"));
     CHECK_FALSE(parse_condition("has:"));
 
-    const Lesson lesson = parsed(with_body("## [a] A\n\n::: pixel D>0\nfacing ({i}, {j})\n:::\n\n::: has:t D<=0\nturned ({i}, {j})\n:::\n\n"
-                                           "::: no:t\nmissed ({i}, {j})\n:::\n\n::: lit cos_alpha>0.9\nbright ({i}, {j})\n:::\n"));
+    const Lesson lesson = parsed(
+        guarded_lesson("## [a] A\n\n::: pixel D>0\nfacing ({i}, {j})\n:::\n\n::: has:t D<=0\nturned ({i}, {j})\n:::\n\n"
+                    "::: no:t\nmissed ({i}, {j})\n:::\n\n::: lit cos_alpha>0.9\nbright ({i}, {j})\n:::\n"));
     REQUIRE(lesson.steps[0].parts.size() == 4);
     CHECK(lesson.steps[0].parts[0].branches.empty());
     CHECK(lesson.steps[0].parts[3].branches == std::vector<std::string>{"lit"});
@@ -96,7 +93,7 @@ TEST_CASE("a block may be guarded by conditions on values: has:, no:, >, <=", "[
     std::vector<std::pair<int, int>> all;
     for (int i = 0; i < 8; ++i)
         for (int j = 0; j < 8; ++j) all.emplace_back(i, j);
-    const Run run(lesson, scene, all, "article");
+    const RunText run(lesson, scene, all, "article");
     const std::string text = render_step(run.view, 0);
     for (const PixelTrace& trace : run.view.traces) {
         const std::string at = "(" + std::to_string(trace.header.i) + ", " + std::to_string(trace.header.j) + ")";
@@ -113,8 +110,8 @@ TEST_CASE("a block may be guarded by conditions on values: has:, no:, >, <=", "[
 
 TEST_CASE("a step's needs: with no chosen pixel that has them, the step names the first pixel of the pane that does", "[lesson][guards]") {
     for (const Language language : {Language::en, Language::pl}) {
-        const Lesson lesson = parsed(with_body("## [a] A\n\n::: needs lit\n\nFor pixel ({i}, {j}), compute cos α.\n\n"
-                                               "::: answer\ncos α = {cos_alpha:4} at ({i}, {j})\n:::\n"),
+        const Lesson lesson = parsed(guarded_lesson("## [a] A\n\n::: needs lit\n\nFor pixel ({i}, {j}), compute cos α.\n\n"
+                                                 "::: answer\ncos α = {cos_alpha:4} at ({i}, {j})\n:::\n"),
                                      language);
         REQUIRE(lesson.steps[0].needs_branches == std::vector<std::string>{"lit"});
         const Scene scene = article_scene();
@@ -126,7 +123,7 @@ TEST_CASE("a step's needs: with no chosen pixel that has them, the step names th
         REQUIRE(first.first >= 0);
         const std::string hint = "--pixel " + std::to_string(first.first) + "," + std::to_string(first.second);
         {
-            const Run run(lesson, scene, {{0, 0}}, "article");  // a miss only
+            const RunText run(lesson, scene, {{0, 0}}, "article");  // a miss only
             const std::string text = flat(render_step(run.view, 0));
             INFO(text);
             CHECK(text.find(hint) != std::string::npos);
@@ -136,7 +133,7 @@ TEST_CASE("a step's needs: with no chosen pixel that has them, the step names th
         }
         {
             // The step's pixel is the first chosen one that has its needs: prose and answer agree.
-            const Run run(lesson, scene, {{0, 0}, {5, 1}, {3, 4}}, "article");
+            const RunText run(lesson, scene, {{0, 0}, {5, 1}, {3, 4}}, "article");
             const std::string text = flat(run.text());
             INFO(text);
             CHECK(text.find(hint) == std::string::npos);
@@ -148,8 +145,8 @@ TEST_CASE("a step's needs: with no chosen pixel that has them, the step names th
 }
 
 TEST_CASE("an answer whose values no chosen pixel reached is replaced by the pixel that has them", "[lesson][guards]") {
-    const Lesson lesson = parsed(with_body("## [a] A\n\nQuestion.\n\n::: answer\nt = {t:4}\n:::\n"));
-    const Run run(lesson, article_scene(), {{0, 0}}, "article");
+    const Lesson lesson = parsed(guarded_lesson("## [a] A\n\nQuestion.\n\n::: answer\nt = {t:4}\n:::\n"));
+    const RunText run(lesson, article_scene(), {{0, 0}}, "article");
     const std::string text = flat(run.text());
     INFO(text);
     CHECK(text.find("t = —") == std::string::npos);
@@ -157,44 +154,45 @@ TEST_CASE("an answer whose values no chosen pixel reached is replaced by the pix
 }
 
 TEST_CASE("a wildcard row makes one row an object, and a row about an object the scene lacks is left out", "[lesson][guards]") {
-    const Lesson lesson = parsed(with_body("## [a] A\n\n= sphere[*].t light[1].D\n"));
-    const Run two(lesson, example("two_spheres.json"), {{3, 4}}, "two_spheres.json");
+    const Lesson lesson = parsed(guarded_lesson("## [a] A\n\n= sphere[*].t light[1].D\n"));
+    const RunText two(lesson, example("two_spheres.json"), {{3, 4}}, "two_spheres.json");
     const std::string text = render_step(two.view, 0);
     INFO(text);
     CHECK(text.find("t (sphere 0)") != std::string::npos);
     CHECK(text.find("t (sphere 1)") != std::string::npos);
     CHECK(text.find("sphere 2") == std::string::npos);
     CHECK(text.find("light 1") == std::string::npos);  // one light in two_spheres
-    const Run lights(lesson, example("two_lights.json"), {{3, 4}}, "two_lights.json");
+    const RunText lights(lesson, example("two_lights.json"), {{3, 4}}, "two_lights.json");
     CHECK(render_step(lights.view, 0).find("N·K (light 1)") != std::string::npos);
     CHECK(expanded_keys(lights.view, {"light[*].sphere[*].s_1"}).size() == 2);
 }
 
 TEST_CASE("a scene block is shown on its scene only, a scene without the lesson's effect says so", "[lesson][guards]") {
-    const Lesson lesson = parsed(with_body("## [a] A\n\n::: scene\nOWN\n:::\n\n::: scene floor.json\nFLOOR\n:::\n\nALWAYS\n",
-                                           "scene: shadows.json\neffect: shadows\n"));
-    const Run own(lesson, example("shadows.json"), {{3, 4}}, "shadows.json");
+    const Lesson lesson =
+        parsed(guarded_lesson("## [a] A\n\n::: scene\nOWN\n:::\n\n::: scene floor.json\nFLOOR\n:::\n\nALWAYS\n",
+                           "scene: shadows.json\neffect: shadows\n"));
+    const RunText own(lesson, example("shadows.json"), {{3, 4}}, "shadows.json");
     std::string text = own.text();
     CHECK(text.find("OWN") != std::string::npos);
     CHECK(text.find("FLOOR") == std::string::npos);
     CHECK(text.find("ALWAYS") != std::string::npos);
     CHECK(text.find("has no shadows") == std::string::npos);
-    const Run article(lesson, article_scene(), {{3, 4}}, "article");
+    const RunText article(lesson, article_scene(), {{3, 4}}, "article");
     text = flat(article.text());
     CHECK(text.find("OWN") == std::string::npos);
     CHECK(text.find("ALWAYS") != std::string::npos);
     CHECK(text.find("has no shadows, which this lesson is about: see its example scene, shadows.json") != std::string::npos);
     CHECK(text.find("\"article\" has no shadows") != std::string::npos);
-    const Run floor(lesson, example("floor.json"), {{3, 4}}, "floor.json");
+    const RunText floor(lesson, example("floor.json"), {{3, 4}}, "floor.json");
     CHECK(floor.text().find("FLOOR") != std::string::npos);
 }
 
 TEST_CASE("the computed figure draws the pane by branch and marks the chosen pixels", "[lesson][guards]") {
-    const Lesson lesson = parsed(with_body("## [a] A\n\n::: figure pane\n"));
+    const Lesson lesson = parsed(guarded_lesson("## [a] A\n\n::: figure pane\n"));
     REQUIRE(lesson.steps[0].parts.size() == 1);
     CHECK(lesson.steps[0].parts[0].kind == PartKind::figure);
     const Scene scene = article_scene();
-    const Run run(lesson, scene, {{3, 4}, {0, 0}}, "article");
+    const RunText run(lesson, scene, {{3, 4}, {0, 0}}, "article");
     const std::string text = render_step(run.view, 0);
     INFO(text);
     std::vector<std::string> rows;
@@ -212,7 +210,7 @@ TEST_CASE("the computed figure draws the pane by branch and marks the chosen pix
         }
     CHECK(flat(text).find("1 pixel (3, 4) (lit side)") != std::string::npos);
     std::vector<LessonProblem> problems;
-    parse_lesson(with_body("## [a] A\n\n::: figure cone\n"), "x.md", Language::en, problems);
+    parse_lesson(guarded_lesson("## [a] A\n\n::: figure cone\n"), "x.md", Language::en, problems);
     CHECK(problems.size() == 1);
 }
 
@@ -224,10 +222,10 @@ TEST_CASE("the formula of I_P is the one of the scene's effects, in lessons and 
     CHECK(effect_set(example("colour.json")) == "colour");
     CHECK(intensity_formula("lambert").formula == builtin_vocabulary().find("I_P")->formula);
     CHECK(intensity_formula("colour").formula.find("m ⊙") != std::string::npos);
-    const Lesson lesson = parsed(with_body("## [a] A\n\n= I_P\n"));
+    const Lesson lesson = parsed(guarded_lesson("## [a] A\n\n= I_P\n"));
     for (const std::string name : {"two_lights.json", "shadows.json", "phong.json", "colour.json"}) {
         const Scene scene = example(name);
-        const Run run(lesson, scene, {first_of(scene, Branch::lit)}, name);
+        const RunText run(lesson, scene, {first_of(scene, Branch::lit)}, name);
         const std::string formula = intensity_formula(effect_set(scene)).formula;
         INFO(name);
         CHECK(render_step(run.view, 0).find("I_P = " + formula) != std::string::npos);
@@ -237,22 +235,22 @@ TEST_CASE("the formula of I_P is the one of the scene's effects, in lessons and 
             if (!((c == ' ' || c == '\n') && !footer.empty() && footer.back() == ' ')) footer += c == '\n' ? ' ' : c;
         CHECK(footer.find("I_P = " + formula + " = ") != std::string::npos);
     }
-    const Run article(lesson, article_scene(), {{3, 4}}, "article");
+    const RunText article(lesson, article_scene(), {{3, 4}}, "article");
     CHECK(render_step(article.view, 0).find("I_P = I·D / (r·√|K|²)") != std::string::npos);
     // A light's contribution without Phong or colour is not shown with their letters.
-    const Lesson rows = parsed(with_body("## [a] A\n\n= light[0].contribution\n"));
-    const Run lights(rows, example("two_lights.json"), {{2, 2}}, "two_lights.json");
+    const Lesson rows = parsed(guarded_lesson("## [a] A\n\n= light[0].contribution\n"));
+    const RunText lights(rows, example("two_lights.json"), {{2, 2}}, "two_lights.json");
     CHECK(render_step(lights.view, 0).find("= I·max(0, cos α)") != std::string::npos);
-    const Run shadows(rows, example("shadows.json"), {{2, 2}}, "shadows.json");
+    const RunText shadows(rows, example("shadows.json"), {{2, 2}}, "shadows.json");
     CHECK(render_step(shadows.view, 0).find("= v·I·max(0, cos α)") != std::string::npos);
-    const Run colour(rows, example("colour.json"), {{2, 2}}, "colour.json");
+    const RunText colour(rows, example("colour.json"), {{2, 2}}, "colour.json");
     CHECK(render_step(colour.view, 0).find("= c ⊙ (m ⊙ (I·max(0, cos α)))") != std::string::npos);
 }
 
 TEST_CASE("lesson checks read the new forms (conditions, needs, {i} in prose) and report their faults", "[lesson][guards]") {
     const auto problems = [](const std::string& body) {
         std::vector<LessonProblem> found;
-        const Lesson lesson = parse_lesson(with_body(body), "x.md", Language::en, found);
+        const Lesson lesson = parse_lesson(guarded_lesson(body), "x.md", Language::en, found);
         check_lesson(lesson, builtin_vocabulary(), found);
         return found;
     };
@@ -306,7 +304,7 @@ TEST_CASE("lesson phong: what it says about n's binary digits holds for the scen
         // and the product those digits call for, computed here.
         {
             const int n = own.materials[0].exponent;
-            const Run run(lesson, own, {{3, 5}, {2, 4}}, "phong.json");
+            const RunText run(lesson, own, {{3, 5}, {2, 4}}, "phong.json");
             const std::string text = flat(run.text());
             INFO(text);
             const std::string product = squarings_product(n);
@@ -321,7 +319,7 @@ TEST_CASE("lesson phong: what it says about n's binary digits holds for the scen
         for (const int n : {7, 64, 10000}) {
             Scene scene = own;
             scene.materials[0].exponent = n;
-            const Run run(lesson, scene, {{3, 5}, {2, 4}}, "shiny.json");
+            const RunText run(lesson, scene, {{3, 5}, {2, 4}}, "shiny.json");
             const std::string text = flat(run.text());
             INFO("n = " << n << ": " << text);
             CHECK(text.find("10100") == std::string::npos);
@@ -355,7 +353,7 @@ TEST_CASE("lesson planes: n·E is the plane's own, never y_E, on a tilted plane"
     REQUIRE(E.y != NE);  // the floor's shortcut would be false here
     for (const Language language : {Language::en, Language::pl}) {
         const Lesson lesson = builtin_lesson("planes", language);
-        const Run run(lesson, tilted, {on_plane}, "tilted.json", w);
+        const RunText run(lesson, tilted, {on_plane}, "tilted.json", w);
         const std::string text = flat(run.text());
         INFO(text);
         CHECK(text.find("n̂·E = y_E") == std::string::npos);
@@ -366,6 +364,6 @@ TEST_CASE("lesson planes: n·E is the plane's own, never y_E, on a tilted plane"
     const Scene own = example("floor_wall.json");
     REQUIRE(own.planes[0].n == Vec3d{0, 1, 0});
     const Lesson lesson = builtin_lesson("planes", Language::en);
-    const Run run(lesson, own, {{14, 3}}, "floor_wall.json", w);
+    const RunText run(lesson, own, {{14, 3}}, "floor_wall.json", w);
     CHECK(flat(run.text()).find("for the floor n̂·E = y_E") != std::string::npos);
 }

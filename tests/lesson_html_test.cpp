@@ -28,7 +28,7 @@ std::string unescaped(std::string text) {
 
 // The numbers a reader sees, in order: math ($…$, span.math) and Markdown's
 // list markers left out (HTML numbers its lists itself).
-std::vector<std::string> numbers_of(const std::string& text) {
+std::vector<std::string> html_numbers_of(const std::string& text) {
     static const std::regex number(R"((?:−|-)?\d+(?:[.,]\d+)*(?:e(?:[+-]|−)?\d+)?)");
     std::vector<std::string> out;
     for (std::sregex_iterator it(text.begin(), text.end(), number), end; it != end; ++it) out.push_back(it->str());
@@ -38,13 +38,13 @@ std::vector<std::string> numbers_of(const std::string& text) {
 std::vector<std::string> markdown_numbers(std::string markdown) {
     markdown = std::regex_replace(markdown, std::regex(R"(\$[^$\n]+\$)"), " ");
     markdown = std::regex_replace(markdown, std::regex(R"((^|\n) *\d+\. )"), "$1");
-    return numbers_of(markdown);
+    return html_numbers_of(markdown);
 }
 
 std::vector<std::string> html_numbers(std::string html) {
     html = std::regex_replace(html, std::regex(R"(<span class="math">[^<]*</span>)"), " ");
     html = std::regex_replace(html, std::regex(R"(<[^>]*>)"), " ");
-    return numbers_of(unescaped(html));
+    return html_numbers_of(unescaped(html));
 }
 
 std::string run_lesson(const Lesson& lesson, const Scene& scene, LessonFormat format, std::vector<LessonPixel> pixels,

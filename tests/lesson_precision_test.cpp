@@ -39,15 +39,15 @@ void write(const std::string& path, const std::string& text) {
 
 // The article's program for pixel (i, j) of a w × w pane, in Real, up to Δ/4.
 template <class Real>
-struct Article {
+struct PrecisionArticle {
     Real EE, SS, C, delta;
 };
 
 template <class Real>
-Article<Real> article_delta(int w, int i, int j, Real z_E, Real x_S, Real y_S, Real z_S, Real r) {
+PrecisionArticle<Real> article_delta(int w, int i, int j, Real z_E, Real x_S, Real y_S, Real z_S, Real r) {
     const Real y_E = -Real(2 * i + 1) / Real(w) + Real(1);
     const Real x_E = Real(2 * j + 1) / Real(w) - Real(1);
-    Article<Real> a;
+    PrecisionArticle<Real> a;
     a.EE = x_E * x_E + y_E * y_E + z_E * z_E;
     a.SS = x_S * x_S + y_S * y_S + z_S * z_S;
     a.C = x_E * x_S + y_E * y_S + z_E * z_S;
@@ -68,7 +68,7 @@ float geometric_delta(int w, int i, int j, float z_E, float z_S, float r) {
 }
 
 // A number as English text shows it: the minus sign U+2212.
-std::string english(std::string text) {
+std::string precision_english(std::string text) {
     for (std::size_t at; (at = text.find('-')) != std::string::npos;) text.replace(at, 1, "\u2212");
     return text;
 }
@@ -76,10 +76,10 @@ std::string english(std::string text) {
 std::string polish(std::string text) {
     for (char& c : text)
         if (c == '.') c = ',';
-    return english(text);
+    return precision_english(text);
 }
 
-const std::string far_sphere = std::string(PROMYK_SOURCE_DIR) + "/lessons/scenes/far_sphere.json";
+const std::string precision_far_sphere = std::string(PROMYK_SOURCE_DIR) + "/lessons/scenes/far_sphere.json";
 
 }  // namespace
 
@@ -105,9 +105,9 @@ TEST_CASE("a placeholder's settings qualifier is read and checked", "[lesson][pr
 
 TEST_CASE("lesson precision shows float's and double's own numbers of the far sphere", "[lesson][precision]") {
     // Pixel (3, 4) of the 8 × 8 pane; the sphere r = 1 at (0, 0, 10000), z_E = 10000.
-    const Article<float> f = article_delta<float>(8, 3, 4, 10000.0f, 0.0f, 0.0f, 10000.0f, 1.0f);
-    const Article<double> d = article_delta<double>(8, 3, 4, 10000.0, 0.0, 0.0, 10000.0, 1.0);
-    const Article<double> d00 = article_delta<double>(8, 0, 0, 10000.0, 0.0, 0.0, 10000.0, 1.0);
+    const PrecisionArticle<float> f = article_delta<float>(8, 3, 4, 10000.0f, 0.0f, 0.0f, 10000.0f, 1.0f);
+    const PrecisionArticle<double> d = article_delta<double>(8, 3, 4, 10000.0, 0.0, 0.0, 10000.0, 1.0);
+    const PrecisionArticle<double> d00 = article_delta<double>(8, 0, 0, 10000.0, 0.0, 0.0, 10000.0, 1.0);
     CHECK(f.delta <= 0);  // float loses the sphere ...
     CHECK(d.delta > 0);   // ... double keeps it
     const float g = geometric_delta(8, 3, 4, 10000.0f, 10000.0f, 1.0f);
@@ -117,12 +117,12 @@ TEST_CASE("lesson precision shows float's and double's own numbers of the far sp
     const Run en = run_promyk("lesson precision --lang en --format markdown");
     INFO(en.out);
     REQUIRE(en.exit_code == 0);
-    CHECK_THAT(en.out, Catch::Contains("Float: Δ/4 = " + english(promyk::real_text(f.delta)) + "."));
-    CHECK_THAT(en.out, Catch::Contains("Double: Δ/4 = " + english(promyk::real_text(d.delta)) + ";"));
-    CHECK_THAT(en.out, Catch::Contains("float gives " + english(promyk::real_text(f.EE)) + "."));
-    CHECK_THAT(en.out, Catch::Contains("exactly, " + english(promyk::real_text(d.EE)) + ";"));
-    CHECK_THAT(en.out, Catch::Contains("Δ_g in float is " + english(promyk::real_text(g)) + ";"));
-    CHECK_THAT(en.out, Catch::Contains("(float, geometric) | " + english(promyk::real_text(g)) + " |"));  // the table's float row
+    CHECK_THAT(en.out, Catch::Contains("Float: Δ/4 = " + precision_english(promyk::real_text(f.delta)) + "."));
+    CHECK_THAT(en.out, Catch::Contains("Double: Δ/4 = " + precision_english(promyk::real_text(d.delta)) + ";"));
+    CHECK_THAT(en.out, Catch::Contains("float gives " + precision_english(promyk::real_text(f.EE)) + "."));
+    CHECK_THAT(en.out, Catch::Contains("exactly, " + precision_english(promyk::real_text(d.EE)) + ";"));
+    CHECK_THAT(en.out, Catch::Contains("Δ_g in float is " + precision_english(promyk::real_text(g)) + ";"));
+    CHECK_THAT(en.out, Catch::Contains("(float, geometric) | " + precision_english(promyk::real_text(g)) + " |"));  // the table's float row
     CHECK_THAT(en.out, Catch::Contains("What precision costs"));
 
     const Run pl = run_promyk("lesson precision --lang pl --format markdown");
@@ -138,8 +138,8 @@ TEST_CASE("lesson --real float prints float's exact text, in both languages", "[
     // The article's scene, pixel (3, 4), in float: 8 significant digits
     // tell float's Δ/4 (4.5578117) from double's (4.5578125); the default 4
     // would show both as 4.558.
-    const Article<float> f = article_delta<float>(8, 3, 4, 2.0f, 0.0f, 0.0f, 3.2f, 1.1f);
-    const Article<double> d = article_delta<double>(8, 3, 4, 2.0, 0.0, 0.0, 3.2, 1.1);
+    const PrecisionArticle<float> f = article_delta<float>(8, 3, 4, 2.0f, 0.0f, 0.0f, 3.2f, 1.1f);
+    const PrecisionArticle<double> d = article_delta<double>(8, 3, 4, 2.0, 0.0, 0.0, 3.2, 1.1);
     const std::string float_text = promyk::real_text(f.delta);
     REQUIRE(float_text == "4.5578117");
     REQUIRE(promyk::real_text(d.delta) == "4.557812500000004");
@@ -166,7 +166,7 @@ TEST_CASE("lesson --real float prints float's exact text, in both languages", "[
 
 TEST_CASE("worksheet and answers in float, and qualified answers", "[lesson][precision]") {
     promyk::testing::TempDir dir;
-    const Article<float> f = article_delta<float>(8, 3, 4, 2.0f, 0.0f, 0.0f, 3.2f, 1.1f);
+    const PrecisionArticle<float> f = article_delta<float>(8, 3, 4, 2.0f, 0.0f, 0.0f, 3.2f, 1.1f);
 
     const Run sheet = run_promyk("lesson sphere --real float --pixel 3,4 --lang en --worksheet --key");
     INFO(sheet.out);

@@ -20,12 +20,13 @@
 #include "article_literal.hpp"
 #include "render/trace_pixel.hpp"
 #include "render/tracer.hpp"
+#include "same_bits.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_json.hpp"
+#include "sweep_size.hpp"
 #include "trace/keys.hpp"
 #include "trace/recorder.hpp"
 #include "trace/trace.hpp"
-#include "sweep_size.hpp"
 
 namespace {
 
@@ -35,11 +36,7 @@ using promyk::Vec3d;
 using promyk_literal::LiteralLocals;
 using promyk_literal::LiteralReturn;
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-
-bool same_bits(const Vec3d& a, const Vec3d& b) {
-    return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z);
-}
+using promyk::testing::same_bits;
 
 std::string show(double v) {
     std::ostringstream out;
@@ -80,11 +77,11 @@ promyk_literal::LiteralScene literal_scene(const promyk::Scene& scene) {
     return s;
 }
 
-const std::string scene_dir = PROMYK_SOURCE_DIR "/tests/reference/scenes/";
+const std::string reference_scene_dir = PROMYK_SOURCE_DIR "/tests/reference/scenes/";
 
 // The trace's steps that are the program's variables, in the trace's order
 // (steps the tracer may add for lessons are skipped: compared by key).
-std::vector<promyk::Step> program_steps(const promyk::PixelTrace& trace) {
+std::vector<promyk::Step> literal_program_steps(const promyk::PixelTrace& trace) {
     std::vector<promyk::Step> steps;
     for (const promyk::Step& step : trace.steps)
         for (const Key key : {Key::E, Key::EE, Key::SS, Key::C, Key::delta, Key::t, Key::P, Key::N, Key::K, Key::KK,
@@ -144,7 +141,7 @@ std::string compare_pixel(const promyk::ArticleWorld<double>& world, const promy
         why << where() << "untraced result " << show(untraced.I_P) << ", literal " << show(literal_t) << "\n";
 
     const std::vector<promyk::Step> expected = literal_steps(literal);
-    const std::vector<promyk::Step> recorded = program_steps(trace);
+    const std::vector<promyk::Step> recorded = literal_program_steps(trace);
     if (recorded.size() != expected.size()) {
         why << where() << recorded.size() << " of the program's steps recorded, the literal program reached "
             << expected.size() << "\n";
@@ -228,7 +225,7 @@ TEST_CASE("every pixel equals the article's literal program bit for bit", "[lite
 TEST_CASE("scenes that are not the article's equal the literal program bit for bit", "[literal]") {
     const std::string file = GENERATE(as<std::string>{}, "off_axis_far.json", "off_axis_near.json",
                                       "tangent_axis.json", "tangent_off_axis.json", "dark_exact.json");
-    const promyk::Scene scene = promyk::load_scene_file(scene_dir + file);
+    const promyk::Scene scene = promyk::load_scene_file(reference_scene_dir + file);
     std::vector<int> total = {0, 0, 0};
     for (const int w : {1, 2, 3, 7, 8, 64, 101}) {
         const std::vector<int> counts = check_every_pixel(scene, w);
@@ -256,7 +253,7 @@ TEST_CASE("the yardstick's pixels with delta or D exactly 0 are where the scene 
                            Exact{"tangent_off_axis.json", 2, 0, 1, true}, Exact{"dark_exact.json", 1, 0, 0, false},
                            Exact{"dark_exact.json", 3, 1, 1, false}}) {
         INFO(e.file << " w = " << e.w << " (" << e.i << ", " << e.j << ")");
-        const promyk::Scene scene = promyk::load_scene_file(scene_dir + e.file);
+        const promyk::Scene scene = promyk::load_scene_file(reference_scene_dir + e.file);
         std::vector<LiteralLocals> locals;
         const std::vector<double> t = promyk_literal::literal_program(e.w, literal_scene(scene), &locals);
         const std::size_t index = static_cast<std::size_t>(e.i * e.w + e.j);

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "collect_rows.hpp"
 #include "image/map_legend.hpp"
 #include "render/map_overlay.hpp"
 #include "render/maps.hpp"
@@ -22,13 +23,7 @@ using namespace promyk;
 
 namespace {
 
-struct Collect final : RenderSink {
-    std::vector<std::uint8_t> bytes;
-    std::size_t row_bytes = 0;
-    void image_rows(const std::uint8_t* rows, int count) override {
-        bytes.insert(bytes.end(), rows, rows + static_cast<std::size_t>(count) * row_bytes);
-    }
-};
+using promyk::testing::Collect;
 
 // As `promyk render --map KIND [--range]` draws it.
 std::vector<std::uint8_t> rendered(MapKind kind, const Scene& scene, int w, RealType real, Formula formula,

@@ -21,26 +21,27 @@
 #include <vector>
 
 #include "article_literal.hpp"
+#include "collect_rows.hpp"
 #include "render/kernel.hpp"
 #include "render/maps.hpp"
-#include "trace/number_text.hpp"
 #include "render/renderer.hpp"
 #include "render/trace_pixel.hpp"
 #include "scene/scene_json.hpp"
 #include "temp_dir.hpp"
+#include "trace/number_text.hpp"
 
 using namespace promyk;
 
 namespace {
 
 // The README's legend.
-const Rgb8 miss{0x56, 0xB4, 0xE9};      // sky blue
-const Rgb8 dark{0x00, 0x00, 0x00};      // black
-const Rgb8 lit{0xE6, 0x9F, 0x00};       // orange
-const Rgb8 tangent{0xF0, 0xE4, 0x42};   // yellow
-const Rgb8 behind{0x00, 0x9E, 0x73};    // bluish green
-const Rgb8 exact{0xFF, 0xFF, 0xFF};     // white
-const Rgb8 differs{0xD5, 0x5E, 0x00};   // vermillion
+const Rgb8 legend_miss{0x56, 0xB4, 0xE9};      // sky blue
+const Rgb8 legend_dark{0x00, 0x00, 0x00};      // black
+const Rgb8 legend_lit{0xE6, 0x9F, 0x00};       // orange
+const Rgb8 legend_tangent{0xF0, 0xE4, 0x42};   // yellow
+const Rgb8 legend_behind{0x00, 0x9E, 0x73};    // bluish green
+const Rgb8 legend_exact{0xFF, 0xFF, 0xFF};     // white
+const Rgb8 legend_differs{0xD5, 0x5E, 0x00};   // vermillion
 
 struct Image {
     int w = 0;
@@ -51,13 +52,7 @@ struct Image {
     }
 };
 
-struct Collect final : RenderSink {
-    std::vector<std::uint8_t> bytes;
-    void image_rows(const std::uint8_t* rows, int count) override {
-        bytes.insert(bytes.end(), rows, rows + static_cast<std::size_t>(count) * row_bytes);
-    }
-    std::size_t row_bytes = 0;
-};
+using promyk::testing::Collect;
 
 // The map rendered as `promyk render --map` renders it (two threads); a
 // deferred map (the error map's own range) settled and its rows replayed.
@@ -113,9 +108,9 @@ TEST_CASE("the branch map of the article's scene is the literal program's branch
         for (int i = 0; i < w; ++i) {
             for (int j = 0; j < w; ++j) {
                 const auto returned = locals[static_cast<std::size_t>(i * w + j)].returned;
-                const Rgb8 expected = returned == promyk_literal::LiteralReturn::half   ? miss
-                                      : returned == promyk_literal::LiteralReturn::zero ? dark
-                                                                                        : lit;
+                const Rgb8 expected = returned == promyk_literal::LiteralReturn::half   ? legend_miss
+                                      : returned == promyk_literal::LiteralReturn::zero ? legend_dark
+                                                                                        : legend_lit;
                 ++counts[static_cast<int>(returned)];
                 if (returned == promyk_literal::LiteralReturn::zero && first_dark_i < 0) first_dark_i = i, first_dark_j = j;
                 INFO("w = " << w << ", pixel (" << i << ", " << j << ")");
@@ -157,7 +152,7 @@ TEST_CASE("a sphere behind the eye is mapped where the literal program would dra
                                    promyk_literal::LiteralReturn::half;
                 behind_pixels += drawn;
                 INFO("formula " << formula_name(formula) << ", pixel (" << i << ", " << j << ")");
-                CHECK(hex(image.at(i, j)) == hex(drawn ? behind : miss));
+                CHECK(hex(image.at(i, j)) == hex(drawn ? legend_behind : legend_miss));
             }
         }
         CHECK(behind_pixels > 20);
@@ -180,15 +175,15 @@ TEST_CASE("a tangent ray gets the tangent colour in every type and formula", "[m
         for (const RealType real : {RealType::float_, RealType::double_, RealType::long_double, RealType::quad_}) {
             for (const Formula formula : {Formula::article, Formula::stable, Formula::fma, Formula::geometric}) {
                 INFO("r = " << c.r << ", " << real_type_name(real) << ", " << formula_name(formula));
-                CHECK(hex(map_of(MapKind::branch, scene, 1, real, formula).at(0, 0)) == hex(tangent));
+                CHECK(hex(map_of(MapKind::branch, scene, 1, real, formula).at(0, 0)) == hex(legend_tangent));
             }
         }
     }
     // Moved off by a thousandth of r, the same ray is no longer tangent.
     const Scene off = sphere_scene({1.001, 0, 10}, 1);
-    CHECK(hex(map_of(MapKind::branch, off, 1).at(0, 0)) == hex(miss));
+    CHECK(hex(map_of(MapKind::branch, off, 1).at(0, 0)) == hex(legend_miss));
     const Scene in = sphere_scene({0.999, 0, 10}, 1);
-    CHECK(hex(map_of(MapKind::branch, in, 1).at(0, 0)) != hex(tangent));
+    CHECK(hex(map_of(MapKind::branch, in, 1).at(0, 0)) != hex(legend_tangent));
 }
 
 TEST_CASE("the error map of the reference against itself is exact everywhere", "[maps]") {
@@ -197,7 +192,7 @@ TEST_CASE("the error map of the reference against itself is exact everywhere", "
         MapTally tally;
         const Image image = map_of(MapKind::error, scene, w, RealType::quad_, Formula::geometric, 1, &tally);
         for (int i = 0; i < w; ++i)
-            for (int j = 0; j < w; ++j) CHECK(hex(image.at(i, j)) == hex(exact));
+            for (int j = 0; j < w; ++j) CHECK(hex(image.at(i, j)) == hex(legend_exact));
         CHECK(category(tally, "exact").count == w * w);
         CHECK(!tally.has_largest);
     }
@@ -209,11 +204,11 @@ TEST_CASE("the error map marks the pixels whose branch differs from the referenc
     // loses delta to cancellation and misses; double keeps it.
     const Scene far = sphere_scene({0, 0, 1e4}, 1);
     MapTally tally;
-    CHECK(hex(map_of(MapKind::error, far, 1, RealType::float_, Formula::article, 1, &tally).at(0, 0)) == hex(differs));
+    CHECK(hex(map_of(MapKind::error, far, 1, RealType::float_, Formula::article, 1, &tally).at(0, 0)) == hex(legend_differs));
     CHECK(category(tally, "branch differs").count == 1);
     CHECK(category(tally, "branch differs").first_i == 0);
     const Rgb8 in_double = map_of(MapKind::error, far, 1, RealType::double_, Formula::article).at(0, 0);
-    CHECK(hex(in_double) != hex(differs));
+    CHECK(hex(in_double) != hex(legend_differs));
 
     // The same sphere seen through a pane at z_E = 10^4, where it fills the
     // inscribed disc: delta = |E|^2 (1 - x^2 - y^2) is at most 10^8 against
@@ -233,7 +228,7 @@ TEST_CASE("the error map marks the pixels whose branch differs from the referenc
             reference->intensity(w, i, j, &b);
             marked += a != b;
             INFO("pixel (" << i << ", " << j << ")");
-            CHECK((hex(image.at(i, j)) == hex(differs)) == (a != b));
+            CHECK((hex(image.at(i, j)) == hex(legend_differs)) == (a != b));
         }
     }
     CHECK(marked > w * w / 10);
@@ -284,7 +279,7 @@ TEST_CASE("a float map and a double map of the article's scene each use many col
         int darkest = 255, lightest = 0;
         for (int k = 0; k < image.w * image.w; ++k) {
             const Rgb8 c = image.at(k / image.w, k % image.w);
-            if (c == exact) continue;
+            if (c == legend_exact) continue;
             const int l = (54 * c.r + 183 * c.g + 19 * c.b + 128) >> 8;
             darkest = std::min(darkest, l), lightest = std::max(lightest, l);
         }
@@ -301,7 +296,7 @@ TEST_CASE("a float map and a double map of the article's scene each use many col
         std::set<std::string> colours;
         for (int i = 0; i < w; ++i)
             for (int j = 0; j < w; ++j)
-                if (image.at(i, j) != exact) colours.insert(hex(image.at(i, j)));
+                if (image.at(i, j) != legend_exact) colours.insert(hex(image.at(i, j)));
         CHECK(colours.size() >= 40);
         CHECK(spread(image) >= 120);
         // The run's range holds its errors; its largest reaches the top decade.
@@ -342,7 +337,7 @@ TEST_CASE("with --range two runs' error maps give the same colour to the same er
                 const double error = static_cast<double>(fabsq(I.x - I_ref.x));
                 INFO("pixel (" << i << ", " << j << ") error " << error);
                 // Outside the range an error is drawn at the nearest end.
-                const Rgb8 expected = error == 0 ? exact : scale(std::clamp(error, range.first, range.second));
+                const Rgb8 expected = error == 0 ? legend_exact : scale(std::clamp(error, range.first, range.second));
                 CHECK(hex(image.at(i, j)) == hex(expected));
                 if (error != 0) seen.insert(hex(expected));
             }
@@ -358,7 +353,7 @@ struct RgbImage {
     std::vector<std::uint8_t> pixels;
 };
 
-RgbImage read_rgb_png(const std::string& path) {
+RgbImage read_map_png(const std::string& path) {
     png_image image{};
     image.version = PNG_IMAGE_VERSION;
     REQUIRE(png_image_begin_read_from_file(&image, path.c_str()) != 0);
@@ -378,7 +373,7 @@ TEST_CASE("promyk render --map branch writes the atlas as an RGB PNG", "[maps][c
     REQUIRE(std::system((std::string(PROMYK_BINARY) + " render --map branch --w 8 --scale 3 -o " + out +
                          " 2> /dev/null")
                             .c_str()) == 0);
-    const RgbImage image = read_rgb_png(out);
+    const RgbImage image = read_map_png(out);
     REQUIRE(image.width == 24);
     REQUIRE(image.height == 24);
     std::vector<promyk_literal::LiteralLocals> locals;
@@ -386,9 +381,9 @@ TEST_CASE("promyk render --map branch writes the atlas as an RGB PNG", "[maps][c
     for (int y = 0; y < 24; ++y) {
         for (int x = 0; x < 24; ++x) {
             const auto returned = locals[static_cast<std::size_t>((y / 3) * 8 + x / 3)].returned;
-            const Rgb8 expected = returned == promyk_literal::LiteralReturn::half   ? miss
-                                  : returned == promyk_literal::LiteralReturn::zero ? dark
-                                                                                    : lit;
+            const Rgb8 expected = returned == promyk_literal::LiteralReturn::half   ? legend_miss
+                                  : returned == promyk_literal::LiteralReturn::zero ? legend_dark
+                                                                                    : legend_lit;
             const std::size_t k = 3 * (static_cast<std::size_t>(y) * 24 + x);
             INFO("image pixel (" << y << ", " << x << ")");
             CHECK(hex({image.pixels[k], image.pixels[k + 1], image.pixels[k + 2]}) == hex(expected));

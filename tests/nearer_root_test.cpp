@@ -17,12 +17,12 @@ using namespace promyk;
 
 namespace {
 
-struct Case {
+struct RootCase {
     double C, root_term, c_0, EE;
 };
 
 template <class Real>
-bool same_bits(Real a, Real b) {
+bool same_real_bits(Real a, Real b) {
     return std::memcmp(&a, &b, sizeof a) == 0;
 }
 
@@ -33,7 +33,7 @@ TEST_CASE("the nearer root's shortcut gives one lane's root and misses, tangent 
     std::mt19937_64 random(20261203);
     std::uniform_real_distribution<double> exponent(-6, 6), unit(0, 1);
     std::uniform_int_distribution<int> ulps(-6, 6);
-    std::vector<Case> cases;
+    std::vector<RootCase> cases;
     for (int n = 0; n < 200000; ++n) {
         const double EE = std::pow(10.0, exponent(random)), c_0 = std::pow(10.0, exponent(random));
         // C^2 within a few ulps of |E|^2 c_0: Δ tiny, the roots nearly equal.
@@ -45,15 +45,15 @@ TEST_CASE("the nearer root's shortcut gives one lane's root and misses, tangent 
     }
     // The ends: a root that overflows or underflows, a tiny |E|^2, a huge q.
     const double big = std::numeric_limits<double>::max(), tiny = std::numeric_limits<double>::min();
-    for (const Case c : {Case{1e300, 1e300, 1.0, 1e-10}, Case{1e200, 0.0, 1.0, 1e-200}, Case{1.0, 0.5, tiny, 1.0},
-                         Case{1.0, 0.0, tiny * 4, 1.0}, Case{1e-300, 0.0, 1e-300, 1e-300}, Case{big, 0.0, big, 1.0},
-                         Case{1.0, 0.0, 1.0, tiny}, Case{1.0, 0.0, 1.0, std::numeric_limits<double>::denorm_min()},
-                         Case{-1.0, 0.5, 1.0, 1.0}, Case{0.0, 0.0, 1.0, 1.0}, Case{1.0, NAN, 1.0, 1.0},
-                         Case{1.0, INFINITY, 1.0, 1.0}, Case{2.0, 1.0, -1.0, 1.0}})
+    for (const RootCase c : {RootCase{1e300, 1e300, 1.0, 1e-10}, RootCase{1e200, 0.0, 1.0, 1e-200}, RootCase{1.0, 0.5, tiny, 1.0},
+                         RootCase{1.0, 0.0, tiny * 4, 1.0}, RootCase{1e-300, 0.0, 1e-300, 1e-300}, RootCase{big, 0.0, big, 1.0},
+                         RootCase{1.0, 0.0, 1.0, tiny}, RootCase{1.0, 0.0, 1.0, std::numeric_limits<double>::denorm_min()},
+                         RootCase{-1.0, 0.5, 1.0, 1.0}, RootCase{0.0, 0.0, 1.0, 1.0}, RootCase{1.0, NAN, 1.0, 1.0},
+                         RootCase{1.0, INFINITY, 1.0, 1.0}, RootCase{2.0, 1.0, -1.0, 1.0}})
         cases.push_back(c);
 
     int flipped = 0, mismatches = 0;
-    for (const Case& c : cases) {
+    for (const RootCase& c : cases) {
         // One lane: the full choice between the roots (no shortcut).
         bool missed_one = false;
         const double one = lanes::cancellation_free_root(c.C, c.root_term, c.c_0, c.EE, missed_one);
@@ -64,7 +64,7 @@ TEST_CASE("the nearer root's shortcut gives one lane's root and misses, tangent 
             const lanes::Double2 EE{c.EE, c.C == other ? c.EE : 1.0};
             lanes::Mask2 missed{};
             const lanes::Double2 two = lanes::cancellation_free_root(C, root, c.c_0, EE, missed);
-            mismatches += !same_bits(two[0], one) || (missed[0] != 0) != missed_one;
+            mismatches += !same_real_bits(two[0], one) || (missed[0] != 0) != missed_one;
         }
         const double q = c.C >= 0 ? c.C + c.root_term : c.C - c.root_term;
         flipped += c.c_0 > 0 && q > 0 && q / c.EE < c.c_0 / q;  // the roots' order turned by rounding

@@ -29,12 +29,8 @@ namespace {
 
 using testing::TempDir;
 
-std::string read_bytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-void write_bytes(const std::string& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
+using testing::read_bytes;
+using testing::write_bytes;
 
 // A device that fails every write with ENOSPC. As root (CI), one made here:
 // a bug that replaced the device with a regular file must not hit /dev/full.

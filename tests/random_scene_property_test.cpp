@@ -54,7 +54,7 @@ struct Counts {
     int unit_vectors = 0, sphere_normals = 0, geometric_roots = 0, steps = 0;
     int branches[branch_count] = {};
 };
-Counts counts;  // of the current run
+Counts run_counts;  // of the current run
 
 constexpr std::uint64_t first_seed = 20261201;
 constexpr int scene_count = 3000;  // the release pass; the sanitizer pass runs the first 300
@@ -166,7 +166,7 @@ bool finite_q(quad x) { return x == x && x - x == 0; }
 
 quad abs_q(quad x) { return x < 0 ? -x : x; }
 
-std::string show(quad x) {
+std::string random_show(quad x) {
     char buffer[64];
     quadmath_snprintf(buffer, sizeof buffer, "%.36Qg", x);
     return buffer;
@@ -194,7 +194,7 @@ int significand_bits(RealType real) {
 }
 
 // The value of a double scene number in the chosen real type, exactly.
-quad rounded(double x, RealType real) {
+quad random_rounded(double x, RealType real) {
     switch (real) {
         case RealType::float_:
             return quad(static_cast<float>(x));
@@ -240,19 +240,19 @@ void geometric_bound(const Drawn& d, std::vector<std::string>& failures) {
         // The bound, plus the quad reference's own (its u is 2^-113).
         const quad bound = (24 * k_g + 8 * k_c + 16) * (u + quad(0x1p-113)) * abs_q(t_exact);
         const quad error = abs_q(quad(root->t) - t_exact);
-        ++counts.geometric_roots;
+        ++run_counts.geometric_roots;
         if (!(error <= bound)) {
             std::ostringstream out;
-            out << "geometric t of sphere " << k << ": " << show(quad(root->t)) << ", quad " << show(t_exact)
-                << ", error " << show(error) << " > bound " << show(bound) << " (k_g " << show(k_g) << ", k_c "
-                << show(k_c) << ")";
+            out << "geometric t of sphere " << k << ": " << random_show(quad(root->t)) << ", quad " << random_show(t_exact)
+                << ", error " << random_show(error) << " > bound " << random_show(bound) << " (k_g " << random_show(k_g) << ", k_c "
+                << random_show(k_c) << ")";
             failures.push_back(out.str());
         }
     }
 }
 
 // Every property for one scene; what failed, one line each.
-std::vector<std::string> check_scene(const Drawn& d) {
+std::vector<std::string> check_random_scene(const Drawn& d) {
     std::vector<std::string> failures;
     auto fail = [&](const std::string& what) { failures.push_back(what); };
     const auto kernel = make_kernel(d.scene, d.real, d.formula, d.spp);
@@ -282,10 +282,10 @@ std::vector<std::string> check_scene(const Drawn& d) {
     if (!same_bytes) fail("the rendered row's pixel differs from the trace's grey level or colour");
 
     // 2. No NaN or infinity outside the non-finite branch.
-    ++counts.branches[static_cast<int>(trace.branch)];
+    ++run_counts.branches[static_cast<int>(trace.branch)];
     if (trace.branch != Branch::non_finite) {
         for (const Step& step : trace.steps) {
-            ++counts.steps;
+            ++run_counts.steps;
             bool finite = true;
             if (const double* x = std::get_if<double>(&step.value)) finite = finite_q(value_in(step, *x, 0));
             if (std::holds_alternative<Vec3d>(step.value)) {
@@ -304,10 +304,10 @@ std::vector<std::string> check_scene(const Drawn& d) {
         if (step.key == Key::P && step.group < 0) P = &step;
         const bool unit = step.key == Key::N_plane || step.key == Key::V_hat || step.key == Key::K_P;
         if (unit) {
-            ++counts.unit_vectors;
+            ++run_counts.unit_vectors;
             const quad error = abs_q(length_q(vector_in(step)) - 1);
             if (!(error <= 8 * u))
-                fail("|" + std::string(key_name(step.key)) + "| - 1 = " + show(error) + ", more than 8 ulps");
+                fail("|" + std::string(key_name(step.key)) + "| - 1 = " + random_show(error) + ", more than 8 ulps");
         }
         // A sphere's N_P (one sample: the object hit is the pixel's).
         if (step.key == Key::N_P && step.group < 0 && d.spp == 1 && P != nullptr) {
@@ -315,16 +315,16 @@ std::vector<std::string> check_scene(const Drawn& d) {
             if (!trace.hit_object.empty() && std::sscanf(trace.hit_object.c_str(), "sphere %d", &k) != 1) continue;
             const Sphere& sphere = d.scene.spheres.at(static_cast<std::size_t>(k));
             const Vec3<quad> Pq = vector_in(*P);
-            const Vec3<quad> Sq{rounded(sphere.S.x, d.real), rounded(sphere.S.y, d.real),
-                                rounded(sphere.S.z, d.real)};
-            const quad r = rounded(sphere.r, d.real);
+            const Vec3<quad> Sq{random_rounded(sphere.S.x, d.real), random_rounded(sphere.S.y, d.real),
+                                random_rounded(sphere.S.z, d.real)};
+            const quad r = random_rounded(sphere.r, d.real);
             const quad off_surface = abs_q(length_q(Pq - Sq) - r) / r;
             const quad error = abs_q(length_q(vector_in(step)) - 1);
-            ++counts.sphere_normals;
+            ++run_counts.sphere_normals;
             const quad allowed = off_surface + 8 * u * (1 + (length_q(Pq) + length_q(Sq)) / r);
             if (!(error <= allowed))
-                fail("|N_P| - 1 = " + show(error) + ", more than P's distance from the surface / r (" +
-                     show(off_surface) + ") and a few ulps");
+                fail("|N_P| - 1 = " + random_show(error) + ", more than P's distance from the surface / r (" +
+                     random_show(off_surface) + ") and a few ulps");
         }
     }
 
@@ -350,14 +350,14 @@ std::string reproduction(const Drawn& d, std::uint64_t seed) {
 
 // Runs the properties over `count` scenes from first_seed on; how many failed.
 int run_random_scenes(int count) {
-    counts = Counts{};
+    run_counts = Counts{};
     int failed = 0;
     for (int n = 0; n < count; ++n) {
         const std::uint64_t seed = first_seed + static_cast<std::uint64_t>(n);
         Drawn d = draw(seed);
         // The scene as its file reads back: what the printed command traces.
         d.scene = parse_scene(scene_to_json(d.scene), "random scene " + std::to_string(seed));
-        const std::vector<std::string> failures = check_scene(d);
+        const std::vector<std::string> failures = check_random_scene(d);
         if (failures.empty()) continue;
         ++failed;
         std::ostringstream message;
@@ -380,8 +380,8 @@ int run_random_scenes(int count) {
 TEST_CASE("random scenes, the first 300: traced equals untraced, no stray NaN, unit normals, geometric t bounded",
           "[random-scenes-short]") {
     CHECK(run_random_scenes(300) == 0);
-    CHECK(counts.geometric_roots > 20);
-    CHECK(counts.sphere_normals > 20);
+    CHECK(run_counts.geometric_roots > 20);
+    CHECK(run_counts.sphere_normals > 20);
 }
 
 // All of them: hidden from the default run and from CTest's discovery, run
@@ -391,13 +391,13 @@ TEST_CASE("random scenes: traced equals untraced, no stray NaN, unit normals, ge
           "[.][random-scenes]") {
     CHECK(run_random_scenes(scene_count) == 0);
     // Each property was tested often, and every branch came up.
-    INFO(counts.geometric_roots << " geometric roots bounded, " << counts.unit_vectors << " unit vectors, "
-                                << counts.sphere_normals << " sphere normals, " << counts.steps << " steps");
-    CHECK(counts.geometric_roots > scene_count / 8);
-    CHECK(counts.unit_vectors > scene_count);
-    CHECK(counts.sphere_normals > scene_count / 8);
+    INFO(run_counts.geometric_roots << " geometric roots bounded, " << run_counts.unit_vectors << " unit vectors, "
+                                << run_counts.sphere_normals << " sphere normals, " << run_counts.steps << " steps");
+    CHECK(run_counts.geometric_roots > scene_count / 8);
+    CHECK(run_counts.unit_vectors > scene_count);
+    CHECK(run_counts.sphere_normals > scene_count / 8);
     for (int b = 0; b < branch_count; ++b) {
-        INFO("pixels in branch " << branch_name(static_cast<Branch>(b)) << ": " << counts.branches[b]);
-        CHECK(counts.branches[b] > 0);
+        INFO("pixels in branch " << branch_name(static_cast<Branch>(b)) << ": " << run_counts.branches[b]);
+        CHECK(run_counts.branches[b] > 0);
     }
 }

@@ -60,7 +60,7 @@ T literal_intensity(int w, int i, int j) {
 // The same value: equal, with the same sign for zeros (not memcmp: an x87
 // long double has 6 bytes of padding whose contents are arbitrary).
 template <class T>
-bool same(T a, T b) {
+bool same_real(T a, T b) {
     return a == b && ((a < 0 || 1 / a < 0) == (b < 0 || 1 / b < 0));
 }
 
@@ -95,7 +95,7 @@ void check_texts(int max_digits) {
         x = x + x * T(unit(random)) / T(1e20);
         const std::string text = real_text(x);
         INFO(text);
-        CHECK(same(read_back<T>(text), x));
+        CHECK(same_real(read_back<T>(text), x));
         CHECK(digits_of(text) <= max_digits);
     }
     CHECK(real_text(T(0.5)) == "0.5");

@@ -56,6 +56,7 @@
 
 #include "render/trace_pixel.hpp"
 #include "render/tracer.hpp"
+#include "same_bits.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_json.hpp"
 #include "trace/keys.hpp"
@@ -108,14 +109,8 @@ long double ulp(long double x) {
     return std::ldexp(1.0L, std::max(e - 53, -1074));
 }
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-
-std::string show(long double v) {
-    std::ostringstream out;
-    out.precision(21);
-    out << v;
-    return out.str();
-}
+using promyk::testing::same_bits;
+using promyk::testing::show_digits;
 
 // --------------------------------------------------------------------------
 // Running error bounds
@@ -483,10 +478,11 @@ void check_against_reference(const Reference& ref, const std::map<std::string, p
                 const std::string name =
                     ref_value.key + (got.size() == 3 ? std::string(".") + "xyz"[k] : std::string());
                 if (!(ref_value.lo[k] <= got[k] && got[k] <= ref_value.hi[k]))
-                    fail(p, name + " = " + show(got[k]) + " outside [" + show(ref_value.lo[k]) + ", " +
-                                show(ref_value.hi[k]) + "]");
+                    fail(p, name + " = " + show_digits(got[k]) + " outside [" + show_digits(ref_value.lo[k]) + ", " +
+                                show_digits(ref_value.hi[k]) + "]");
                 if (!same_bits(got[k], ref_value.ieee[k]))
-                    fail(p, name + " = " + show(got[k]) + ", the IEEE program gives " + show(ref_value.ieee[k]));
+                    fail(p, name + " = " + show_digits(got[k]) + ", the IEEE program gives " +
+                                show_digits(ref_value.ieee[k]));
                 const long double x = ref_value.exact[k];
                 const long double error = std::fabs(static_cast<long double>(got[k]) - x);
                 const long double bound = bounds.at(ref_value.key).at(k);
@@ -494,11 +490,11 @@ void check_against_reference(const Reference& ref, const std::map<std::string, p
                 // value is read from 30 digits (far below 1/256 ulp).
                 const long double tolerance = bound * (1 + 0x1p-20L) + 0x1p-60L * std::fabs(x);
                 if (!(error <= tolerance))
-                    fail(p, name + " = " + show(got[k]) + ", exact " + show(x) + ": error " + show(error / ulp(x)) +
-                                " ulp, bound " + show(bound / ulp(x)) + " ulp");
+                    fail(p, name + " = " + show_digits(got[k]) + ", exact " + show_digits(x) + ": error " +
+                                show_digits(error / ulp(x)) + " ulp, bound " + show_digits(bound / ulp(x)) + " ulp");
                 const auto fixed = fixed_ulps.find(ref_value.key);
                 if (fixed != fixed_ulps.end() && !(error <= fixed->second * ulp(x) + 0x1p-60L * std::fabs(x)))
-                    fail(p, name + ": error " + show(error / ulp(x)) + " ulp, above its fixed bound");
+                    fail(p, name + ": error " + show_digits(error / ulp(x)) + " ulp, above its fixed bound");
                 Worst& w = worst[ref_value.key];
                 ++w.count;
                 const long double ulps = error / ulp(x);

@@ -30,7 +30,7 @@ std::vector<unsigned char> expected_grey(int w, const promyk_literal::LiteralSce
     return grey;
 }
 
-std::vector<unsigned char> decode_png(const fs::path& path, int w) {
+std::vector<unsigned char> decode_grey_png(const fs::path& path, int w) {
     png_image image{};
     image.version = PNG_IMAGE_VERSION;
     REQUIRE(png_image_begin_read_from_file(&image, path.c_str()) != 0);
@@ -72,7 +72,7 @@ int run(const std::string& arguments) {
 TEST_CASE("promyk render writes the article's image: PNG at the default size", "[end-to-end]") {
     const fs::path dir = fresh_dir("png");
     REQUIRE(run("render -o " + (dir / "article.png").string()) == 0);
-    CHECK(decode_png(dir / "article.png", 512) == expected_grey(512));
+    CHECK(decode_grey_png(dir / "article.png", 512) == expected_grey(512));
     fs::remove_all(dir);
 }
 
@@ -89,7 +89,7 @@ TEST_CASE("promyk render writes the article's image: odd sizes, PGM, any thread 
     }
     const fs::path png = dir / "w37.png";
     REQUIRE(run("render --w 37 -o " + png.string()) == 0);
-    CHECK(decode_png(png, 37) == expected_grey(37));
+    CHECK(decode_grey_png(png, 37) == expected_grey(37));
     fs::remove_all(dir);
 }
 
@@ -124,7 +124,7 @@ TEST_CASE("promyk render --scene writes a scene that is not the article's as the
     }
     const fs::path out = dir / "tangent.png";
     REQUIRE(run("render --scene " + scenes + "tangent_axis.json --w 3 -o " + out.string()) == 0);
-    const std::vector<unsigned char> grey = decode_png(out, 3);
+    const std::vector<unsigned char> grey = decode_grey_png(out, 3);
     CHECK(grey == expected_grey(3, tangent));
     CHECK(static_cast<int>(grey.at(4)) == 159);  // the tangent centre: round(0.625 * 255) = round(159.375)
     fs::remove_all(dir);

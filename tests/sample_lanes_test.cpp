@@ -62,7 +62,7 @@ bool sampled_in_lanes(const ArticleWorld<float>& world, int w, int i, int spp, s
 // Every pixel of the w x w pane at spp samples: the lanes' row against
 // sample_pixel over trace_ray, in double or in float.
 template <class Real>
-PaneCheck check_pane(const ArticleWorld<Real>& world, int w, int spp, Formula formula, std::vector<int> rows = {}) {
+PaneCheck check_sampled_pane(const ArticleWorld<Real>& world, int w, int spp, Formula formula, std::vector<int> rows = {}) {
     PaneCheck check;
     std::vector<std::uint8_t> grey(static_cast<std::size_t>(w)), branches(static_cast<std::size_t>(w));
     std::vector<Real> I_P(static_cast<std::size_t>(w));
@@ -131,7 +131,7 @@ TEST_CASE("Sampled rows in lanes: every pixel's mean, branch, grey level and the
                     if (!in_sweep(++index, 3)) continue;
                     INFO(isa_name(isa) << ", " << formula_name(formula) << ", " << named.name << ", w = " << run.w
                                        << ", spp " << run.spp);
-                    const PaneCheck check = check_pane(named.world, run.w, run.spp, formula);
+                    const PaneCheck check = check_sampled_pane(named.world, run.w, run.spp, formula);
                     CHECK(check.mismatches == 0);
                     CHECK(check.count_mismatches == 0);
                     disagreeing += check.disagreeing;
@@ -182,7 +182,7 @@ TEST_CASE("Sampled rows in float lanes: every pixel's mean, branch, grey level a
                     if (!in_sweep(++index, 3)) continue;
                     INFO(isa_name(isa) << ", " << formula_name(formula) << ", " << named.name << ", w = " << run.w
                                        << ", spp " << run.spp);
-                    const PaneCheck check = check_pane(world, run.w, run.spp, formula);
+                    const PaneCheck check = check_sampled_pane(world, run.w, run.spp, formula);
                     CHECK(check.mismatches == 0);
                     CHECK(check.count_mismatches == 0);
                     if (named.name == "article.json" && run.w >= 32)
@@ -213,7 +213,7 @@ TEST_CASE("Sampled rows in float lanes: 1024 non-finite samples a pixel agree an
         PathForced forced(isa);
         INFO(isa_name(isa));
         const int w = 20;
-        const PaneCheck check = check_pane(world, w, 1024, Formula::article);
+        const PaneCheck check = check_sampled_pane(world, w, 1024, Formula::article);
         CHECK(check.mismatches == 0);
         CHECK(check.count_mismatches == 0);
         CHECK(check.non_finite == static_cast<long long>(w) * w);
@@ -236,8 +236,8 @@ TEST_CASE("Sampled rows in lanes: a pane too wide for the column hashes' table g
         PathForced forced(isa);
         INFO(isa_name(isa));
         // The rows through the sphere's middle and near its top edge.
-        const PaneCheck in_double = check_pane(base, w, spp, Formula::article, {w / 2, w / 4 + 40});
-        const PaneCheck in_float = check_pane(world_as<float>(base), w, spp, Formula::article, {w / 2, w / 4 + 40});
+        const PaneCheck in_double = check_sampled_pane(base, w, spp, Formula::article, {w / 2, w / 4 + 40});
+        const PaneCheck in_float = check_sampled_pane(world_as<float>(base), w, spp, Formula::article, {w / 2, w / 4 + 40});
         CHECK(in_double.mismatches == 0);
         CHECK(in_double.count_mismatches == 0);
         CHECK(in_float.mismatches == 0);

@@ -29,7 +29,7 @@ struct Pinned {
     std::uint32_t hash;
 };
 
-std::vector<Scene> example_scenes() {
+std::vector<Scene> sample_example_scenes() {
     std::vector<Scene> scenes;
     for (const auto& entry : std::filesystem::directory_iterator(PROMYK_SOURCE_DIR "/lessons/scenes"))
         if (entry.path().extension() == ".json" && entry.path().string().find(".schema.") == std::string::npos)
@@ -37,7 +37,7 @@ std::vector<Scene> example_scenes() {
     return scenes;
 }
 
-struct CollectingSink final : RenderSink {
+struct SampleRowsSink final : RenderSink {
     std::vector<std::uint8_t> pixels;
     void image_rows(const std::uint8_t* rows, int count) override {
         (void)count;
@@ -150,12 +150,12 @@ TEST_CASE("spp 1 is the article's image, bit for bit", "[samples]") {
 }
 
 TEST_CASE("a traced pixel with samples equals the rendered one, on every example scene", "[samples]") {
-    for (const Scene& scene : example_scenes()) {
+    for (const Scene& scene : sample_example_scenes()) {
         for (const RealType real : {RealType::double_, RealType::float_}) {
             const int w = 8, spp = 4;
             const auto kernel = make_kernel(scene, real, Formula::article, spp);
             // The image as the renderer writes it (both threads).
-            CollectingSink sink;
+            SampleRowsSink sink;
             sink.row_bytes = w * kernel->channels();
             RenderSettings settings{w, 2, real, Formula::article, spp};
             RenderStats stats;
@@ -239,7 +239,7 @@ TEST_CASE("a sample's steps are named by their path for diff and answer files", 
 }
 
 TEST_CASE("a pixel's digits lost with samples is the most any step of any sample loses", "[samples]") {
-    for (const Scene& scene : example_scenes()) {
+    for (const Scene& scene : sample_example_scenes()) {
         for (const Formula formula : {Formula::article, Formula::geometric}) {
             const auto kernel = make_kernel(scene, RealType::float_, formula, 4);
             for (int i = 0; i < 6; ++i) {

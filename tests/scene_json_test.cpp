@@ -643,9 +643,9 @@ TEST_CASE("scene_to_json reads back to the same scene", "[scene]") {
             scene.background = n % 2 ? colour() : scene.background;
             scene.shadows = n % 3 == 0;
         }
-        const std::string json = promyk::scene_to_json(scene);
-        INFO(json);
-        check_same_scene(parse_scene(json, "x"), scene);
+        const std::string json_text = promyk::scene_to_json(scene);
+        INFO(json_text);
+        check_same_scene(parse_scene(json_text, "x"), scene);
         check_same_scene(parse_scene(promyk::scene_to_json(scene, promyk::SceneDefaults::written), "x"), scene);
     }
 }

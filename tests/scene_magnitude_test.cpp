@@ -47,7 +47,7 @@ std::string scaled_scene(double s, double light_offset) {
                        x(1.5), x(1), x(1), x(-0.7 + light_offset), x(0.25), x(2.05));
 }
 
-struct Tally {
+struct MagnitudeTally {
     int refused = 0, accepted = 0, unit_vectors = 0, sphere_normals = 0, non_finite = 0;
 };
 
@@ -57,7 +57,7 @@ long double length_ld(const Vec3d& v) {
 }
 
 // The unit vectors of one trace; failures as text.
-void check_units(const Scene& scene, const PixelTrace& trace, Tally& tally, std::vector<std::string>& failures) {
+void check_units(const Scene& scene, const PixelTrace& trace, MagnitudeTally& tally, std::vector<std::string>& failures) {
     const double u = std::ldexp(1.0, -53);
     if (trace.branch == Branch::non_finite) {
         ++tally.non_finite;
@@ -96,7 +96,7 @@ void check_units(const Scene& scene, const PixelTrace& trace, Tally& tally, std:
 
 TEST_CASE("a scene of any size is refused or gives unit vectors within a few ulps", "[scene][magnitude]") {
     constexpr int w = 6;
-    Tally tally;
+    MagnitudeTally tally;
     std::vector<std::string> failures;
     std::uint64_t state = 20261202;
     // Scales 2^e · m from the largest doubles to the smallest subnormals.
@@ -142,7 +142,7 @@ TEST_CASE("a scene of any size is refused or gives unit vectors within a few ulp
 TEST_CASE("numbers of mixed sizes in one scene: refused or unit vectors", "[scene][magnitude]") {
     // Each coordinate on its own scale, 10^-80 to 10^160 (or 0): every
     // accepted scene still gives unit vectors.
-    Tally tally;
+    MagnitudeTally tally;
     std::vector<std::string> failures;
     std::uint64_t state = 977;
     const auto next = [&state] {

@@ -228,16 +228,16 @@ namespace {
 // A ray of the pane through (x, y) at z_E, random or grazing a random
 // sphere (y chosen so that the exact Δ is about 0, where it cancels most),
 // at scales from 1e-30 to 1e30 a third of the time.
-struct Case {
+struct SilhouetteCase {
     ArticleWorld<double> world;
     double x, y;
     bool grazing;
 };
 
-Case random_case(std::mt19937_64& random, int s) {
+SilhouetteCase random_case(std::mt19937_64& random, int s) {
     std::uniform_real_distribution<double> unit(-1, 1), depth(1.5, 40), radius(0.01, 3), eye(0.2, 4);
     const double scale = s % 3 == 0 ? 1 : std::pow(10.0, unit(random) * 30);
-    Case c{world_of(unit(random) * 3 * scale, unit(random) * 3 * scale, depth(random) * scale,
+    SilhouetteCase c{world_of(unit(random) * 3 * scale, unit(random) * 3 * scale, depth(random) * scale,
                     radius(random) * scale, eye(random)),
            unit(random), unit(random), false};
     if (s % 2 != 0) return c;
@@ -261,7 +261,7 @@ Case random_case(std::mt19937_64& random, int s) {
 }
 
 // The exact Δ/4 = C² − |E|²(|S|² − r²) at the case's E, in quad.
-quad exact_delta(const Case& c) {
+quad exact_delta(const SilhouetteCase& c) {
     const quad xq = c.x, yq = c.y, zq = c.world.z_E, Sx = c.world.S.x, Sy = c.world.S.y, Sz = c.world.S.z,
                rq = c.world.r;
     const quad Cq = xq * Sx + yq * Sy + zq * Sz, EEq = xq * xq + yq * yq + zq * zq;
@@ -278,7 +278,7 @@ TEST_CASE("skipping: the article's and Kahan's delta are within the row's bound 
     double worst_article = 0, worst_fma = 0;  // the largest |computed − exact| / e
     int grazing = 0, checked = 0;
     for (int s = 0; s < 200000; ++s) {
-        const Case c = random_case(random, s);
+        const SilhouetteCase c = random_case(random, s);
         if (!(std::fabs(c.x) <= 1)) continue;  // the bound is the pane's, |x| ≤ 1
         grazing += c.grazing, ++checked;
         const lanes::ArticleRow<double> row(c.world, c.y);
@@ -313,7 +313,7 @@ TEST_CASE("skipping: the geometric formula's delta_g is within its bound of the 
     double worst = 0;  // the largest |computed − exact| / g
     int grazing = 0;
     for (int s = 0; s < 200000; ++s) {
-        const Case c = random_case(random, s);
+        const SilhouetteCase c = random_case(random, s);
         grazing += c.grazing;
         const lanes::ArticleRow<double> row(c.world, c.y);
         const double EE = (c.x * c.x + row.yy) + row.zz;
@@ -358,10 +358,10 @@ TEST_CASE("skipping in float: the float kernel's delta and delta_g are within fl
     double worst_article = 0, worst_fma = 0, worst_geometric = 0;
     int grazing = 0, checked = 0, checked_geometric = 0;
     for (int s = 0; s < 200000; ++s) {
-        const Case d = random_case(random, s);
+        const SilhouetteCase d = random_case(random, s);
         const ArticleWorld<float> world = world_as<float>(d.world);
         const float x = static_cast<float>(d.x), y = static_cast<float>(d.y);
-        const Case c{world_as<double>(world), x, y, d.grazing};  // the float numbers, exactly
+        const SilhouetteCase c{world_as<double>(world), x, y, d.grazing};  // the float numbers, exactly
         const lanes::ArticleRow<float> row(world, y);
         const lanes::ArticleRow<double> row_d(c.world, y);
         const float EE = (x * x + row.yy) + row.zz;

@@ -48,14 +48,14 @@ bool has_word(const std::string& text, const std::string& word) {
 }
 
 // English words that a Polish message must not contain.
-const std::vector<std::string> english = {"cannot", "write", "read", "no", "such", "file", "directory", "the",
+const std::vector<std::string> status_english = {"cannot", "write", "read", "no", "such", "file", "directory", "the",
                                           "is",     "not",   "square", "samples", "and", "exactly", "one", "sphere",
                                           "repetitions", "took", "under", "scene", "header", "same", "standard",
                                           "output", "of"};
 
 void check_polish(const std::string& text) {
     CAPTURE(text);
-    for (const std::string& word : english) {
+    for (const std::string& word : status_english) {
         CAPTURE(word);
         CHECK_FALSE(has_word(text, word));
     }

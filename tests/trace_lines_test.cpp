@@ -69,7 +69,7 @@ std::string one_by_one(const Scene& scene, int w, const PixelSelection& traced, 
     return lines;
 }
 
-std::string rendered(const Scene& scene, int w, const PixelSelection& traced, const Setting& s) {
+std::string lines_rendered(const Scene& scene, int w, const PixelSelection& traced, const Setting& s) {
     LinesSink sink;
     render(scene, {w, 2, s.real, s.formula, s.spp}, traced, sink);
     return sink.text;
@@ -97,7 +97,7 @@ TEST_CASE("a render's trace lines are the one-pixel traces, byte for byte", "[tr
             INFO("scene " << scene.name << ", " << real_type_name(s.real) << ", " << formula_name(s.formula)
                           << ", spp " << s.spp);
             const std::string expected = one_by_one(scene, w, PixelSelection::all(), s);
-            const std::string actual = rendered(scene, w, PixelSelection::all(), s);
+            const std::string actual = lines_rendered(scene, w, PixelSelection::all(), s);
             REQUIRE(std::count(actual.begin(), actual.end(), '\n') == w * w);
             CHECK(actual == expected);
             lines_compared += w * w;
@@ -120,7 +120,7 @@ TEST_CASE("the hard cases' and overflowing scenes' trace lines are the one-pixel
         for (const Setting& s : settings) {
             INFO("hard case " << id << ", " << real_type_name(s.real) << ", " << formula_name(s.formula));
             const std::string expected = one_by_one(scene, w, traced, s);
-            CHECK(rendered(scene, w, traced, s) == expected);
+            CHECK(lines_rendered(scene, w, traced, s) == expected);
             some_non_finite = some_non_finite || expected.find("first_non_finite") != std::string::npos;
         }
     }
@@ -132,7 +132,7 @@ TEST_CASE("the hard cases' and overflowing scenes' trace lines are the one-pixel
     for (const Scene& scene : {bright, far_light})
         for (const Setting& s : settings) {
             const std::string expected = one_by_one(scene, 5, PixelSelection::all(), s);
-            CHECK(rendered(scene, 5, PixelSelection::all(), s) == expected);
+            CHECK(lines_rendered(scene, 5, PixelSelection::all(), s) == expected);
             some_non_finite = some_non_finite || expected.find("first_non_finite") != std::string::npos;
         }
     CHECK(some_non_finite);  // the text beside a non-finite value was compared too

@@ -18,6 +18,7 @@
 #include "scene/scene_json.hpp"
 #include "trace/recorder.hpp"
 #include "util/errors.hpp"
+#include "same_bits.hpp"
 
 using namespace promyk;
 
@@ -35,7 +36,7 @@ std::vector<std::string> keys_of(const PixelTrace& trace) {
     return keys;
 }
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using promyk::testing::same_bits;
 
 // A step's value by its key (the first step with that key); fails if absent.
 const StepValue& step(const PixelTrace& trace, Key key) {
@@ -52,7 +53,7 @@ bool has_step(const PixelTrace& trace, Key key) {
 }
 
 double scalar(const PixelTrace& trace, Key key) { return std::get<double>(step(trace, key)); }
-Vec3d vector(const PixelTrace& trace, Key key) { return std::get<Vec3d>(step(trace, key)); }
+Vec3d tracer_vector(const PixelTrace& trace, Key key) { return std::get<Vec3d>(step(trace, key)); }
 
 Scene one_sphere_scene(double z_E, Vec3d S, double r, Vec3d L, double I, double background) {
     Scene scene;
@@ -144,9 +145,9 @@ TEST_CASE("a hit whose N.K is exactly 0 is dark, and I scales a lit one", "[trac
         const PixelTrace trace = trace_pixel(scene, 1, 0, 0);
         CHECK(scalar(trace, Key::delta) == 4);
         CHECK(scalar(trace, Key::t) == 1.5);
-        CHECK(vector(trace, Key::P) == Vec3d{0, 0, 3});
-        CHECK(vector(trace, Key::N) == Vec3d{0, 0, -1});
-        CHECK(vector(trace, Key::K) == c.K);
+        CHECK(tracer_vector(trace, Key::P) == Vec3d{0, 0, 3});
+        CHECK(tracer_vector(trace, Key::N) == Vec3d{0, 0, -1});
+        CHECK(tracer_vector(trace, Key::K) == c.K);
         CHECK(scalar(trace, Key::KK) == c.KK);
         CHECK(same_bits(scalar(trace, Key::D), c.D));
         CHECK(trace.branch == c.branch);
@@ -182,7 +183,7 @@ TEST_CASE("the article's three pixels at w = 8 take the three branches", "[trace
 TEST_CASE("pixel (3, 4) at w = 8: the first steps by hand", "[tracer]") {
     const PixelTrace lit = trace_pixel(article_scene(), 8, 3, 4);
     // x_E = 9/8 - 1, y_E = -7/8 + 1: exact in binary.
-    CHECK(vector(lit, Key::E) == Vec3d{0.125, 0.125, 2});
+    CHECK(tracer_vector(lit, Key::E) == Vec3d{0.125, 0.125, 2});
     CHECK(scalar(lit, Key::EE) == 4.03125);  // 1/64 + 1/64 + 4
     CHECK(scalar(lit, Key::SS) == 3.2 * 3.2);
     CHECK(scalar(lit, Key::C) == 2 * 3.2);

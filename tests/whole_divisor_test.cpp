@@ -13,13 +13,14 @@
 #include <vector>
 
 #include "render/whole_divisor.hpp"
+#include "same_bits.hpp"
 
 using namespace promyk;
 using lanes::Double2;
 
 namespace {
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using promyk::testing::same_bits;
 
 struct Tally {
     long long cases = 0, wrong = 0, q0_wrong = 0;

@@ -53,7 +53,7 @@ std::string worksheet_html(LessonRun& run, Worksheet& worksheet) {
     return out + worksheet.answer_template() + worksheet.answer_key();
 }
 
-const char* const hostile_lesson = R"(---
+const char* const worksheet_hostile_lesson = R"(---
 name: hostile
 title: <script>alert("t")</script> & 'co'
 summary: A & B <b>bold?</b> "quoted"
@@ -111,7 +111,7 @@ TEST_CASE("an HTML worksheet has one labelled input a blank, well formed, in eve
 
 TEST_CASE("a hostile lesson and scene in an HTML worksheet stay text, and a blank in a formula leaves it", "[worksheet][html]") {
     std::vector<LessonProblem> problems;
-    const Lesson lesson = parse_lesson(hostile_lesson, "en/hostile.md", Language::en, problems);
+    const Lesson lesson = parse_lesson(worksheet_hostile_lesson, "en/hostile.md", Language::en, problems);
     REQUIRE(problems.empty());
     const Scene scene = load_scene_text(
         R"({"name": "<script>alert('s')</script> & \"x\"", "z_E": 2, "spheres": [{"S": [0, 0, 3.2], "r": 1.1}], "lights": [{"L": [1.5, 1, 1], "I": 1}]})",

@@ -12,7 +12,7 @@ using namespace promyk;
 
 namespace {
 
-const std::vector<std::pair<int, int>> pixels = {{0, 0}, {5, 1}, {3, 4}};
+const std::vector<std::pair<int, int>> worksheet_pixels = {{0, 0}, {5, 1}, {3, 4}};
 
 // Texts the scene gives (S, r, background ...): a worksheet keeps them, so a
 // pixel's number that happens to read the same (I_P = 0.5 for a miss) may appear.
@@ -69,7 +69,7 @@ TEST_CASE("a worksheet shows no pixel's number, keeps the scene's, and its key h
             LessonView view{lesson, builtin_vocabulary(), {}, scene.name, 8};
             view.format = format;
             view.digits = lesson.header.digits;  // as promyk lesson sets it
-            for (const auto& [i, j] : pixels) view.traces.push_back(trace_pixel(scene, 8, i, j));
+            for (const auto& [i, j] : worksheet_pixels) view.traces.push_back(trace_pixel(scene, 8, i, j));
             const Worksheet worksheet(view);
             std::string sheet = render_lesson_title(view) + worksheet.intro();
             for (std::size_t k = 0; k < lesson.steps.size(); ++k) sheet += render_step(view, k);

@@ -9,8 +9,8 @@
 namespace promyk {
 namespace {
 
-constexpr Paint ink = Paint::grey(0);
-constexpr Paint paper = Paint::grey(255);
+constexpr Paint legend_ink = Paint::grey(0);
+constexpr Paint legend_paper = Paint::grey(255);
 
 int cap(int s) { return (font::ink_bottom - font::ink_top + 1) * s; }
 int pad(int s) { return 2 * s; }
@@ -46,7 +46,7 @@ LegendNeed need_at(const Legend& legend, int s) {
 int lay_out(const Legend& legend, int s, int width, Canvas* canvas, int* unknown) {
     int missing = 0;
     auto text = [&](int x, int y, const std::string& t) {
-        if (canvas) missing += draw_text(*canvas, x, y, t, s, ink);
+        if (canvas) missing += draw_text(*canvas, x, y, t, s, legend_ink);
     };
     const int left = pad(s), right = width - pad(s);
     int y = pad(s);
@@ -77,7 +77,7 @@ int lay_out(const Legend& legend, int s, int width, Canvas* canvas, int* unknown
             if (canvas) {
                 // A tick mark from the bar down to the number's place.
                 const int mark = std::clamp(left + static_cast<int>(std::lround(tick.t * bar_width)), left, right - 1);
-                canvas->fill(mark, y - s, 1, s, ink);
+                canvas->fill(mark, y - s, 1, s, legend_ink);
             }
             text(x, y, tick.text);
             taken_right = x + w;
@@ -94,7 +94,7 @@ int lay_out(const Legend& legend, int s, int width, Canvas* canvas, int* unknown
         }
         if (canvas) {
             // The colour square with a thin black border, so white shows on white.
-            canvas->fill(x, y, cap(s), cap(s), ink);
+            canvas->fill(x, y, cap(s), cap(s), legend_ink);
             canvas->fill(x + 1, y + 1, cap(s) - 2, cap(s) - 2, swatch.colour);
         }
         text(x + cap(s) + 3 * s, y - font::ink_top * s, swatch.name);
@@ -120,7 +120,7 @@ int legend_size(const Legend& legend, int width) {
 Canvas draw_legend(const Legend& legend, int width, int channels, int* unknown) {
     const int s = legend_size(legend, width);
     if (s == 0) throw std::invalid_argument("legend: the image is too narrow for its legend");
-    Canvas canvas(width, lay_out(legend, s, width, nullptr, nullptr), channels, paper);
+    Canvas canvas(width, lay_out(legend, s, width, nullptr, nullptr), channels, legend_paper);
     lay_out(legend, s, width, &canvas, unknown);
     return canvas;
 }

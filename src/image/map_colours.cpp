@@ -30,9 +30,9 @@ const std::array<LegendColour, branch_category_count> branch_colours = {{
     {"behind the eye", "bluish green", "#009E73", rgb(0x009E73)},
 }};
 
-const LegendColour exact{"exact", "white", "#FFFFFF", rgb(0xFFFFFF)};
+const LegendColour exact_white{"exact", "white", "#FFFFFF", rgb(0xFFFFFF)};
 const LegendColour none_lost{"none lost", "white", "#FFFFFF", rgb(0xFFFFFF)};
-const LegendColour differs{"branch differs", "vermillion", "#D55E00", rgb(0xD55E00)};
+const LegendColour differs_vermillion{"branch differs", "vermillion", "#D55E00", rgb(0xD55E00)};
 const LegendColour non_finite_error{"non-finite", "reddish purple", "#CC79A7", rgb(0xCC79A7)};
 
 // Viridis (matplotlib), at t = 0, 1/8, ..., 1.
@@ -127,8 +127,8 @@ ColourScale digits_lost_scale(RealType real) {
     return ColourScale(0, digits, false, digits);
 }
 const LegendColour& none_lost_colour() { return none_lost; }
-const LegendColour& exact_colour() { return exact; }
-const LegendColour& branch_differs_colour() { return differs; }
+const LegendColour& exact_colour() { return exact_white; }
+const LegendColour& branch_differs_colour() { return differs_vermillion; }
 const LegendColour& non_finite_error_colour() { return non_finite_error; }
 
 }  // namespace promyk

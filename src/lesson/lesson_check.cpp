@@ -6,6 +6,7 @@
 
 #include "lesson/lesson_render.hpp"
 #include "trace/messages.hpp"
+#include "util/text.hpp"
 
 namespace promyk {
 
@@ -39,12 +40,6 @@ const std::vector<GroupShape>& group_shapes() {
         {"light.plane", {"NK", "s", "found"}},
     };
     return shapes;
-}
-
-std::string joined(const std::vector<std::string_view>& items) {
-    std::string out;
-    for (const std::string_view item : items) out += (out.empty() ? "" : ", ") + std::string(item);
-    return out;
 }
 
 // How many objects of a kind the scene has.

@@ -45,12 +45,6 @@ std::vector<std::string> words(std::string_view text) {
     return out;
 }
 
-std::string joined(const std::vector<std::string_view>& items) {
-    std::string out;
-    for (const std::string_view item : items) out += (out.empty() ? "" : ", ") + std::string(item);
-    return out;
-}
-
 // Whole numbers as a person writes them (no sign games, no leading zeros).
 bool plain_whole(const std::string& text, long min, long max, int& value) {
     if (text.size() > 9 || !is_plain_decimal(text)) return false;

@@ -21,8 +21,6 @@ namespace promyk {
 
 namespace {
 
-constexpr std::size_t columns = text_columns;
-
 std::string kind_of(const Vocabulary& vocabulary, const std::string& path) {
     const VocabularyEntry* entry = vocabulary.find(path_key(path));
     return entry ? entry->kind : "scalar";
@@ -292,7 +290,7 @@ std::string plain(std::string text) {
 
 // The lesson's prose wrapped by the one wrapper every text output uses.
 std::string wrap(const std::string& text, std::size_t indent, std::size_t first_used = 0) {
-    return wrap_text(text, indent, columns, first_used);
+    return wrap_text(text, indent, text_columns, first_used);
 }
 
 // The width of a list item's marker ("- ", "* ", "12. "), or 0.
@@ -373,7 +371,7 @@ std::string text_values(const LessonView& view, const LessonPart& part) {
         }
         std::size_t total = 4;
         for (const std::string& cell : cells) total += display_width(cell) + 4;
-        if (total <= columns) {
+        if (total <= text_columns) {
             std::string line = "    ";
             for (std::size_t c = 0; c < cells.size(); ++c) line += (c ? "    " : "") + cells[c];
             out += line + "\n";

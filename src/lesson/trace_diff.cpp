@@ -443,9 +443,9 @@ std::string diff_report(const DiffResult& result, const DiffInput& a, const Diff
 }
 
 std::string diff_json(const DiffResult& result, const DiffInput& a, const DiffInput& b, const DiffOptions& options) {
-    using json = nlohmann::ordered_json;
+    using OrderedJson = nlohmann::ordered_json;
     const auto side = [](const DiffInput& input) {
-        json out = {{"file", input.file}, {"kind", input.answers.trace ? "trace" : "typed"}};
+        OrderedJson out = {{"file", input.file}, {"kind", input.answers.trace ? "trace" : "typed"}};
         if (const std::optional<TraceSummary>& trace = input.answers.trace) {
             const LessonPixel pixel = input.answers.pixels.front().pixel;
             out["pixel"] = {{"i", pixel.i}, {"j", pixel.j}};
@@ -457,19 +457,19 @@ std::string diff_json(const DiffResult& result, const DiffInput& a, const DiffIn
         return out;
     };
     const auto text_of = [](const TypedNumber& number) { return is_zero(number) ? std::string("0") : typed_number_text(number, Language::en); };
-    json steps = json::array();
+    OrderedJson steps = OrderedJson::array();
     for (const DiffStep& step : result.steps) {
-        json item = {{"path", step.path}, {"status", status_name(step.status)}};
+        OrderedJson item = {{"path", step.path}, {"status", status_name(step.status)}};
         if (!step.a_text.empty()) item["a"] = step.a_text;
         if (!step.b_text.empty()) item["b"] = step.b_text;
         if (step.status == DiffStatus::agree || step.status == DiffStatus::differ) {
-            json components = json::array();
+            OrderedJson components = OrderedJson::array();
             for (const DiffComponent& c : step.components) {
-                json component;
+                OrderedJson component;
                 if (c.component) component["component"] = std::string(1, c.component);
                 component["a"] = c.a.text;
                 component["b"] = c.b.text;
-                component["digits"] = c.digits ? json(*c.digits) : json(nullptr);
+                component["digits"] = c.digits ? OrderedJson(*c.digits) : OrderedJson(nullptr);
                 component["difference"] = text_of(c.difference);
                 component["relative"] = c.relative;
                 component["tolerance"] = c.tolerance;
@@ -480,12 +480,12 @@ std::string diff_json(const DiffResult& result, const DiffInput& a, const DiffIn
         }
         steps.push_back(item);
     }
-    json out = {{"diff", 1}, {"a", side(a)}, {"b", side(b)}};
-    out["tolerance"] = options.relative_tolerance ? json({{"relative", *options.relative_tolerance}})
-                                                  : json({{"precision", "less precise side"}});
+    OrderedJson out = {{"diff", 1}, {"a", side(a)}, {"b", side(b)}};
+    out["tolerance"] = options.relative_tolerance ? OrderedJson({{"relative", *options.relative_tolerance}})
+                                                  : OrderedJson({{"precision", "less precise side"}});
     out["steps"] = steps;
     out["common"] = result.common;
-    out["first_divergence"] = result.first ? json(result.steps[*result.first].path) : json(nullptr);
+    out["first_divergence"] = result.first ? OrderedJson(result.steps[*result.first].path) : OrderedJson(nullptr);
     out["agree"] = !result.first.has_value();
     return out.dump() + "\n";
 }

@@ -10,7 +10,7 @@ namespace promyk {
 namespace {
 
 template <class Real>
-const Real* columns(int w) {
+const Real* x_E_of(int w) {
     thread_local std::vector<Real> x_E;
     if (static_cast<int>(x_E.size()) != w) {
         x_E.resize(static_cast<std::size_t>(w));
@@ -21,7 +21,7 @@ const Real* columns(int w) {
 
 }  // namespace
 
-const double* pane_columns(int w) { return columns<double>(w); }
-const float* pane_columns_float(int w) { return columns<float>(w); }
+const double* pane_columns(int w) { return x_E_of<double>(w); }
+const float* pane_columns_float(int w) { return x_E_of<float>(w); }
 
 }  // namespace promyk

@@ -22,7 +22,7 @@ std::string number(double value) { return number_text(value, ui_language()); }
 
 std::string point_text(const Vec3d& v) { return promyk::point_text(v, ui_language()); }
 
-std::string colour_text(const Colour& c) { return is_grey(c) ? number(c.x) : point_text(c); }
+std::string colour_shown(const Colour& c) { return is_grey(c) ? number(c.x) : point_text(c); }
 
 std::string material_text(int material) {
     return material == no_material ? "" : ui_message("report_uses_material", {{"m", std::to_string(material)}});
@@ -120,7 +120,7 @@ Probe probe_pane(const Scene& scene, int w) {
 
 void add_contents(const Scene& scene, SceneReport& report) {
     report.contents.push_back(ui_message(
-        "report_name", {{"name", scene.name}, {"z_E", number(scene.z_E)}, {"background", colour_text(scene.background)}}));
+        "report_name", {{"name", scene.name}, {"z_E", number(scene.z_E)}, {"background", colour_shown(scene.background)}}));
     const auto count = [](std::size_t n, std::string_view id) { return counted(static_cast<long long>(n), id); };
     report.contents.push_back(ui_message("report_counts",
                                          {{"spheres", count(scene.spheres.size(), "report_spheres")},

@@ -51,11 +51,6 @@ std::string path_of(const PixelTrace& trace, const Step& step) {
     return path + std::string(key_name(step.key));
 }
 
-std::string pad(const std::string& text, std::size_t width) {
-    const std::size_t shown = display_width(text);
-    return shown >= width ? text : text + std::string(width - shown, ' ');
-}
-
 // `lead` + `value` + "   " + `note` on one line when it fits 80 columns;
 // else the value broken after its separators under the lead, and the note
 // on a line of its own.

@@ -14,7 +14,7 @@ namespace promyk {
 
 namespace {
 
-using json = nlohmann::ordered_json;  // scene_content keeps its order
+using OrderedJson = nlohmann::ordered_json;  // scene_content keeps its order
 
 // "-0" as a JSON number reads as the integer 0: written back it would lose
 // its sign. The text with every such token (outside strings) as "-0.0".
@@ -62,25 +62,25 @@ struct Reader {
         fail(pointer, ui_message("trace_read_bad_field", {{"field", pointer}, {"problem", problem}}));
     }
 
-    const json& field(const json& object, const char* name, const std::string& pointer) const {
+    const OrderedJson& field(const OrderedJson& object, const char* name, const std::string& pointer) const {
         const auto it = object.find(name);
         if (it == object.end()) fail(pointer + "/" + name, ui_message("trace_read_not_trace", {{"problem", std::string("no \"") + name + "\""}}));
         return *it;
     }
-    std::string text(const json& object, const char* name, const std::string& pointer) const {
-        const json& value = field(object, name, pointer);
+    std::string text(const OrderedJson& object, const char* name, const std::string& pointer) const {
+        const OrderedJson& value = field(object, name, pointer);
         if (!value.is_string()) bad(pointer + "/" + name, "not a string");
         return value.get<std::string>();
     }
-    int integer(const json& object, const char* name, const std::string& pointer, long long low, long long high) const {
-        const json& value = field(object, name, pointer);
+    int integer(const OrderedJson& object, const char* name, const std::string& pointer, long long low, long long high) const {
+        const OrderedJson& value = field(object, name, pointer);
         if (!value.is_number_integer()) bad(pointer + "/" + name, "not an integer");
         const long long n = value.get<long long>();
         if (n < low || n > high) bad(pointer + "/" + name, "out of range");
         return static_cast<int>(n);
     }
     // A number, or null with its "inf", "-inf", "nan" text.
-    double number(const json& value, const json* text, const std::string& pointer) const {
+    double number(const OrderedJson& value, const OrderedJson* text, const std::string& pointer) const {
         if (value.is_number()) return value.get<double>();
         if (value.is_null() && text && text->is_string()) {
             const std::string t = text->get<std::string>();
@@ -90,35 +90,35 @@ struct Reader {
         }
         bad(pointer, "not a number");
     }
-    std::vector<std::string> real_texts(const json& object, const char* name, std::size_t count,
+    std::vector<std::string> real_texts(const OrderedJson& object, const char* name, std::size_t count,
                                         const std::string& pointer) const {
         const auto it = object.find(name);
         if (it == object.end()) return {};
         std::vector<std::string> out;
         if (count == 1 && it->is_string()) return {it->get<std::string>()};
         if (!it->is_array() || it->size() != count) bad(pointer + "/" + name, "not " + std::to_string(count) + " texts");
-        for (const json& t : *it) {
+        for (const OrderedJson& t : *it) {
             if (!t.is_string()) bad(pointer + "/" + name, "not a string");
             out.push_back(t.get<std::string>());
         }
         return out;
     }
-    Vec3d vector(const json& value, const json* text, const std::string& pointer) const {
+    Vec3d vector(const OrderedJson& value, const OrderedJson* text, const std::string& pointer) const {
         if (!value.is_array() || value.size() != 3) bad(pointer, "not three numbers");
         double c[3];
         for (std::size_t k = 0; k < 3; ++k) {
-            const json* t = text && text->is_array() && text->size() == 3 ? &(*text)[k] : nullptr;
+            const OrderedJson* t = text && text->is_array() && text->size() == 3 ? &(*text)[k] : nullptr;
             c[k] = number(value[k], t, pointer + "/" + std::to_string(k));
         }
         return {c[0], c[1], c[2]};
     }
 
-    void steps(const json& list, const std::string& pointer, int parent, PixelTrace& trace, int depth = 0) const {
+    void steps(const OrderedJson& list, const std::string& pointer, int parent, PixelTrace& trace, int depth = 0) const {
         if (!list.is_array()) bad(pointer, "not a list");
         // Groups nest a sample, a light, an object: a few levels at most.
         if (depth > 8) bad(pointer, "groups nested too deep");
         for (std::size_t k = 0; k < list.size(); ++k) {
-            const json& item = list[k];
+            const OrderedJson& item = list[k];
             const std::string at = pointer + "/" + std::to_string(k);
             if (!item.is_object()) bad(at, "not an object");
             if (item.contains("group")) {
@@ -142,9 +142,9 @@ struct Reader {
                 }
             if (!known) bad(at + "/key", "unknown key \"" + key + "\"");
             step.group = parent;
-            const json& value = field(item, "value", at);
+            const OrderedJson& value = field(item, "value", at);
             const auto t = item.find("text");
-            const json* text_of = t == item.end() ? nullptr : &*t;
+            const OrderedJson* text_of = t == item.end() ? nullptr : &*t;
             if (value.is_string()) {
                 step.value = value.get<std::string>();
             } else if (value.is_array()) {
@@ -162,7 +162,7 @@ struct Reader {
         }
     }
 
-    PixelTrace trace(const json& j) const {
+    PixelTrace trace(const OrderedJson& j) const {
         if (!j.is_object()) fail("", ui_message("trace_read_not_trace", {{"problem", "not a JSON object"}}));
         if (integer(j, "schema", "", 0, 1 << 20) != trace_schema_version) bad("/schema", "not schema 1");
         PixelTrace trace;
@@ -176,11 +176,11 @@ struct Reader {
         }
         h.w = integer(j, "w", "", 1, 1 << 16);
         h.z_E = number(field(j, "z_E", ""), nullptr, "/z_E");
-        const json& pixel = field(j, "pixel", "");
+        const OrderedJson& pixel = field(j, "pixel", "");
         if (!pixel.is_object()) bad("/pixel", "not an object");
         h.i = integer(pixel, "i", "/pixel", 0, h.w - 1);
         h.j = integer(pixel, "j", "/pixel", 0, h.w - 1);
-        const json& numeric = field(j, "numeric", "");
+        const OrderedJson& numeric = field(j, "numeric", "");
         if (!numeric.is_object()) bad("/numeric", "not an object");
         h.real = text(numeric, "real", "/numeric");
         if (h.real != "float" && h.real != "double" && h.real != "long-double" && h.real != "quad")
@@ -189,10 +189,10 @@ struct Reader {
         if (h.formula != "article" && h.formula != "stable" && h.formula != "fma" && h.formula != "geometric")
             bad("/numeric/formula", "unknown formula \"" + h.formula + "\"");
         h.spp = integer(numeric, "spp", "/numeric", 1, 1 << 20);
-        const json& effects = field(j, "effects", "");
+        const OrderedJson& effects = field(j, "effects", "");
         if (!effects.is_array()) bad("/effects", "not a list");
         h.effects.clear();
-        for (const json& e : effects) {
+        for (const OrderedJson& e : effects) {
             if (!e.is_string()) bad("/effects", "not a list of names");
             h.effects.push_back(e.get<std::string>());
         }
@@ -226,7 +226,7 @@ struct Reader {
             if (!samples->is_object()) bad("/samples", "not an object");
             SampleSummary summary;
             summary.centre = integer(*samples, "centre", "/samples", 0, h.spp - 1);
-            const json& branches = field(*samples, "branches", "/samples");
+            const OrderedJson& branches = field(*samples, "branches", "/samples");
             if (!branches.is_object()) bad("/samples/branches", "not an object");
             for (int b = 0; b < branch_count; ++b) {
                 const std::string name(branch_name(static_cast<Branch>(b)));
@@ -236,15 +236,15 @@ struct Reader {
             trace.samples = summary;
         }
         if (const auto hit = j.find("hit"); hit != j.end()) trace.hit_object = text(j, "hit", "");
-        const json& result = field(j, "result", "");
+        const OrderedJson& result = field(j, "result", "");
         const auto result_text = j.find("result_text");
-        const json* result_text_of = result_text == j.end() ? nullptr : &*result_text;
+        const OrderedJson* result_text_of = result_text == j.end() ? nullptr : &*result_text;
         if (result.is_array()) {
             const Vec3d rgb = vector(result, result_text_of, "/result");
             trace.result_rgb = rgb;
             trace.result = rgb.x;
             trace.result_real_text = real_texts(j, "result_real_text", 3, "");
-            const json& levels = field(j, "rgb", "");
+            const OrderedJson& levels = field(j, "rgb", "");
             if (!levels.is_array() || levels.size() != 3) bad("/rgb", "not three levels");
             for (std::size_t k = 0; k < 3; ++k) {
                 if (!levels[k].is_number_integer() || levels[k].get<long long>() < 0 || levels[k].get<long long>() > 255)
@@ -261,10 +261,10 @@ struct Reader {
     }
 };
 
-json parse_json(std::string_view text, const Reader& reader) {
+OrderedJson parse_json(std::string_view text, const Reader& reader) {
     try {
-        return json::parse(negative_zeros_as_floats(text));
-    } catch (const json::exception& e) {  // a syntax error, a number too large for a double
+        return OrderedJson::parse(negative_zeros_as_floats(text));
+    } catch (const OrderedJson::exception& e) {  // a syntax error, a number too large for a double
         reader.fail("", ui_message("trace_read_not_trace", {{"problem", e.what()}}));
     }
 }

@@ -37,12 +37,6 @@ std::vector<double> given_numbers(const TraceHeader& header) {
     return numbers;
 }
 
-constexpr std::size_t columns = 80;
-
-std::string pad(const std::string& text, std::size_t width) {
-    return text + std::string(width - std::min(width, display_width(text)), ' ');
-}
-
 std::string pad_left(const std::string& text, std::size_t width) {
     return std::string(width - std::min(width, display_width(text)), ' ') + text;
 }
@@ -59,7 +53,7 @@ std::string wrap(const std::string& first, const std::string& text, std::size_t 
         const std::size_t found = text.find(separator, start);
         const std::size_t end = found == std::string::npos ? text.size() : found + separator.size();
         const std::string piece = text.substr(start, end - start);
-        if (width > indent && width + display_width(piece) > columns) {
+        if (width > indent && width + display_width(piece) > text_columns) {
             while (!out.empty() && out.back() == ' ') out.pop_back();
             out += '\n' + std::string(indent, ' ');
             width = indent;

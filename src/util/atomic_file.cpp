@@ -21,15 +21,12 @@
 #include "util/system_error_text.hpp"
 
 namespace promyk {
-namespace {
 
-// Every failure names the file the user asked for, not the temporary.
-[[noreturn]] void fail(const std::string& path, int err) {
-    throw OutputError(ui_message("output_cannot_write", {{"file", path}, {"reason", system_error_text(err)}}));
+void throw_cannot_write(const std::string& file, int err) {
+    throw OutputError(ui_message("output_cannot_write", {{"file", file}, {"reason", system_error_text(err)}}));
 }
 
-// errno after a stdio call that may fail without setting it.
-int errno_or_eio() { return errno != 0 ? errno : EIO; }
+namespace {
 
 // The process's umask, read without changing it: umask(2) can only be read by
 // setting it, which would race with files that other threads create.
@@ -62,16 +59,16 @@ std::string temporary_template(const std::string& final_path) {
 
 AtomicFile::AtomicFile(std::string final_path, std::string name_in_errors)
     : final_path_(std::move(final_path)), name_(name_in_errors.empty() ? final_path_ : std::move(name_in_errors)) {
-    if (final_path_.empty()) fail(name_, ENOENT);
+    if (final_path_.empty()) throw_cannot_write(name_, ENOENT);
     std::string name = temporary_template(final_path_);
     const int fd = ::mkostemp(name.data(), O_CLOEXEC);
-    if (fd < 0) fail(name_, errno);
+    if (fd < 0) throw_cannot_write(name_, errno);
     std::FILE* stream = ::fdopen(fd, "wb");
     if (stream == nullptr) {
         const int err = errno;
         ::close(fd);
         ::unlink(name.c_str());
-        fail(name_, err);
+        throw_cannot_write(name_, err);
     }
     temp_path_ = std::move(name);
     stream_ = stream;
@@ -102,7 +99,7 @@ void AtomicFile::write(std::string_view bytes) {
     require_open();
     if (bytes.empty()) return;
     errno = 0;
-    if (std::fwrite(bytes.data(), 1, bytes.size(), stream_) != bytes.size()) fail(name_, errno_or_eio());
+    if (std::fwrite(bytes.data(), 1, bytes.size(), stream_) != bytes.size()) throw_cannot_write(name_, errno_or_eio());
 }
 
 void AtomicFile::commit() {
@@ -115,20 +112,20 @@ void AtomicFile::finish() {
     // A full disk often shows only here, when the last buffer is written;
     // ferror catches failures of writes made through stream() and unchecked.
     errno = 0;
-    if (std::fflush(stream_) != 0 || std::ferror(stream_)) fail(name_, errno_or_eio());
+    if (std::fflush(stream_) != 0 || std::ferror(stream_)) throw_cannot_write(name_, errno_or_eio());
     const int fd = ::fileno(stream_);
-    if (::fchmod(fd, 0666 & ~current_umask()) != 0) fail(name_, errno);
+    if (::fchmod(fd, 0666 & ~current_umask()) != 0) throw_cannot_write(name_, errno);
     // The data must be on disk before the rename makes it the file: otherwise
     // a crash could leave the new name pointing at an empty file.
-    if (::fsync(fd) != 0) fail(name_, errno);
+    if (::fsync(fd) != 0) throw_cannot_write(name_, errno);
     errno = 0;
-    if (std::fclose(std::exchange(stream_, nullptr)) != 0) fail(name_, errno_or_eio());
+    if (std::fclose(std::exchange(stream_, nullptr)) != 0) throw_cannot_write(name_, errno_or_eio());
     finished_ = true;
 }
 
 void AtomicFile::publish() {
     if (!finished_ || temp_path_.empty()) throw std::logic_error("AtomicFile published before finish()");
-    if (std::rename(temp_path_.c_str(), final_path_.c_str()) != 0) fail(name_, errno);
+    if (std::rename(temp_path_.c_str(), final_path_.c_str()) != 0) throw_cannot_write(name_, errno);
     temp_path_.clear();
     finished_ = false;
 }

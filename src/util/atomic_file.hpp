@@ -11,6 +11,10 @@
 
 namespace promyk {
 
+// The output error for a file that cannot be written: it names the file the
+// user asked for (never a temporary) and the system's reason.
+[[noreturn]] void throw_cannot_write(const std::string& file, int err);
+
 class AtomicFile {
 public:
     // Creates the temporary `.<basename>.promyk-XXXXXX` in the final path's

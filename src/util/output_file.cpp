@@ -21,12 +21,6 @@
 namespace promyk {
 namespace {
 
-[[noreturn]] void fail(const std::string& name, int err) {
-    throw OutputError(ui_message("output_cannot_write", {{"file", name}, {"reason", system_error_text(err)}}));
-}
-
-int errno_or_eio() { return errno != 0 ? errno : EIO; }
-
 std::string directory_of(const std::string& path) {
     const auto slash = path.find_last_of('/');
     if (slash == std::string::npos) return ".";
@@ -41,7 +35,7 @@ std::string base_of(const std::string& path) {
 
 std::string real_path(const std::string& path, const std::string& name) {
     char* resolved = ::realpath(path.c_str(), nullptr);
-    if (resolved == nullptr) fail(name, errno);
+    if (resolved == nullptr) throw_cannot_write(name, errno);
     std::string result(resolved);
     std::free(resolved);
     return result;
@@ -55,15 +49,15 @@ std::string final_path_of_new_file(const std::string& path) {
     for (int hops = 0;; ++hops) {
         struct stat link {};
         if (::lstat(current.c_str(), &link) != 0 || !S_ISLNK(link.st_mode)) break;
-        if (hops == 40) fail(path, ELOOP);
+        if (hops == 40) throw_cannot_write(path, ELOOP);
         std::string target(PATH_MAX, '\0');
         const ssize_t size = ::readlink(current.c_str(), target.data(), target.size());
-        if (size < 0) fail(path, errno);
+        if (size < 0) throw_cannot_write(path, errno);
         target.resize(static_cast<std::size_t>(size));
         current = !target.empty() && target[0] == '/' ? target : directory_of(current) + "/" + target;
     }
     const std::string base = base_of(current);
-    if (base.empty() || base == "." || base == "..") fail(path, EISDIR);
+    if (base.empty() || base == "." || base == "..") throw_cannot_write(path, EISDIR);
     const std::string directory = real_path(directory_of(current), path);
     return directory == "/" ? "/" + base : directory + "/" + base;
 }
@@ -78,17 +72,17 @@ OutputTarget inspect_output(const std::string& path) {
     struct stat info {};
     if (path == "-") {
         target.kind = OutputKind::standard_output;
-        if (::fstat(STDOUT_FILENO, &info) != 0) fail(target.display_name(), errno);
+        if (::fstat(STDOUT_FILENO, &info) != 0) throw_cannot_write(target.display_name(), errno);
     } else if (path.empty()) {
-        fail("''", ENOENT);
+        throw_cannot_write("''", ENOENT);
     } else if (::stat(path.c_str(), &info) != 0) {
-        if (errno != ENOENT) fail(path, errno);
+        if (errno != ENOENT) throw_cannot_write(path, errno);
         target.kind = OutputKind::file;
         target.final_path = final_path_of_new_file(path);
         target.lands_in_regular_file = true;
         return target;
     } else if (S_ISDIR(info.st_mode)) {
-        fail(path, EISDIR);
+        throw_cannot_write(path, EISDIR);
     } else if (S_ISREG(info.st_mode)) {
         target.kind = OutputKind::file;
         target.final_path = real_path(path, path);
@@ -144,7 +138,7 @@ void require_outputs_not_inputs(const std::vector<std::pair<std::string, OutputT
 
 void throw_write_error(const std::string& display_name, int err) {
     if (err == EPIPE) throw BrokenPipe(display_name);
-    fail(display_name, err);
+    throw_cannot_write(display_name, err);
 }
 
 OutputFile::OutputFile(const std::string& path) : OutputFile(inspect_output(path)) {}
@@ -166,12 +160,12 @@ OutputFile::OutputFile(OutputTarget target) : target_(std::move(target)) {
             fd = ::open(target_.path.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
             break;
     }
-    if (fd < 0) fail(display_name(), errno);
+    if (fd < 0) throw_cannot_write(display_name(), errno);
     std::FILE* stream = ::fdopen(fd, "wb");
     if (stream == nullptr) {
         const int err = errno;
         ::close(fd);
-        fail(display_name(), err);
+        throw_cannot_write(display_name(), err);
     }
     direct_.reset(stream);
 }

@@ -21,6 +21,8 @@ std::string system_error_text(int err) {
                       {{"text", std::generic_category().message(err)}, {"code", std::to_string(err)}});
 }
 
+int errno_or_eio() { return errno != 0 ? errno : EIO; }
+
 std::string system_error_text(const std::error_code& error) {
     // std::filesystem reports errno values (generic or system category on POSIX).
     if (error.category() == std::generic_category() || error.category() == std::system_category())

@@ -12,4 +12,7 @@ namespace promyk {
 std::string system_error_text(int err);
 std::string system_error_text(const std::error_code& error);
 
+// errno after a stdio call that may fail without setting it (EIO then).
+int errno_or_eio();
+
 }  // namespace promyk

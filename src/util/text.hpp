@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace promyk {
 
@@ -22,6 +23,18 @@ inline std::string trim(std::string_view text) {
 inline std::size_t display_width(std::string_view text) {
     return static_cast<std::size_t>(
         std::count_if(text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
+}
+
+// The text and spaces after it, to `width` terminal columns (never cut).
+inline std::string pad(const std::string& text, std::size_t width) {
+    return text + std::string(width - std::min(width, display_width(text)), ' ');
+}
+
+// Items as a person lists them: "a, b, c".
+inline std::string joined(const std::vector<std::string_view>& items) {
+    std::string out;
+    for (const std::string_view item : items) out += (out.empty() ? "" : ", ") + std::string(item);
+    return out;
 }
 
 // -?(0|[1-9][0-9]*): what a person means by a whole number, and nothing a C
