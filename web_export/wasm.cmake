@@ -66,10 +66,18 @@ set(promyk_wasm_launcher)
 if(CMAKE_CXX_COMPILER_LAUNCHER)
   set(promyk_wasm_launcher "-DCMAKE_CXX_COMPILER_LAUNCHER=${CMAKE_CXX_COMPILER_LAUNCHER}")
 endif()
+# The native build's unity batches (docs/building.md) for em++ too: it
+# compiles the same core files, fmt header-only in each.
+if(CMAKE_UNITY_BUILD)
+  set(promyk_wasm_unity -DCMAKE_UNITY_BUILD=ON)
+else()
+  set(promyk_wasm_unity -DCMAKE_UNITY_BUILD=OFF)
+endif()
 add_custom_command(
   OUTPUT "${PROMYK_WASM_JS}" "${PROMYK_WASM_GZ}" "${PROMYK_WASM_GLUE_JS}"
   COMMAND ${promyk_wasm_env} "${PROMYK_EMCMAKE}" "${CMAKE_COMMAND}" -S "${CMAKE_CURRENT_LIST_DIR}/wasm"
           -B "${promyk_wasm_dir}" -DCMAKE_BUILD_TYPE=Release "-DPROMYK_VERSION=${PROJECT_VERSION}" ${promyk_wasm_launcher}
+          ${promyk_wasm_unity}
   # Two jobs at most: em++ is slow and the machine small.
   COMMAND ${promyk_wasm_env} "${CMAKE_COMMAND}" --build "${promyk_wasm_dir}" -j2
   COMMAND "${PROMYK_NODE}" "${CMAKE_CURRENT_LIST_DIR}/wasm/split_module.mjs" "${PROMYK_WASM_JS}" "${PROMYK_WASM_GZ}"
