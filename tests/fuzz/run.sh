@@ -10,7 +10,8 @@
 #   tests/fuzz/run.sh [--no-build] [TARGET ...]     (TARGET: scene, lesson, ...)
 #
 # PROMYK_FUZZ_SCALE multiplies every target's executions (default 1; 0 runs
-# the corpus alone). New inputs go to a scratch folder, never into the corpus.
+# the corpus alone); PROMYK_FUZZ_JOBS how many targets run at once (default:
+# the processors). New inputs go to a scratch folder, never into the corpus.
 # Reproduce a finding: build/asan/fuzz_TARGET REPRODUCER
 # Explore longer: build/asan/fuzz_TARGET -dict=tests/fuzz/TARGET.dict \
 #   -max_total_time=900 NEW_DIR tests/fuzz/corpus/TARGET
@@ -45,6 +46,12 @@ for row in "${table[@]}"; do
   read -r name _ <<<"$row"
   names+=("$name")
 done
+for name in "${wanted[@]}"; do
+  if [[ ! " ${names[*]} " == *" $name "* ]]; then
+    echo "run.sh: no fuzz target '$name'; the targets: ${names[*]}" >&2
+    exit 2
+  fi
+done
 if [ "$build" = 1 ]; then
   echo "== the fuzz targets (preset asan)"
   cmake --preset asan -DPROMYK_WEB=OFF >/dev/null
@@ -55,15 +62,12 @@ bin=build/asan
 out=build/asan/fuzz-runs
 rm -rf "$out"
 mkdir -p "$out"
-failed=0
-for row in "${table[@]}"; do
-  read -r name runs max_len least_cov <<<"$row"
-  if [ ${#wanted[@]} -gt 0 ] && [[ ! " ${wanted[*]} " == *" $name "* ]]; then continue; fi
-  runs=$((runs * scale))
-  mkdir -p "$out/$name/new"
-  log="$out/$name/log.txt"
-  start=$SECONDS
-  status=0
+
+# One target's run; what it found goes to $out/NAME/verdict (the lines to
+# print) and its exit status (0 or 1) to $out/NAME/failed.
+fuzz_one() {
+  local name=$1 runs=$2 max_len=$3 least_cov=$4
+  local log="$out/$name/log.txt" verdict="$out/$name/verdict" start=$SECONDS status=0 last cov reproducer
   # -runs counts the new executions after the corpus is read; the corpus is
   # read from tests/fuzz/corpus/NAME and what is new goes to the scratch folder.
   "$bin/fuzz_$name" -seed=1 -runs="$runs" -max_len="$max_len" -rss_limit_mb=2048 -timeout=20 \
@@ -71,19 +75,51 @@ for row in "${table[@]}"; do
     "$out/$name/new" "tests/fuzz/corpus/$name" >"$log" 2>&1 || status=$?
   last=$(grep -E '^#[0-9]+.*(cov|DONE)' "$log" | tail -1 || true)
   if [ "$status" -ne 0 ]; then
-    failed=1
-    echo "fuzz_$name: FAILED (exit $status) after $((SECONDS - start)) s; the end of $log:"
-    tail -40 "$log" | sed 's/^/  /'
-    reproducer=$(sed -n 's/.*Test unit written to \(.*\)$/\1/p' "$log" | tail -1)
-    if [ -n "$reproducer" ]; then
-      echo "fuzz_$name: reproducer: $reproducer"
-      echo "fuzz_$name: rerun with: $bin/fuzz_$name $reproducer"
-    fi
+    {
+      echo "fuzz_$name: FAILED (exit $status) after $((SECONDS - start)) s; the end of $log:"
+      tail -40 "$log" | sed 's/^/  /'
+      reproducer=$(sed -n 's/.*Test unit written to \(.*\)$/\1/p' "$log" | tail -1)
+      if [ -n "$reproducer" ]; then
+        echo "fuzz_$name: reproducer: $reproducer"
+        echo "fuzz_$name: rerun with: $bin/fuzz_$name $reproducer"
+      fi
+    } >"$verdict"
+    echo 1 >"$out/$name/failed"
   elif cov=$(sed -n 's/.*DONE *cov: \([0-9]*\).*/\1/p' "$log" | tail -1) && [ "${cov:-0}" -lt "$least_cov" ]; then
-    failed=1
-    echo "fuzz_$name: FAILED: coverage ${cov:-none} edges, expected at least $least_cov: $last"
+    echo "fuzz_$name: FAILED: coverage ${cov:-none} edges, expected at least $least_cov: $last" >"$verdict"
+    echo 1 >"$out/$name/failed"
   else
-    echo "fuzz_$name: ok, $runs new executions in $((SECONDS - start)) s: $last"
+    echo "fuzz_$name: ok, $runs new executions in $((SECONDS - start)) s: $last" >"$verdict"
+    echo 0 >"$out/$name/failed"
   fi
+}
+
+# The targets run side by side, as many at once as there are processors
+# (PROMYK_FUZZ_JOBS to choose): each is one process with its own seed and
+# count, so what it does is the same as alone; only its seconds grow on a
+# busy machine. Their verdicts are printed in the table's order.
+jobs="${PROMYK_FUZZ_JOBS:-$(nproc)}"
+if ! [[ "$jobs" =~ ^[1-9][0-9]*$ ]]; then
+  echo "run.sh: PROMYK_FUZZ_JOBS must be a whole number from 1 up, not '$jobs'" >&2
+  exit 2
+fi
+ran=()
+for row in "${table[@]}"; do
+  read -r name runs max_len least_cov <<<"$row"
+  if [ ${#wanted[@]} -gt 0 ] && [[ ! " ${wanted[*]} " == *" $name "* ]]; then continue; fi
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n || true; done
+  mkdir -p "$out/$name/new"
+  fuzz_one "$name" "$((runs * scale))" "$max_len" "$least_cov" &
+  ran+=("$name")
+done
+wait
+failed=0
+for name in "${ran[@]}"; do
+  if [ -f "$out/$name/verdict" ]; then
+    cat "$out/$name/verdict"
+  else
+    echo "fuzz_$name: FAILED: its run ended without a verdict (see $out/$name/)"
+  fi
+  if [ "$(cat "$out/$name/failed" 2>/dev/null || echo 1)" != 0 ]; then failed=1; fi
 done
 exit "$failed"
