@@ -28,7 +28,8 @@ fi
 # the edges a run reached when measured: far fewer means the core lost
 # libFuzzer's counters, src/CMakeLists.txt)
 # (measured on a 2-core machine, unoptimised as the asan preset is: 141 s
-# in all, corpus included; 54 s optimised, in the fuzz build it replaced)
+# in all one after another, corpus included, 77 s two at a time; 54 s
+# optimised, in the fuzz build it replaced)
 table=(
   "scene       11000  16384  4500"
   "lesson       3000  20000  2700"
