@@ -30,40 +30,10 @@ struct ArticleRow;
 #pragma clang diagnostic ignored "-Winline-namespace-reopened-noninline"
 #endif
 namespace avx2 {
-RowCounts draw_article_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out,
-                           Formula formula, bool count_branches);
-void article_row_intensities(const ArticleRow<double>& row, const double* x_E, int w, double* I_P,
-                             std::uint8_t* branches, Formula formula);
-// Columns [lo, hi) of row i from spp > 1 samples a pixel into out[lo .. hi);
-// I_P and branches, when given, get each pixel's mean and Branch;
-// count_branches false: only the non-finite pixels are counted.
-RowCounts draw_sampled_article_row(const ArticleRow<double>& row, int w, int i, int spp, int lo, int hi,
-                                   std::uint8_t* out, double* I_P, std::uint8_t* branches, Formula formula,
-                                   bool count_branches);
-// The row in float (--real float); x_E[j] = pane_x<float>(j, w).
-RowCounts draw_float_row(const ArticleRow<float>& row, const float* x_E, int w, std::uint8_t* out, Formula formula);
-// Columns [lo, hi) of row i in float from spp > 1 samples a pixel.
-RowCounts draw_sampled_float_row(const ArticleRow<float>& row, int w, int i, int spp, int lo, int hi,
-                                 std::uint8_t* out, float* I_P, std::uint8_t* branches, Formula formula,
-                                 bool count_branches);
+#include "render/article_row_isa.inc"
 }
 namespace avx512 {
-RowCounts draw_article_row(const ArticleRow<double>& row, const double* x_E, int w, std::uint8_t* out,
-                           Formula formula, bool count_branches);
-void article_row_intensities(const ArticleRow<double>& row, const double* x_E, int w, double* I_P,
-                             std::uint8_t* branches, Formula formula);
-// Columns [lo, hi) of row i from spp > 1 samples a pixel into out[lo .. hi);
-// I_P and branches, when given, get each pixel's mean and Branch;
-// count_branches false: only the non-finite pixels are counted.
-RowCounts draw_sampled_article_row(const ArticleRow<double>& row, int w, int i, int spp, int lo, int hi,
-                                   std::uint8_t* out, double* I_P, std::uint8_t* branches, Formula formula,
-                                   bool count_branches);
-// The row in float (--real float); x_E[j] = pane_x<float>(j, w).
-RowCounts draw_float_row(const ArticleRow<float>& row, const float* x_E, int w, std::uint8_t* out, Formula formula);
-// Columns [lo, hi) of row i in float from spp > 1 samples a pixel.
-RowCounts draw_sampled_float_row(const ArticleRow<float>& row, int w, int i, int spp, int lo, int hi,
-                                 std::uint8_t* out, float* I_P, std::uint8_t* branches, Formula formula,
-                                 bool count_branches);
+#include "render/article_row_isa.inc"
 }
 #if defined(__clang__)
 #pragma clang diagnostic pop
