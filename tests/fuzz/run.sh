@@ -8,6 +8,7 @@
 # timeout or out-of-memory, and prints the reproducer's path.
 #
 #   tests/fuzz/run.sh [--no-build] [TARGET ...]     (TARGET: scene, lesson, ...)
+#   tests/fuzz/run.sh --list                        the targets, a line each
 #
 # PROMYK_FUZZ_SCALE multiplies every target's executions (default 1; 0 runs
 # the corpus alone); PROMYK_FUZZ_JOBS how many targets run at once (default:
@@ -19,8 +20,12 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 
 build=1
+list=0
 if [ "${1:-}" = "--no-build" ]; then
   build=0
+  shift
+elif [ "${1:-}" = "--list" ]; then
+  list=1
   shift
 fi
 
@@ -47,12 +52,21 @@ for row in "${table[@]}"; do
   read -r name _ <<<"$row"
   names+=("$name")
 done
+if [ "$list" = 1 ]; then  # the targets CI runs, a line each (tests/fuzz/CMakeLists.txt checks them)
+  printf '%s\n' "${names[@]}"
+  exit 0
+fi
 for name in "${wanted[@]}"; do
   if [[ ! " ${names[*]} " == *" $name "* ]]; then
     echo "run.sh: no fuzz target '$name'; the targets: ${names[*]}" >&2
     exit 2
   fi
 done
+jobs="${PROMYK_FUZZ_JOBS:-$(nproc)}"
+if ! [[ "$jobs" =~ ^[1-9][0-9]*$ ]]; then
+  echo "run.sh: PROMYK_FUZZ_JOBS must be a whole number from 1 up, not '$jobs'" >&2
+  exit 2
+fi
 if [ "$build" = 1 ]; then
   echo "== the fuzz targets (preset asan)"
   cmake --preset asan -DPROMYK_WEB=OFF >/dev/null
@@ -99,11 +113,6 @@ fuzz_one() {
 # (PROMYK_FUZZ_JOBS to choose): each is one process with its own seed and
 # count, so what it does is the same as alone; only its seconds grow on a
 # busy machine. Their verdicts are printed in the table's order.
-jobs="${PROMYK_FUZZ_JOBS:-$(nproc)}"
-if ! [[ "$jobs" =~ ^[1-9][0-9]*$ ]]; then
-  echo "run.sh: PROMYK_FUZZ_JOBS must be a whole number from 1 up, not '$jobs'" >&2
-  exit 2
-fi
 ran=()
 for row in "${table[@]}"; do
   read -r name runs max_len least_cov <<<"$row"
