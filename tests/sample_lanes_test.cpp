@@ -125,7 +125,7 @@ TEST_CASE("Sampled rows in lanes: every pixel's mean, branch, grey level and the
                 struct Run {
                     int w, spp;
                 };
-                std::vector<Run> runs = {{64, 4}, {61, 9}, {67, 16}, {32, 16}, {64, 9}, {8, 1024}, {5, 1024}};
+                std::vector<Run> runs = {{64, 4}, {61, 9}, {67, 16}, {32, 16}, {64, 9}, {32, 25}, {8, 1024}, {5, 1024}};
                 if (named.w > 0) runs.push_back({named.w, 4}), runs.push_back({named.w, 9});
                 for (const Run run : runs) {
                     if (!in_sweep(++index, 3)) continue;
@@ -176,7 +176,7 @@ TEST_CASE("Sampled rows in float lanes: every pixel's mean, branch, grey level a
                 struct Run {
                     int w, spp;
                 };
-                std::vector<Run> runs = {{64, 4}, {61, 9}, {35, 16}, {32, 16}, {5, 1024}};
+                std::vector<Run> runs = {{64, 4}, {61, 9}, {35, 16}, {32, 16}, {32, 9}, {5, 1024}};
                 if (named.w > 0) runs.push_back({named.w, 4});
                 for (const Run run : runs) {
                     if (!in_sweep(++index, 3)) continue;

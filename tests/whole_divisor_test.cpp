@@ -2,6 +2,7 @@
 // with two fmas instead of a division must give the division's bits. Here
 // in the baseline build (the C library's fma, exact like the instruction),
 // one lane and two, on every pane size up to 4096, the cells' 2^16 n and
+// 2^15 n w (the scaled points: render/sample_lanes.hpp), and
 // random divisors up to 2^21, against numerators of the samples' kind and,
 // the hard part, numerators whose quotient lies next to a midpoint between
 // two doubles (where q0 = A y alone is often wrong).
@@ -28,7 +29,7 @@ struct Tally {
 
 // A / b by the fmas, in one lane and in the second lane of a pair, against
 // the division; q0_wrong counts where the first step alone is not A / b.
-void check(double A, int b, Tally& tally) {
+void check(double A, double b, Tally& tally) {
     const lanes::WholeDivisor<double, true> one(b);
     const lanes::WholeDivisor<Double2, true> two(b);
     const double q = A / b;
@@ -44,7 +45,7 @@ void check(double A, int b, Tally& tally) {
 
 // Numerators whose quotient by b is next to the midpoint between q and the
 // next double: A = b m rounded, and the doubles around it.
-void near_midpoints(double q, int b, Tally& tally) {
+void near_midpoints(double q, double b, Tally& tally) {
     const double next = std::nextafter(q, 2 * q + 1);
     const long double m = (static_cast<long double>(q) + next) / 2;
     double A = static_cast<double>(m * b);
@@ -57,13 +58,16 @@ void near_midpoints(double q, int b, Tally& tally) {
 TEST_CASE("Division by a whole number by two fmas gives the division's bits", "[lanes][whole-divisor]") {
     std::mt19937_64 random(20261203);
     std::uniform_real_distribution<double> unit(0, 1);
-    std::vector<int> divisors;
+    std::vector<double> divisors;
     for (int b = 1; b <= 4096; ++b) divisors.push_back(b);  // pane sizes
-    for (int n = 1; n <= 32; ++n) divisors.push_back(65536 * n);  // the cells' 2^16 n
+    for (int n = 1; n <= 32; ++n) {
+        divisors.push_back(65536 * n);                                             // the cells' 2^16 n
+        for (double w = 1; w <= 65536; w *= 2) divisors.push_back(32768 * n * w);  // scaled: 2^15 n w
+    }
     std::uniform_int_distribution<int> any_divisor(4097, 1 << 21);
     for (int k = 0; k < 2000; ++k) divisors.push_back(any_divisor(random));
     Tally tally;
-    for (const int b : divisors) {
+    for (const double b : divisors) {
         for (int k = 0; k < 40; ++k) {
             // A sample's x numerator, 2 j + 1 + 2 u in [0, 2 b + 1], and y's, negative.
             const double A = (2 * b + 1) * unit(random);

@@ -195,7 +195,7 @@ struct Divisor {
     static constexpr bool exact = Exact;
     Real d, reciprocal;
     WholeDivisor<Vector, fused> whole;
-    explicit Divisor(int n) : d(Real(n)), reciprocal(Real(1) / Real(n)), whole(n) {}
+    explicit Divisor(double b) : d(Real(b)), reciprocal(Real(1) / Real(b)), whole(b) {}
     PROMYK_LANES_INLINE Vector divide(Vector x) const {
         if constexpr (Exact) return x * reciprocal;
         else if constexpr (fused) return whole.divide(x);
@@ -264,7 +264,7 @@ struct SampledLanes {
     static constexpr int parts = parts_of<Lane>;
     using Code = CodeOf<Lane>;
     int j;                // the first lane's column
-    Points x0[parts]{};   // 2 j + 1, each lane's pixel
+    Points x0[parts]{};   // 2 j + 1, each lane's pixel, divided by SampleGrid::s
     Points x_base[parts]{};  // (2 j + 1) / w - 1, on a whole grid (SampleGrid::whole)
     Lane x0_real{};       // the same in the lanes' Real (each set only where it is read)
     // The nearest sample yet when the points are in float (nearer_in_real):
@@ -283,6 +283,10 @@ struct SampledLanes {
 struct SampleGrid {
     int i, w, spp, n;
     double minus_y0;  // -(2 i + 1)
+    // The scale of the points' steps in double (sample_point_lanes): w
+    // where it is a power of two (w_exact), else 1; its reciprocal (exact,
+    // kept: a sample reads it, never divides) and minus_y0 / s.
+    double s = 1, one_over_s = 1, minus_y0_s = 0;
     // n and w powers of two (double lanes): each sample's point is a whole
     // number of `step`s from the pixel's centre, computed without dividing
     // (sample_point_lanes): y_base = 1 - (2 i + 1) / w, step = 2^-15 / (n w),
@@ -405,20 +409,34 @@ PROMYK_LANES_INLINE auto sample_point_lanes(const SampleGrid& grid, const CellDi
         return OffsetLanes<Lane>{__builtin_convertvector(h_u, Lane) * cell - Real(0.5),
                                   __builtin_convertvector(h_v, Lane) * cell - Real(0.5)};
     } else {
+        // sample_point's steps scaled by 2 / s (SampleGrid::s, 1 or w, a
+        // power of two either way): by_cell divides by 2^15 n s
+        // (draw_sampled_row), giving 2 q / s for its q, and subtracting 1 / s
+        // gives 2 u / s; x0 is (2 j + 1) / s, so x0 + 2 u / s, rounded once,
+        // is sample_point's x0 + 2 u rounded and divided by s. A power of
+        // two changes no rounding (nothing here comes near underflow): the
+        // same bits, without the products by 2, and by 1 / w where w is a
+        // power of two. d is u² + v² times 4 / s², ordered the same.
+        const double half = grid.one_over_s;  // 1/2, scaled
         SamplePoint<Lane> E;
-        RealPart x[parts], y[parts];  // the numerators of sample_point's divisions
+        RealPart x[parts], y[parts];  // the numerators of sample_point's divisions, scaled
         for (int k = 0; k < parts; ++k) {
-            const Points u = by_cell.divide(__builtin_convertvector(part_of<IntsOf<Points>>(h_u, k), Points)) - 0.5;
-            const Points v = by_cell.divide(__builtin_convertvector(part_of<IntsOf<Points>>(h_v, k), Points)) - 0.5;
+            const Points u = by_cell.divide(__builtin_convertvector(part_of<IntsOf<Points>>(h_u, k), Points)) - half;
+            const Points v = by_cell.divide(__builtin_convertvector(part_of<IntsOf<Points>>(h_v, k), Points)) - half;
             // sample_point. -(y0 + 2 v) is (-y0) - 2 v but for a zero's sign,
             // which adding 1 erases (rounding to float is symmetric:
             // -Real(y0 + 2 v) is Real(-(y0 + 2 v)), the same bits).
-            x[k] = __builtin_convertvector(p.x0[k] + 2.0 * u, RealPart);
-            y[k] = __builtin_convertvector(grid.minus_y0 - 2.0 * v, RealPart);
+            x[k] = __builtin_convertvector(p.x0[k] + u, RealPart);
+            y[k] = __builtin_convertvector(grid.minus_y0_s - v, RealPart);
             E.d[k] = u * u + v * v;
         }
-        E.x = divided_by_w(grid, by_w, joined<Lane>(x)) - Real(1);
-        E.y = divided_by_w(grid, by_w, joined<Lane>(y)) + Real(1);
+        if (grid.w_exact) {  // divided by w already
+            E.x = joined<Lane>(x) - Real(1);
+            E.y = joined<Lane>(y) + Real(1);
+        } else {
+            E.x = by_w.divide(joined<Lane>(x)) - Real(1);
+            E.y = by_w.divide(joined<Lane>(y)) + Real(1);
+        }
         return E;
     }
 }
@@ -638,20 +656,21 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(Shooter& shoot, const SampleGrid&
     constexpr int width = LaneTraits<Lane>::width;
     using U = UintsOf<Lane>;
     using Mask = MaskOf<Lane>;
-    // by_cell: 2^16 n, the jitter's denominator (sample_point_lanes); exact
-    // when n is. by_w and by_cell divide bounded numerators, never -0:
+    // Float lanes with an exact cell compute their points in float
+    // (sample_point_lanes) and read x0_real; the rest x0 and nearest, in double.
+    constexpr bool points_in_real = ExactCell && Pixels::parts > 1;
+    // by_cell: the jitter's denominator (sample_point_lanes), 2^16 n in
+    // float lanes' points, else 2^15 n s (scaled); exact when n is a power
+    // of two. by_w and by_cell divide bounded numerators, never -0:
     // WholeDivisor's fmas may stand for the division (in double); by_spp
     // divides any sum.
-    const Divisor<Points, ExactCell, true> by_cell(65536 * grid.n);
+    const Divisor<Points, ExactCell, true> by_cell(points_in_real ? 65536.0 * grid.n : 32768.0 * grid.n * grid.s);
     const Divisor<Lane, false, true> by_w(grid.w);  // divided_by_w
     const MeanDivisor<Lane> by_spp(grid.spp);
     RowTally<Lane> tally;
     const int spp = grid.spp;
     U lane_numbers;  // 0, 1, .. width - 1
     for (int k = 0; k < width; ++k) lane_numbers[k] = static_cast<std::uint32_t>(k);
-    // Float lanes with an exact cell compute their points in float
-    // (sample_point_lanes) and read x0_real; the rest x0 and nearest, in double.
-    constexpr bool points_in_real = parts_of<Lane> > 1 && ExactCell;
     const auto pixels = [&](int j) __attribute__((always_inline)) {
         Pixels p;
         const U j_lanes = static_cast<std::uint32_t>(j) + lane_numbers;
@@ -659,8 +678,9 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(Shooter& shoot, const SampleGrid&
             p.x0_real = Real(2) * __builtin_convertvector(j_lanes, Lane) + Real(1);
         } else {
             for (int k = 0; k < parts_of<Lane>; ++k) {
-                p.x0[k] = 2.0 * __builtin_convertvector(part_of<UintsOf<Points>>(j_lanes, k), Points) + 1.0;
-                if (grid.whole) p.x_base[k] = p.x0[k] * (1.0 / grid.w) - 1.0;  // exact: w a power of two
+                const Points x0 = 2.0 * __builtin_convertvector(part_of<UintsOf<Points>>(j_lanes, k), Points) + 1.0;
+                p.x0[k] = x0 * grid.one_over_s;  // exact: s a power of two
+                if (grid.whole) p.x_base[k] = p.x0[k] - 1.0;
                 p.nearest[k] = splat<Points>(INFINITY);
             }
         }
@@ -747,6 +767,9 @@ PROMYK_LANES_INLINE SampleGrid sample_grid(int w, int i, int spp) {
     grid.i_hash = static_cast<std::uint32_t>(i) * hash_i;
     grid.columns = sample_column_hashes(w, spp);
     grid.w_exact = power_of_two(w);
+    grid.s = grid.w_exact ? w : 1;
+    grid.one_over_s = 1.0 / grid.s;
+    grid.minus_y0_s = grid.minus_y0 * grid.one_over_s;
     grid.whole = power_of_two(grid.n) && grid.w_exact;
     if (grid.whole) {
         grid.y_base = 1.0 - (2.0 * i + 1.0) / w;

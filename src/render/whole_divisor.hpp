@@ -1,6 +1,7 @@
 // Division by a whole number b, 1 <= b <= 2^21, known before the loop,
 // without the division unit (a sample's x_E, y_E and jitter divide by w and
-// 2^16 n; a division costs a quarter of the kernel's share of that unit):
+// 2^16 n or 2^15 n w; a division costs a quarter of the kernel's share of
+// that unit):
 //
 //   q0 = A y   (y = 1/b rounded),   r = A - b q0   (fma),   q = q0 + r y   (fma)
 //
@@ -17,6 +18,10 @@
 //    so |A / b - m| = |A / 2^t - c m| / c >= s / (2 c) >= s / 2^22. Rounded
 //    once, A / b and q0 + r y fall on the same side of every midpoint: the
 //    same double. No ties either.
+// b may also be such a number times a power of two 2^k (the scaled cell's
+// 2^15 n w): y, q0, r y and q are then those of b / 2^k scaled by 2^-k, r
+// is the same, and scaling by a power of two rounds nothing (the samples'
+// quotients are far from underflow).
 // tests/whole_divisor_test.cpp checks it against the division on every
 // divisor the panes use and numerators next to every midpoint.
 #pragma once
@@ -39,7 +44,7 @@ inline constexpr bool fused_multiply_add = false;
 template <class Lane, bool Fused = fused_multiply_add>
 struct WholeDivisor {
     double b, y;
-    explicit WholeDivisor(int whole) : b(whole), y(1.0 / whole) {}
+    explicit WholeDivisor(double whole) : b(whole), y(1.0 / whole) {}
     PROMYK_LANES_INLINE Lane divide(Lane A) const {
         if constexpr (Fused) {
             const Lane q0 = A * y;
