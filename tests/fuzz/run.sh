@@ -12,7 +12,10 @@
 #
 # PROMYK_FUZZ_SCALE multiplies every target's executions (default 1; 0 runs
 # the corpus alone); PROMYK_FUZZ_JOBS how many targets run at once (default:
-# the processors). New inputs go to a scratch folder, never into the corpus.
+# the processors). New inputs go to a scratch folder, never into the corpus:
+# build/asan/fuzz-runs/TARGET/ (PROMYK_FUZZ_OUT for another folder; the
+# targets are taken from PROMYK_FUZZ_BIN, default build/asan, which
+# run_sh_test.sh points at stand-ins to check the verdicts).
 # Reproduce a finding: build/asan/fuzz_TARGET REPRODUCER
 # Explore longer: build/asan/fuzz_TARGET -dict=tests/fuzz/TARGET.dict \
 #   -max_total_time=900 NEW_DIR tests/fuzz/corpus/TARGET
@@ -73,13 +76,12 @@ if [ "$build" = 1 ]; then
   cmake --build --preset asan --target "${names[@]/#/fuzz_}"
 fi
 
-bin=build/asan
-out=build/asan/fuzz-runs
-rm -rf "$out"
+bin="${PROMYK_FUZZ_BIN:-build/asan}"
+out="${PROMYK_FUZZ_OUT:-build/asan/fuzz-runs}"
 mkdir -p "$out"
 
-# One target's run; what it found goes to $out/NAME/verdict (the lines to
-# print) and its exit status (0 or 1) to $out/NAME/failed.
+# One target's run; what it found goes to $out/NAME/verdict, the lines to
+# print, the first "fuzz_NAME: ok, ..." where it passed.
 fuzz_one() {
   local name=$1 runs=$2 max_len=$3 least_cov=$4
   local log="$out/$name/log.txt" verdict="$out/$name/verdict" start=$SECONDS status=0 last cov reproducer
@@ -99,13 +101,10 @@ fuzz_one() {
         echo "fuzz_$name: rerun with: $bin/fuzz_$name $reproducer"
       fi
     } >"$verdict"
-    echo 1 >"$out/$name/failed"
   elif cov=$(sed -n 's/.*DONE *cov: \([0-9]*\).*/\1/p' "$log" | tail -1) && [ "${cov:-0}" -lt "$least_cov" ]; then
     echo "fuzz_$name: FAILED: coverage ${cov:-none} edges, expected at least $least_cov: $last" >"$verdict"
-    echo 1 >"$out/$name/failed"
   else
     echo "fuzz_$name: ok, $runs new executions in $((SECONDS - start)) s: $last" >"$verdict"
-    echo 0 >"$out/$name/failed"
   fi
 }
 
@@ -117,7 +116,9 @@ ran=()
 for row in "${table[@]}"; do
   read -r name runs max_len least_cov <<<"$row"
   if [ ${#wanted[@]} -gt 0 ] && [[ ! " ${wanted[*]} " == *" $name "* ]]; then continue; fi
-  while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n || true; done
+  # A free slot: wait for a run to end (none running: go on, never spin).
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs" ] && [ -n "$(jobs -rp)" ]; do wait -n || true; done
+  rm -rf "${out:?}/$name"  # the last run's, of this target only
   mkdir -p "$out/$name/new"
   fuzz_one "$name" "$((runs * scale))" "$max_len" "$least_cov" &
   ran+=("$name")
@@ -130,6 +131,6 @@ for name in "${ran[@]}"; do
   else
     echo "fuzz_$name: FAILED: its run ended without a verdict (see $out/$name/)"
   fi
-  if [ "$(cat "$out/$name/failed" 2>/dev/null || echo 1)" != 0 ]; then failed=1; fi
+  if ! head -n 1 "$out/$name/verdict" 2>/dev/null | grep -q "^fuzz_$name: ok, "; then failed=1; fi
 done
 exit "$failed"
