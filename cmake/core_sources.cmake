@@ -57,6 +57,7 @@ set(PROMYK_PORTABLE_SOURCES
   trace/messages.cpp
   trace/byte_size_text.cpp
   util/interrupt.cpp
+  util/held_signals.cpp
   util/printable.cpp
   # The lesson runner: the page shows lessons through it (web_export/wasm).
   lesson/lesson_parse.cpp

@@ -11,6 +11,7 @@
 #include "scene/scene_parse.hpp"
 #include "scene/scene_validate.hpp"
 #include "trace/messages.hpp"
+#include "util/held_signals.hpp"
 #include "util/interrupt.hpp"
 
 namespace promyk {
@@ -30,38 +31,35 @@ std::string errno_text(int error) { return std::error_code(error, std::generic_c
 }  // namespace
 
 // A FIFO, a pipe or a slow device may give the file in pieces: read until the
-// end of the file (read() returning 0), not until a short read. A signal that
-// interrupts open() (waiting for a FIFO's writer) or read() (EINTR) is
-// promyk's interrupt (SIGINT, SIGTERM: Interrupted, exit 128 + signal) or
-// else harmless, and the call is made again. A signal that came before the
-// call (promyk still starting) interrupts nothing: it is looked at before
-// each call, or a FIFO with no writer would keep promyk waiting for ever.
+// end of the file (read() returning 0), not until a short read. Opened
+// without blocking (a FIFO with no writer yet opens at once), then every
+// wait is HeldSignals' (util/held_signals.hpp): a signal at any moment, even
+// just before a wait, ends it. promyk's interrupt (SIGINT, SIGTERM, SIGHUP)
+// throws Interrupted (exit 128 + signal); another signal is harmless and
+// the call is made again.
 Scene load_scene_file(const std::string& path) {
+    const HeldSignals held;
     int fd = -1;
     for (;;) {
         throw_if_interrupted();
-        fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+        fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
         if (fd >= 0) break;
         const int error = errno;
-        if (error == EINTR) {
-            throw_if_interrupted();
-            continue;
-        }
+        if (error == EINTR) continue;
         throw SceneFileError(path, ui_message("scene_cannot_open", {{"reason", errno_text(error)}}), error);
     }
     const Descriptor file{fd};
     std::string text;
     char buffer[1 << 16];
     for (;;) {
-        throw_if_interrupted();
+        // A FIFO reports no end before a writer has come and gone (Linux's
+        // pipe_poll), so this waits for the writer as open() did.
+        held.wait_ready(file.fd);
         const ssize_t got = ::read(file.fd, buffer, sizeof buffer);
         if (got == 0) break;
         if (got < 0) {
             const int error = errno;
-            if (error == EINTR) {
-                throw_if_interrupted();
-                continue;
-            }
+            if (error == EINTR || error == EAGAIN || error == EWOULDBLOCK) continue;  // waits again
             throw SceneFileError(path, ui_message("scene_cannot_read", {{"reason", errno_text(error)}}), error);
         }
         text.append(buffer, static_cast<std::size_t>(got));

@@ -16,6 +16,8 @@
 
 #include "trace/messages.hpp"
 #include "util/errors.hpp"
+#include "util/held_signals.hpp"
+#include "util/interrupt.hpp"
 #include "util/system_error_text.hpp"
 
 namespace promyk {
@@ -60,6 +62,37 @@ std::string final_path_of_new_file(const std::string& path) {
     if (base.empty() || base == "." || base == "..") throw_cannot_write(path, EISDIR);
     const std::string directory = real_path(directory_of(current), path);
     return directory == "/" ? "/" + base : directory + "/" + base;
+}
+
+// A device, socket or FIFO, opened for writing. A FIFO with no reader:
+// open(O_NONBLOCK) fails with ENXIO, and nothing tells when a reader comes,
+// so it is tried again every 20 ms, paused by HeldSignals
+// (util/held_signals.hpp): a signal at any moment ends the wait (a blocking
+// open() would miss one that came just before it and wait for ever). Once
+// open, its writes block again. -1 and errno on failure.
+int open_stream(const std::string& path) {
+    struct stat info {};
+    if (::stat(path.c_str(), &info) == 0 && !S_ISFIFO(info.st_mode))
+        return ::open(path.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
+    const HeldSignals held;
+    for (;;) {
+        throw_if_interrupted();
+        const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY | O_NONBLOCK);
+        if (fd >= 0) {
+            const int flags = ::fcntl(fd, F_GETFL);
+            if (flags < 0 || ::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) != 0) {
+                const int error = errno;
+                ::close(fd);
+                errno = error;
+                return -1;
+            }
+            return fd;
+        }
+        if (errno == ENXIO)
+            held.pause(20);  // no reader yet
+        else if (errno != EINTR)
+            return -1;
+    }
 }
 
 }  // namespace
@@ -156,8 +189,8 @@ OutputFile::OutputFile(OutputTarget target) : target_(std::move(target)) {
             break;
         case OutputKind::stream:
             // No O_CREAT, no O_TRUNC: the device or FIFO exists and is written
-            // as it is. A FIFO blocks here until a reader opens it.
-            fd = ::open(target_.path.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
+            // as it is. A FIFO waits here until a reader opens it.
+            fd = open_stream(target_.path);
             break;
     }
     if (fd < 0) throw_cannot_write(display_name(), errno);
