@@ -552,16 +552,43 @@ struct ArticleSamples {
     // it loaded and broadcast its every number again after each vector of
     // pixels (about 75 instructions a pair of vectors on the baseline path).
     const ArticleRow<Real> row;
+    // A sample in two halves, as article_lanes is: where its ray meets the
+    // sphere (hit), then its shading (shade). draw_sampled_row finds a
+    // sample's hit a sample ahead, while the one before is shaded, as the
+    // spp 1 rows do a vector ahead (render/article_row_lanes.hpp). Without
+    // the early outs only (the columns near the silhouette): with them, a
+    // hit ahead that may end early made whole rows much slower (AVX-512,
+    // bench effects --w 256 --spp 4, art. full 8.42 -> 13.64 ns a pixel).
+    static constexpr bool in_halves = !EarlyOuts;
+    template <class Lane, bool InReal>
+    struct Hit {
+        SamplePoint<Lane, InReal> E;
+        LaneHit<Lane> hit;
+    };
+    template <class Lane, bool InReal>
+    PROMYK_LANES_INLINE Hit<Lane, InReal> hit(const SamplePoint<Lane, InReal>& E) const {
+        return {E, article_hit<Root, EarlyOuts>(SampleRow<Lane>(row, E.y), E.x)};
+    }
+    template <class Lane, bool InReal>
+    PROMYK_LANES_INLINE SampleResult<Lane, Lane> shade(const Hit<Lane, InReal>& h) const {
+        const LanePixel<Lane> pixel = article_shade<EarlyOuts>(SampleRow<Lane>(row, h.E.y), h.hit);
+        return {pixel.I_P, branch_code<CodeOf<Lane>>(pixel.miss, pixel.dark, pixel.non_finite)};
+    }
     template <class Lane, bool InReal>
     PROMYK_LANES_INLINE SampleResult<Lane, Lane> operator()(const SamplePoint<Lane, InReal>& E, MaskOf<Lane>) {
-        const LanePixel<Lane> pixel = article_lanes<Root, EarlyOuts>(SampleRow<Lane>(row, E.y), E.x);
-        return {pixel.I_P, branch_code<CodeOf<Lane>>(pixel.miss, pixel.dark, pixel.non_finite)};
+        return shade(hit(E));
     }
     // The row's work beyond its branches: one test of the sphere a sample.
     static void count(RowCounts& counts, int pixels, int spp) {
         counts.sphere_tests = static_cast<long long>(pixels) * spp;
     }
 };
+
+// Whether a shooter gives its samples in two halves (ArticleSamples).
+template <class Shooter, class = void>
+inline constexpr bool in_halves = false;
+template <class Shooter>
+inline constexpr bool in_halves<Shooter, std::void_t<decltype(Shooter::in_halves)>> = Shooter::in_halves;
 
 // The row's pixels by branch, and those whose samples disagree, counted lane
 // by lane (a mask is -1 where true) and summed once at the row's end.
@@ -689,23 +716,37 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(Shooter& shoot, const SampleGrid&
         return p;
     };
     const std::uint32_t n = static_cast<std::uint32_t>(grid.n);
+    // A shooter in halves (ArticleSamples) in AVX-512's double lanes: the
+    // hit too is found ahead (with the point), the shading in the sample's
+    // own step. Only there: it needs registers for two vectors' hits ahead,
+    // and AVX2's sixteen spilled (bench effects --w 256 --spp 4, the
+    // article's row: 8.9 -> 13.5 ns a pixel; AVX-512 6.15 -> 5.6).
+    constexpr bool halves = in_halves<Shooter> && std::is_same_v<Lane, Double8>;
     const auto points = [&](const SampleCounter& c, const Pixels& p) __attribute__((always_inline)) {
-        return sample_point_lanes(grid, by_cell, by_w, c, p);
+        if constexpr (halves)
+            return shoot.hit(sample_point_lanes(grid, by_cell, by_w, c, p));
+        else
+            return sample_point_lanes(grid, by_cell, by_w, c, p);
     };
     // Sample E's of the pixels p, traced and taken.
     const auto sample = [&](const auto& E_ahead, Pixels& p, Mask kept) __attribute__((always_inline)) {
-        const auto& E = point_at(E_ahead, grid, by_w, p);
-        take_result<CountBranches>(shoot(E, kept), E, p);
+        if constexpr (halves) {
+            take_result<CountBranches>(shoot.shade(E_ahead), E_ahead.E, p);
+        } else {
+            const auto& E = point_at(E_ahead, grid, by_w, p);
+            take_result<CountBranches>(shoot(E, kept), E, p);
+        }
     };
     const auto put = [&](const Pixels& p, int j, int lanes, Mask kept) __attribute__((always_inline)) {
         put_sampled<CountBranches>(p, spp, by_spp, j, lanes, kept, out, tally, I_P, branches);
     };
     const Mask all_kept = ~Mask{};
-    // Each sample's points are computed a sample ahead, in the step before
-    // the sample they lead (the pair's last sample computes the next pair's
-    // first): their hash and divisions then run while the square roots
-    // before them wait, the loop being bound by the latency of a sample's
-    // chain rather than by its work. The last pair computes one unused.
+    // Each sample's points (and, in halves, hits) are computed a sample
+    // ahead, in the step before the sample they lead (the pair's last
+    // sample computes the next pair's first): their hash and divisions then
+    // run while the square roots before them wait, the loop being bound
+    // by the latency of a sample's chain rather than by its work. The last
+    // pair computes one unused.
     int j = lo;
     if (j + 2 * width <= hi) {
         Pixels p0 = pixels(j), p1 = pixels(j + width);
