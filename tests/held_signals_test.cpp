@@ -61,7 +61,16 @@ int status_of(int signal, const std::function<void()>& wait_on_fifo) {
     return status;
 }
 
-bool ended_by_interrupt(int status) { return WIFEXITED(status) && WEXITSTATUS(status) == 0; }
+// Each of promyk's interrupt signals, pending, must end wait_on_fifo with
+// Interrupted, not the watchdog.
+void check_every_signal_ends(const std::function<void()>& wait_on_fifo) {
+    for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+        INFO("signal " << signal);
+        const int status = status_of(signal, wait_on_fifo);
+        CHECK((WIFEXITED(status) && WEXITSTATUS(status) == 0));
+        CHECK_FALSE(WIFSIGNALED(status));  // not the watchdog
+    }
+}
 
 }  // namespace
 
@@ -69,24 +78,14 @@ TEST_CASE("a signal pending when a scene FIFO has no writer yet ends the load", 
     TempDir dir;
     const std::string fifo = dir.file("scene.json");
     REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
-    for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
-        INFO("signal " << signal);
-        const int status = status_of(signal, [&] { load_scene_file(fifo); });
-        CHECK(ended_by_interrupt(status));
-        CHECK_FALSE(WIFSIGNALED(status));  // not the watchdog
-    }
+    check_every_signal_ends([&] { load_scene_file(fifo); });
 }
 
 TEST_CASE("a signal pending when an output FIFO has no reader yet ends the open", "[held-signals]") {
     TempDir dir;
     const std::string fifo = dir.file("image.png");
     REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
-    for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
-        INFO("signal " << signal);
-        const int status = status_of(signal, [&] { OutputFile file(fifo); });
-        CHECK(ended_by_interrupt(status));
-        CHECK_FALSE(WIFSIGNALED(status));
-    }
+    check_every_signal_ends([&] { OutputFile file(fifo); });
     CHECK(dir.entries() == std::set<std::string>{"image.png"});
 }
 

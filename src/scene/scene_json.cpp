@@ -54,7 +54,7 @@ Scene load_scene_file(const std::string& path) {
     for (;;) {
         // A FIFO reports no end before a writer has come and gone (Linux's
         // pipe_poll), so this waits for the writer as open() did.
-        held.wait_ready(file.fd);
+        held.wait_readable(file.fd);
         const ssize_t got = ::read(file.fd, buffer, sizeof buffer);
         if (got == 0) break;
         if (got < 0) {

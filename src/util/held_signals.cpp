@@ -34,22 +34,18 @@ void fail_unless_interrupted(int error) {
 HeldSignals::HeldSignals() {
     sigset_t held;
     sigemptyset(&held);
-    sigaddset(&held, SIGINT);
-    sigaddset(&held, SIGTERM);
-    sigaddset(&held, SIGHUP);
+    for (const int signal_number : interrupt_signals) sigaddset(&held, signal_number);
     pthread_sigmask(SIG_BLOCK, &held, &found_);
     // Inside a wait the three are open even where the caller had blocked
     // them (a test makes a signal pending that way).
     waiting_ = found_;
-    sigdelset(&waiting_, SIGINT);
-    sigdelset(&waiting_, SIGTERM);
-    sigdelset(&waiting_, SIGHUP);
+    for (const int signal_number : interrupt_signals) sigdelset(&waiting_, signal_number);
 }
 
 HeldSignals::~HeldSignals() { pthread_sigmask(SIG_SETMASK, &found_, nullptr); }
 
-void HeldSignals::wait_ready(int fd, bool write) const {
-    pollfd file{fd, static_cast<short>(write ? POLLOUT : POLLIN), 0};
+void HeldSignals::wait_readable(int fd) const {
+    pollfd file{fd, POLLIN, 0};
     if (wait(&file, 1, nullptr, &waiting_) < 0) fail_unless_interrupted(errno);
     throw_if_interrupted();
 }

@@ -18,10 +18,10 @@ public:
     HeldSignals(const HeldSignals&) = delete;
     HeldSignals& operator=(const HeldSignals&) = delete;
 
-    // Until fd can be read (data, or its writer gone) or written (`write`):
-    // throws Interrupted (util/errors.hpp) on promyk's interrupt; any other
-    // signal ends the wait early, harmlessly (the caller tries again).
-    void wait_ready(int fd, bool write = false) const;
+    // Until fd can be read (data, or its writer gone): throws Interrupted
+    // (util/errors.hpp) on promyk's interrupt; any other signal ends the
+    // wait early, harmlessly (the caller tries again).
+    void wait_readable(int fd) const;
     // Up to `milliseconds`, or less on a signal; throws Interrupted as above.
     void pause(int milliseconds) const;
 
