@@ -58,6 +58,7 @@ set(PROMYK_PORTABLE_SOURCES
   trace/byte_size_text.cpp
   util/interrupt.cpp
   util/held_signals.cpp
+  util/read_input.cpp
   util/printable.cpp
   # The lesson runner: the page shows lessons through it (web_export/wasm).
   lesson/lesson_parse.cpp

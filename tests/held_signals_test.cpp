@@ -1,6 +1,8 @@
 // Waiting on a FIFO loses no interrupt (util/held_signals.hpp): a signal that
 // comes at any moment, even just before promyk starts to wait for a FIFO's
-// writer (a scene) or reader (an output), ends the wait with Interrupted.
+// writer (a scene, a trace for diff, answers) or reader (an output), or for
+// standard input (diff -, --answers -, lesson --step's Enter), ends the wait
+// with Interrupted.
 // "Just before" is made certain here: the signal is raised while blocked, so
 // it is pending when the load or the open begins (a check of the flag
 // followed by a blocking call would wait for ever). In a child process each,
@@ -19,11 +21,13 @@
 #include <string>
 #include <thread>
 
+#include "app/cli_values.hpp"
 #include "scene/scene_json.hpp"
 #include "temp_dir.hpp"
 #include "util/errors.hpp"
 #include "util/interrupt.hpp"
 #include "util/output_file.hpp"
+#include "util/read_input.hpp"
 
 using namespace promyk;
 using promyk::testing::TempDir;
@@ -72,6 +76,23 @@ void check_every_signal_ends(const std::function<void()>& wait_on_fifo) {
     }
 }
 
+// Standard input made a pipe with nothing in it and a writer that stays
+// (this process), as a terminal where nobody has typed yet.
+void quiet_standard_input() {
+    int ends[2];
+    if (::pipe(ends) != 0 || ::dup2(ends[0], STDIN_FILENO) < 0) _exit(104);
+}
+
+// Standard input made a pipe holding `text`, then closed.
+void standard_input_of(const std::string& text) {
+    int ends[2];
+    REQUIRE(::pipe(ends) == 0);
+    REQUIRE(::write(ends[1], text.data(), text.size()) == static_cast<ssize_t>(text.size()));
+    ::close(ends[1]);
+    REQUIRE(::dup2(ends[0], STDIN_FILENO) >= 0);
+    ::close(ends[0]);
+}
+
 }  // namespace
 
 TEST_CASE("a signal pending when a scene FIFO has no writer yet ends the load", "[held-signals]") {
@@ -87,6 +108,62 @@ TEST_CASE("a signal pending when an output FIFO has no reader yet ends the open"
     REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
     check_every_signal_ends([&] { OutputFile file(fifo); });
     CHECK(dir.entries() == std::set<std::string>{"image.png"});
+}
+
+TEST_CASE("a signal pending when an input FIFO has no writer yet ends the read (diff, answers)", "[held-signals]") {
+    TempDir dir;
+    const std::string fifo = dir.file("a.jsonl");
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    check_every_signal_ends([&] { cli::read_input_file(fifo, "diff reads", 1 << 20, "diff"); });
+}
+
+TEST_CASE("a signal pending while standard input is quiet ends the read (diff -, --answers -)", "[held-signals]") {
+    check_every_signal_ends([] {
+        quiet_standard_input();
+        cli::read_input_file("-", "--answers reads", 1 << 20, "--answers");
+    });
+}
+
+TEST_CASE("a signal pending while lesson --step waits for Enter ends the wait", "[held-signals]") {
+    check_every_signal_ends([] {
+        quiet_standard_input();
+        read_standard_input_line();
+    });
+}
+
+TEST_CASE("an Enter is read a line at a time, what follows left unread", "[held-signals]") {
+    const int kept = ::dup(STDIN_FILENO);
+    REQUIRE(kept >= 0);
+    standard_input_of("b\n\nq \nno end");
+    CHECK(read_standard_input_line() == std::optional<std::string>("b"));
+    CHECK(read_standard_input_line() == std::optional<std::string>(""));
+    CHECK(read_standard_input_line() == std::optional<std::string>("q "));
+    CHECK(read_standard_input_line() == std::optional<std::string>("no end"));
+    CHECK(read_standard_input_line() == std::nullopt);  // closed: the lesson goes on
+    standard_input_of("whole\ninput");
+    CHECK(cli::read_input_file("-", "test reads", 1 << 20, "test") == "whole\ninput");
+    ::dup2(kept, STDIN_FILENO);
+    ::close(kept);
+}
+
+TEST_CASE("an input FIFO whose writer comes late and writes in pieces is read whole", "[held-signals]") {
+    TempDir dir;
+    const std::string fifo = dir.file("answers.txt");
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    const std::string text(200000, 'a');  // more than a pipe holds at once
+    std::thread writer([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        const int fd = ::open(fifo.c_str(), O_WRONLY);
+        if (fd < 0) return;
+        (void)!::write(fd, text.data(), 1000);
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        (void)!::write(fd, text.data() + 1000, text.size() - 1000);
+        ::close(fd);
+    });
+    const std::string read = cli::read_input_file(fifo, "--answers reads", 1 << 20, "--answers");
+    writer.join();
+    CHECK(read.size() == text.size());
+    CHECK(read == text);
 }
 
 TEST_CASE("a scene FIFO whose writer comes late and writes in pieces is read whole", "[held-signals]") {

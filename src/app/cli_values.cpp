@@ -1,12 +1,10 @@
 #include "app/cli_values.hpp"
 
-#include <cctype>
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
-#include <memory>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -20,6 +18,7 @@
 #include "util/edit_distance.hpp"
 #include "util/errors.hpp"
 #include "util/printable.hpp"
+#include "util/read_input.hpp"
 #include "util/text.hpp"
 
 namespace promyk::cli {
@@ -175,28 +174,24 @@ Scene load_scene_option(const std::string& path) { return path.empty() ? article
 std::string read_input_file(const std::string& path, const std::string& reads, std::size_t max_bytes,
                             const std::string& who) {
     const std::string shown = path == "-" ? "(stdin)" : path;
-    std::FILE* in = stdin;
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> opened(nullptr, std::fclose);
     if (path != "-") {
         std::error_code error;
         if (std::filesystem::is_directory(path, error)) throw InputError(path, "", "is a folder; " + reads + " a file");
-        opened.reset(std::fopen(path.c_str(), "rb"));
-        if (!opened) throw InputError(path, "", "cannot read the file: " + std::generic_category().message(errno));
-        in = opened.get();
     }
-    // In chunks, the limit checked as the bytes come: one byte past it is refusal.
-    std::string text;
-    char chunk[1 << 16];
-    for (;;) {
-        const std::size_t got = std::fread(chunk, 1, sizeof chunk, in);
-        text.append(chunk, got);
-        if (text.size() > max_bytes)
-            throw InputError(shown, "", ui_message("input_too_large", {{"mib", std::to_string(max_bytes >> 20)},
-                                                                        {"who", who}}));
-        if (got < sizeof chunk) break;
+    // util/read_input: the limit checked as the bytes come (one byte past it
+    // is refusal), and a FIFO, pipe or terminal waited on interruptibly.
+    WholeFile file = path == "-" ? read_whole_standard_input(max_bytes) : read_whole_file(path, max_bytes);
+    switch (file.failure) {
+        case WholeFile::Failure::none:
+            break;
+        case WholeFile::Failure::cannot_open:
+        case WholeFile::Failure::cannot_read:
+            throw InputError(shown, "", "cannot read the file: " + std::generic_category().message(file.error));
+        case WholeFile::Failure::too_large:
+            throw InputError(shown, "",
+                             ui_message("input_too_large", {{"mib", std::to_string(max_bytes >> 20)}, {"who", who}}));
     }
-    if (std::ferror(in)) throw InputError(shown, "", "cannot read the file: " + std::generic_category().message(errno));
-    return text;
+    return std::move(file.bytes);
 }
 
 }  // namespace promyk::cli

@@ -8,12 +8,11 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
-#include <iostream>
 #include <map>
 #include <memory>
-#include <sstream>
 #include <optional>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -30,18 +29,19 @@
 #include "lesson/lesson_render.hpp"
 #include "lesson/lesson_run.hpp"
 #include "lesson/worksheet.hpp"
-#include "trace/messages.hpp"
-#include "util/edit_distance.hpp"
-#include "util/wrap.hpp"
-#include "trace/trace_text.hpp"
 #include "render/kernel.hpp"
 #include "render/trace_pixel.hpp"
 #include "scene/scene_json.hpp"
+#include "trace/messages.hpp"
+#include "trace/trace_text.hpp"
+#include "util/edit_distance.hpp"
 #include "util/errors.hpp"
 #include "util/interrupt.hpp"
 #include "util/output_file.hpp"
 #include "util/printable.hpp"
+#include "util/read_input.hpp"
 #include "util/standard_output.hpp"
+#include "util/wrap.hpp"
 
 namespace promyk::app {
 
@@ -146,12 +146,12 @@ int run_list(const LessonLibrary& library, Language language) {
 enum class StepKey { next, back, quit };
 
 // Waits for Enter (step mode): "q" then Enter quits, "b" then Enter goes
-// back a step; a closed standard input just goes on.
+// back a step; a closed standard input just goes on. Ctrl-C while waiting
+// ends the lesson (Interrupted, util/read_input.hpp), not the wait.
 StepKey wait_for_enter(Language language, std::string_view prompt_id) {
     fmt::print(stderr, "{}", message(language, prompt_id));
     std::fflush(stderr);
-    std::string line;
-    std::getline(std::cin, line);
+    std::string line = read_standard_input_line().value_or("");
     fmt::print(stderr, "\n");
     line.erase(0, line.find_first_not_of(" \t"));
     line.erase(line.find_last_not_of(" \t\r") + 1);

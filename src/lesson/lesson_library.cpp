@@ -5,19 +5,19 @@
 #include <algorithm>
 #include <cerrno>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <system_error>
 
 #include <fmt/format.h>
 
-#include "util/embedded_files.hpp"
 #include "scene/scene_json.hpp"
-#include "util/atomic_file.hpp"
-#include "util/errors.hpp"
-#include "util/system_error_text.hpp"
 #include "trace/messages.hpp"
+#include "util/atomic_file.hpp"
+#include "util/embedded_files.hpp"
+#include "util/errors.hpp"
+#include "util/read_input.hpp"
+#include "util/system_error_text.hpp"
 
 namespace promyk {
 
@@ -36,18 +36,22 @@ std::optional<Language> language_of(const std::string& path) {
 // one (a disk image named en/01-x.md) is refused rather than read into memory.
 constexpr std::size_t max_lesson_file_bytes = 8 << 20;
 
+// Regular files only (the caller checks), yet one swapped for a FIFO after
+// the check waits interruptibly (util/read_input).
 std::string read_text(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path.string(), "", ui_message("file_cannot_read", {{"reason", system_error_text(errno)}}));
-    std::string text;
-    char buffer[65536];
-    while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-        text.append(buffer, static_cast<std::size_t>(in.gcount()));
-        if (text.size() > max_lesson_file_bytes)
+    WholeFile file = read_whole_file(path.string(), max_lesson_file_bytes);
+    switch (file.failure) {
+        case WholeFile::Failure::none:
+            break;
+        case WholeFile::Failure::cannot_open:
+        case WholeFile::Failure::cannot_read:
+            throw InputError(path.string(), "",
+                             ui_message("file_cannot_read", {{"reason", system_error_text(file.error)}}));
+        case WholeFile::Failure::too_large:
             throw InputError(path.string(), "",
                              ui_message("file_too_large", {{"bytes", std::to_string(max_lesson_file_bytes)}}));
     }
-    return text;
+    return std::move(file.bytes);
 }
 
 }  // namespace

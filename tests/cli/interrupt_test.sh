@@ -6,6 +6,9 @@
 #     exit 141, quietly, with the image not committed;
 #   - SIGINT and SIGTERM while blocked reading a scene from a FIFO with no
 #     writer: "interrupted", not an input error ("Interrupted system call");
+#   - SIGINT, SIGTERM, SIGHUP while waiting on an input nobody writes: a
+#     trace FIFO for diff, answers on standard input, lesson --step's Enter
+#     (exit 128 + signal; the lesson's later steps never printed);
 #   - SIGINT, SIGTERM, SIGHUP during one pixel's trace of 1,500 spheres and
 #     1,500 lights with shadows (2.25 million shadow tests): trace (text and
 #     JSON), lesson shadows, render --traces; within a second (6 s under the
@@ -42,11 +45,11 @@ wait_for_handlers() {
 
 # interrupt SIGNAL SECONDS COMMAND...: runs promyk COMMAND in the background,
 # sends SIGNAL SECONDS after it has its handlers, and sets `code` to its exit
-# status.
+# status. Standard input is $input (default /dev/null).
 interrupt() {
     local signal=$1 delay=$2
     shift 2
-    "$promyk" "$@" >out.txt 2>err.txt &
+    "$promyk" "$@" <"${input:-/dev/null}" >out.txt 2>err.txt &
     local pid=$!
     wait_for_handlers "$pid"
     sleep "$delay"
@@ -118,6 +121,43 @@ before=$failed
 [ "$code" = 130 ] || fail "render scene FIFO SIGINT: exit $code, expected 130"
 [ -z "$(left)" ] || fail "render scene FIFO SIGINT: files left behind: $(left)"
 [ $failed = $before ] && passed=$((passed + 1))
+
+# Inputs nobody writes: standard input a FIFO this script holds open for
+# reading and writing (so it never ends and never has data, like a terminal
+# where nobody types). A signal must end the wait, not read on. All three
+# signals a case; under the sanitizers (slow to start) one a case, in turn.
+k=0
+for case in "diff FIFO" "answers -" "lesson --step"; do
+    waits=(INT TERM HUP)
+    [ "${PROMYK_SANITIZED:-0}" = 1 ] && waits=("${waits[k++ % 3]}")
+    for signal in "${waits[@]}"; do
+        fresh
+        mkfifo quiet
+        exec 3<>quiet
+        input=/dev/fd/3
+        case $case in
+            "diff FIFO")
+                mkfifo a.jsonl
+                interrupt "$signal" 0.3 diff a.jsonl a.jsonl ;;
+            "answers -")
+                interrupt "$signal" 0.3 lesson sphere --answers - ;;
+            "lesson --step")
+                interrupt "$signal" 0.3 lesson sphere --step --lang en ;;
+        esac
+        unset input
+        exec 3>&-
+        rm -f quiet a.jsonl
+        expected=$((128 + $(kill -l "$signal")))
+        before=$failed
+        [ "$code" = "$expected" ] || fail "$case SIG$signal: exit $code, expected $expected"
+        grep -q "interrupted by SIG$signal" err.txt || fail "$case SIG$signal: no 'interrupted' on stderr"
+        # The lesson waited at its first step: no second step was printed.
+        [ "$case" != "lesson --step" ] || [ "$(grep -c 'Enter: next step' err.txt)" -le 1 ] ||
+            fail "$case SIG$signal: the lesson went on after the signal"
+        [ -z "$(left)" ] || fail "$case SIG$signal: files left behind: $(left)"
+        [ $failed = $before ] && passed=$((passed + 1))
+    done
+done
 
 # A scene of 1,500 spheres and 1,500 lights with shadows (many_scene, lib.sh):
 # pixel (4, 4) tests every sphere on the way to every light, a trace of about
