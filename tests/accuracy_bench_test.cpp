@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench/accuracy.hpp"
+#include "flat_text.hpp"
 #include "render/kernel.hpp"
 #include "scene/scene.hpp"
 #include "trace/messages.hpp"
@@ -197,6 +198,9 @@ TEST_CASE("a tiny run: one row per scene x spp x type x formula, the baseline ti
     }
     CHECK(report.timeable);
     CHECK(report.shortest_ms >= 20);
+    // Timed as promyk render runs without --stats (and as bench speed and
+    // effects time it): no timed kernel counts every branch, and both say so.
+    CHECK_FALSE(report.counted_branches);
 
     const Language before = ui_language();
     set_ui_language(Language::en);
@@ -204,6 +208,7 @@ TEST_CASE("a tiny run: one row per scene x spp x type x formula, the baseline ti
     CHECK(table.find("scene far_sphere:\n  z_E = 8000, S = (0, 0, 10000), r = 1, L = (5000, 5000, 0), I = 1\n") !=
           std::string::npos);
     CHECK(table.find("no ratio") == std::string::npos);
+    CHECK(flat(table).find("Times are measured as promyk render runs without --stats") != std::string::npos);
     CHECK(table.find("spp 4: ") != std::string::npos);
     set_ui_language(Language::pl);
     const std::string polish = accuracy_table(report);
@@ -211,6 +216,7 @@ TEST_CASE("a tiny run: one row per scene x spp x type x formula, the baseline ti
     CHECK(polish.find("scena far_sphere:\n  z_E = 8000; S = (0; 0; 10000); r = 1; L = (5000; 5000; 0); I = 1\n") !=
           std::string::npos);
     CHECK(polish.find("36 pikseli na szybę") != std::string::npos);  // w = 6
+    CHECK(flat(polish).find("jak działa promyk render bez --stats") != std::string::npos);
     // Both languages fit 80 columns, and the Polish table has no English heading.
     for (const std::string* text : {&table, &polish}) {
         std::size_t start = 0;
@@ -233,6 +239,7 @@ TEST_CASE("a tiny run: one row per scene x spp x type x formula, the baseline ti
         CHECK_FALSE(result.contains("untimed"));
     }
     CHECK(report_json["timeable"] == true);
+    CHECK(report_json["counts_branches"] == false);
     CHECK(report_json["scenes"][1]["scene_content"]["spheres"][0]["r"] == 1);
 }
 

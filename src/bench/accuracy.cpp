@@ -288,6 +288,9 @@ AccuracyReport run_accuracy_bench(const AccuracyOptions& options) {
         report.timeable = report.timeable && t.timed;
     }
     report.shortest_ms = std::isfinite(shortest) ? shortest * 1e3 : 0;
+    report.counted_branches = std::any_of(kernels.begin(), kernels.end(), [](const std::unique_ptr<Kernel>& kernel) {
+        return kernel->counts_branches();
+    });
     for (std::size_t s = 0; s < report.scenes.size(); ++s)
         report.scenes[s].base_ns_per_pixel = timings[base_job[s]].timed ? ns_per_pixel(base_job[s]) : 0;
     for (std::size_t r = 0; r < report.rows.size(); ++r) {
@@ -311,17 +314,20 @@ AccuracyReport run_accuracy_bench(const AccuracyOptions& options) {
 
 std::string accuracy_table(const AccuracyReport& report) {
     const std::string threads = counted(report.threads, "bench_threads");
-    std::string out = wrap_text(ui_message("bench_accuracy_title",
-                                           {{"w", std::to_string(report.w)},
-                                            {"pixels", counted(static_cast<long long>(report.w) * report.w, "bench_pixels")},
-                                            {"threads", threads},
-                                            {"rounds", counted(report.rounds, "bench_rounds")}}),
-                                2) +
-                      "\n" +
-                      wrap_text("  " + ui_message("bench_accuracy_explained",
-                                                  {{"threads", threads}, {"target", fixed(report.target_ms, 0)}}),
-                                2) +
-                      "\n";
+    std::string out =
+        wrap_text(ui_message("bench_accuracy_title",
+                             {{"w", std::to_string(report.w)},
+                              {"pixels", counted(static_cast<long long>(report.w) * report.w, "bench_pixels")},
+                              {"threads", threads},
+                              {"rounds", counted(report.rounds, "bench_rounds")}}),
+                  2) +
+        "\n" +
+        wrap_text(
+            "  " +
+                ui_message("bench_accuracy_explained", {{"threads", threads}, {"target", fixed(report.target_ms, 0)}}) +
+                (report.counted_branches ? "" : " " + ui_message("bench_timed_as_render")),
+            2) +
+        "\n";
     for (std::size_t s = 0; s < report.scenes.size(); ++s) {
         const AccuracyScene& scene = report.scenes[s];
         out += "\n" + wrap_text(ui_message("bench_accuracy_scene", {{"name", scene.name},
@@ -386,7 +392,8 @@ std::string accuracy_json(const AccuracyReport& report) {
     append_number(out, report.target_ms);
     out += ",\"shortest_ms\":";
     append_number(out, report.shortest_ms);
-    out += fmt::format(",\"timeable\":{},\"seconds\":", report.timeable ? "true" : "false");
+    out += fmt::format(",\"timeable\":{},\"counts_branches\":{},\"seconds\":", report.timeable ? "true" : "false",
+                       report.counted_branches ? "true" : "false");
     append_number(out, report.seconds);
     out += ",\"reference\":{\"real\":\"quad\",\"formula\":\"geometric\"}";
     out += ",\"baseline\":{\"real\":\"double\",\"formula\":\"article\",\"spp\":1}";

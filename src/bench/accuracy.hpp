@@ -103,6 +103,10 @@ struct AccuracyReport {
     double target_ms = 0;      // the aimed-for length of each timed run
     double shortest_ms = 0;    // the shortest timed run (every run that counts lasts at least 20 ms)
     bool timeable = false;     // every combination was timed (runs of at least 20 ms): every ratio is given
+    // Whether a timed kernel counted every pixel's branch (render --stats's
+    // work); false: timed as promyk render runs without --stats, as bench
+    // speed and bench effects time it.
+    bool counted_branches = true;
     std::vector<AccuracyScene> scenes;
     std::vector<AccuracyRow> rows;  // scene, then spp, then real type, then formula
     double seconds = 0;        // the whole run's wall-clock time

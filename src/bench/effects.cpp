@@ -208,9 +208,12 @@ int run_effects_bench(const EffectsOptions& options) {
         const std::string line = "    " + scene.name + std::string(name_width - display_width(scene.name) + 2, ' ') + stage_list(scene);
         print_standard_output("{}\n", wrap_text(line, 6 + name_width));
     }
-    print_standard_output("\n{}\n", wrap_text("  " + ui_message(spp > 1 ? "bench_effects_explained_spp" : "bench_effects_explained",
-                                                                {{"spp", std::to_string(spp)}}),
-                                                2));
+    print_standard_output("\n{}\n",
+                          wrap_text("  " +
+                                        ui_message(spp > 1 ? "bench_effects_explained_spp" : "bench_effects_explained",
+                                                   {{"spp", std::to_string(spp)}}) +
+                                        " " + ui_message("bench_timed_as_render"),
+                                    2));
     return 0;
 }
 

@@ -7,7 +7,8 @@ Checks, besides the schema: every result names a scene of the file; there is
 one result per scene x spp x real x formula of the run (no gaps, no
 duplicates); the reference's own combination (quad/geometric) has no error
 and no differing branch; a ratio is null exactly when the result says why
-(untimed), and timeable says whether every ratio is given. Exits 0 when every file is valid, 1 otherwise.
+(untimed), timeable says whether every ratio is given, and the runs were
+timed as promyk render runs without --stats (counts_branches false). Exits 0 when every file is valid, 1 otherwise.
 Needs Debian's python3-jsonschema.
 """
 import json
@@ -44,6 +45,8 @@ def problems_of(data, validator):
             problems.append(f"{where}: ratio {r['ratio']} but untimed is {r.get('untimed')!r}")
     if data["timeable"] != all(r["ratio"] is not None for r in results):
         problems.append(f"timeable is {data['timeable']} but the ratios say otherwise")
+    if data["counts_branches"] is not False:
+        problems.append("counts_branches is not false: the runs were not timed as promyk render runs without --stats")
     return problems
 
 
