@@ -10,6 +10,7 @@
 #include "scene/scene_validate.hpp"
 #include "trace/messages.hpp"
 #include "trace/number_text.hpp"
+#include "util/interrupt.hpp"
 
 namespace promyk {
 
@@ -70,6 +71,10 @@ Probe probe_pane(const Scene& scene, int w) {
     for (const Plane& plane : scene.planes) planes.push_back(unit_plane(plane));
     const double inf = std::numeric_limits<double>::infinity();
     for (int i = 0; i < w; ++i) {
+        // A row costs w × (spheres + lights) tests: a big scene's probe
+        // takes a while (1,500 of each: 15 ms, 1.5 s under the sanitizers),
+        // and render and scene check run it before anything else.
+        throw_if_interrupted();
         for (int j = 0; j < w; ++j) {
             ++probe.pixels;
             const Vec3d E{(2.0 * j + 1) / w - 1, -(2.0 * i + 1) / w + 1, scene.z_E};
