@@ -133,17 +133,22 @@ void add_contents(const Scene& scene, SceneReport& report) {
                                           {"lights", count(scene.lights.size(), "report_lights")},
                                           {"materials", count(scene.materials.size(), "report_materials")},
                                           {"shadows", ui_message(scene.shadows ? "report_shadows_on" : "report_shadows_off")}}));
-    for (std::size_t k = 0; k < scene.spheres.size(); ++k)
+    for (std::size_t k = 0; k < scene.spheres.size(); ++k) {
+        throw_if_interrupted();  // a line an object: a scene may hold thousands
         report.contents.push_back(ui_message("report_sphere", {{"k", std::to_string(k)},
                                                                {"S", point_text(scene.spheres[k].S)},
                                                                {"r", number(scene.spheres[k].r)},
                                                                {"material", material_text(scene.spheres[k].material)}}));
-    for (std::size_t k = 0; k < scene.planes.size(); ++k)
+    }
+    for (std::size_t k = 0; k < scene.planes.size(); ++k) {
+        throw_if_interrupted();
         report.contents.push_back(ui_message("report_plane", {{"k", std::to_string(k)},
                                                               {"Q", point_text(scene.planes[k].Q)},
                                                               {"n", point_text(scene.planes[k].n)},
                                                               {"material", material_text(scene.planes[k].material)}}));
+    }
     for (std::size_t k = 0; k < scene.lights.size(); ++k) {
+        throw_if_interrupted();
         const Light& light = scene.lights[k];
         report.contents.push_back(ui_message(
             "report_light",
@@ -188,6 +193,7 @@ std::string index(std::size_t k) { return std::to_string(k); }
 
 void add_geometry_warnings(const Scene& scene, SceneReport& report) {
     for (std::size_t k = 0; k < scene.spheres.size(); ++k) {
+        throw_if_interrupted();  // spheres × lights: like the probe, long for a big scene
         const Sphere& s = scene.spheres[k];
         const double outside = length_squared(s.S) - s.r * s.r;  // as the article's program computes it
         if (outside < 0)

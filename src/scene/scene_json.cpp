@@ -8,6 +8,7 @@
 #include "scene/scene_parse.hpp"
 #include "scene/scene_validate.hpp"
 #include "trace/messages.hpp"
+#include "util/interrupt.hpp"
 #include "util/read_input.hpp"
 
 namespace promyk {
@@ -39,7 +40,9 @@ Scene load_scene_file(const std::string& path) {
 }
 
 Scene load_scene_text(std::string_view bytes, const std::string& name) {
-    return scene_detail::validate_scene(scene_detail::parse_json(bytes, name), name);
+    scene_detail::ParsedJson parsed = scene_detail::parse_json(bytes, name);
+    throw_if_interrupted();  // parsing a scene of thousands of objects is render's longest step before the probe
+    return scene_detail::validate_scene(parsed, name);
 }
 
 Scene parse_scene(std::string_view text, const std::string& source) { return load_scene_text(text, source); }

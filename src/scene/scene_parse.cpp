@@ -11,6 +11,7 @@
 #include "scene/json_pointer.hpp"
 #include "scene/scene_hints.hpp"
 #include "trace/messages.hpp"
+#include "util/interrupt.hpp"
 #include "util/printable.hpp"
 
 namespace promyk::scene_detail {
@@ -154,6 +155,7 @@ private:
     }
 
     bool end() {
+        throw_if_interrupted();  // once an object or array: a scene may hold thousands
         if (frames_.size() - 1 <= deepest_level) parsed_.ends.emplace(std::move(frames_.back().pointer), places_++);
         frames_.pop_back();
         return true;

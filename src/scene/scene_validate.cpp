@@ -17,6 +17,7 @@
 #include "scene/json_pointer.hpp"
 #include "scene/scene_hints.hpp"
 #include "trace/messages.hpp"
+#include "util/interrupt.hpp"
 #include "util/printable.hpp"
 
 namespace promyk::scene_detail {
@@ -269,6 +270,7 @@ private:
     // An element of spheres, planes, lights or materials: an object (else
     // nothing more of it is read) whose unknown keys are recorded.
     bool check_element(const Json& value, const std::string& pointer, const Level& level, const char* example) {
+        throw_if_interrupted();  // once an element: a scene may hold thousands
         const bool object = attempt([&] {
             if (!value.is_object())
                 fail(pointer, ui_message("scene_element_" + std::string(level.id),
