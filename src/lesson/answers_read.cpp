@@ -14,6 +14,7 @@
 #include "lesson/lesson_render.hpp"
 #include "trace/messages.hpp"
 #include "util/errors.hpp"
+#include "util/interrupt.hpp"
 #include "util/printable.hpp"
 #include "util/text.hpp"
 
@@ -368,7 +369,13 @@ struct RawNumbers {
         }
         return pending_key = key, true;
     }
-    bool end_object() { return stack.pop_back(), true; }
+    // A trace holds hundreds of thousands of steps: an interrupt is looked
+    // at as each object ends (diff of two 50 MB traces parses for seconds).
+    bool end_object() {
+        throw_if_interrupted();
+        stack.pop_back();
+        return true;
+    }
     bool start_array(std::size_t) { return open(json::array()); }
     bool end_array() { return stack.pop_back(), true; }
     bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception&) {
@@ -531,6 +538,7 @@ AnswerFile parse_json(std::string_view text, const std::string& file, const Voca
         const std::function<void(const json&, const std::string&, const std::string&)> read_steps =
             [&](const json& steps, const std::string& prefix, const std::string& pointer) {
                 for (std::size_t k = 0; k < steps.size(); ++k) {
+                    if ((k & 4095) == 0) throw_if_interrupted();
                     const json& step = steps[k];
                     if (!step.is_object()) continue;
                     if (step.contains("group")) {

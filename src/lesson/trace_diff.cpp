@@ -88,6 +88,7 @@ Side side_of(const DiffInput& input, LessonPixel pixel) {
     for (const PixelAnswers& section : input.answers.pixels) {
         if (!trace && !same_pixel(section.pixel, pixel) && !same_pixel(section.pixel, diff_first_pixel)) continue;
         for (const Answer& answer : section.answers) {
+            if ((read & 4095) == 0) throw_if_interrupted();
             non_finite_until(read++);
             if (answer.numbers.empty()) continue;  // "key =": not given
             SideStep& step = side.step(answer.key);
@@ -300,7 +301,9 @@ DiffResult diff_inputs(const DiffInput& a, const DiffInput& b, const Vocabulary&
         }
     const Side side_a = side_of(a, result.pixel), side_b = side_of(b, result.pixel);
     const bool b_leads = !a.answers.trace && b.answers.trace;
+    std::size_t compared = 0;
     for (const std::string& path : b_leads ? merged_order(side_b, side_a) : merged_order(side_a, side_b)) {
+        if ((compared++ & 4095) == 0) throw_if_interrupted();
         const SideStep* in_a = side_a.find(path);
         const SideStep* in_b = side_b.find(path);
         DiffStep step;
