@@ -81,7 +81,7 @@ std::optional<std::string> read_standard_input_line() {
         if (got < 0 && (errno == EINTR || errno == EAGAIN || errno == EWOULDBLOCK)) continue;  // waits again
         if (got <= 0) return line.empty() ? std::nullopt : std::optional<std::string>(line);
         if (byte == '\n') return line;
-        line += byte;
+        if (line.size() < max_input_line_bytes) line += byte;  // the rest of a longer line is read and dropped
     }
 }
 

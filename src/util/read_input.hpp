@@ -26,9 +26,12 @@ WholeFile read_whole_file(const std::string& path, std::size_t max_bytes);
 // Standard input, the same way.
 WholeFile read_whole_standard_input(std::size_t max_bytes);
 
-// One line of standard input, without its '\n'; nothing at its end (or on
-// an error: a closed input just goes on). Reads a byte at a time, so what
-// follows the line stays unread. Throws Interrupted only.
+// One line of standard input, without its '\n', and only its first
+// max_input_line_bytes (memory stays bounded whatever comes: lesson --step
+// wants "q" or "b"); nothing at its end (or on an error: a closed input
+// just goes on). Reads a byte at a time, so what follows the line stays
+// unread. Throws Interrupted only.
+inline constexpr std::size_t max_input_line_bytes = 4096;
 std::optional<std::string> read_standard_input_line();
 
 }  // namespace promyk
