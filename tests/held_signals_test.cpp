@@ -23,6 +23,7 @@
 #include <thread>
 
 #include "app/cli_values.hpp"
+#include "child_process.hpp"
 #include "scene/scene_json.hpp"
 #include "temp_dir.hpp"
 #include "util/errors.hpp"
@@ -31,6 +32,8 @@
 #include "util/read_input.hpp"
 
 using namespace promyk;
+using promyk::testing::child_status;
+using promyk::testing::interrupted_code;
 using promyk::testing::TempDir;
 using promyk::testing::write_bytes;
 
@@ -42,9 +45,7 @@ constexpr const char* scene_json = R"({"spheres": [{"S": [0, 0, 3.2], "r": 1.1}]
 // pending; the child's status: exit 0 when it threw Interrupted(signal),
 // 101..103 otherwise, killed by SIGALRM if it kept waiting.
 int status_of(int signal, const std::function<void()>& wait_on_fifo) {
-    const pid_t child = fork();
-    REQUIRE(child >= 0);
-    if (child == 0) {
+    return child_status([&] {
         install_interrupt_handlers();
         sigset_t one;
         sigemptyset(&one);
@@ -52,18 +53,8 @@ int status_of(int signal, const std::function<void()>& wait_on_fifo) {
         sigprocmask(SIG_BLOCK, &one, nullptr);
         std::raise(signal);  // pending: the handler has not run, the flag is clear
         alarm(20);           // the watchdog
-        try {
-            wait_on_fifo();
-            _exit(101);
-        } catch (const Interrupted& interrupted) {
-            _exit(interrupted.signal_number == signal ? 0 : 102);
-        } catch (...) {
-            _exit(103);
-        }
-    }
-    int status = 0;
-    REQUIRE(waitpid(child, &status, 0) == child);
-    return status;
+        return interrupted_code(signal, wait_on_fifo);
+    });
 }
 
 // Each of promyk's interrupt signals, pending, must end wait_on_fifo with

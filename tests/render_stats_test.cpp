@@ -2,13 +2,13 @@
 #include <catch2/catch.hpp>
 
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <csignal>
 #include <cstring>
 #include <limits>
 #include <vector>
 
+#include "child_process.hpp"
 #include "general_scenes_support.hpp"
 #include "geometry/formula.hpp"
 #include "isa_forced.hpp"
@@ -85,24 +85,16 @@ TEST_CASE("a signal stops the threads inside a band, before its rows are compute
     // received when render() starts must stop it before it computes a row of
     // the first band (w = 64 is one band). The child's exit code is the rows
     // computed, or 100 + something for an unexpected outcome.
-    const pid_t child = fork();
-    REQUIRE(child >= 0);
-    if (child == 0) {
+    const int status = promyk::testing::child_status([] {
         install_interrupt_handlers();
         std::raise(SIGINT);
         NullSink sink;
         RenderStats stats;
-        try {
+        const int code = promyk::testing::interrupted_code(SIGINT, [&] {
             render(article_scene(), {64, 1}, PixelSelection{}, sink, &stats);
-            _exit(101);
-        } catch (const Interrupted& interrupted) {
-            _exit(interrupted.signal_number == SIGINT ? static_cast<int>(stats.rows_computed) : 102);
-        } catch (...) {
-            _exit(103);
-        }
-    }
-    int status = 0;
-    REQUIRE(waitpid(child, &status, 0) == child);
+        });
+        return code == 0 ? static_cast<int>(stats.rows_computed) : code;
+    });
     REQUIRE(WIFEXITED(status));
     CHECK(WEXITSTATUS(status) == 0);
 }
