@@ -117,6 +117,27 @@ PROMYK_LANES_INLINE Vector joined(const Part (&p)[parts]) {
     }
 }
 
+// Signed 32-bit lanes to doubles, __builtin_convertvector's value: GCC 12
+// splits a widening conversion into halves (AVX2's four lanes: two
+// conversions, a shuffle and an insert; AVX-512's eight likewise), where
+// one vcvtdq2pd converts them all.
+template <class Points, class Ints>
+PROMYK_LANES_INLINE Points widened(Ints x) {
+    static_assert(std::is_same_v<std::remove_cv_t<std::remove_reference_t<decltype(x[0])>>, std::int32_t>);
+    static_assert(std::is_same_v<std::remove_cv_t<std::remove_reference_t<decltype(Points{}[0])>>, double>);
+#if defined(__AVX512F__)
+    if constexpr (sizeof(Ints) == 32 && sizeof(Points) == 64)
+        // Every lane kept (GCC drops the mask); the unmasked intrinsic
+        // warns of an uninitialised variable inside GCC 12's header.
+        return reinterpret_cast<Points>(_mm512_maskz_cvtepi32_pd(0xff, reinterpret_cast<__m256i>(x)));
+#endif
+#if defined(__AVX__)
+    if constexpr (sizeof(Ints) == 16 && sizeof(Points) == 32)
+        return reinterpret_cast<Points>(_mm256_cvtepi32_pd(reinterpret_cast<__m128i>(x)));
+#endif
+    return __builtin_convertvector(x, Points);
+}
+
 // A sample's branch code a lane: unsigned integers as wide as the kernel's
 // masks (64 bits in double, 32 in float).
 template <class Lane>
@@ -299,14 +320,15 @@ struct SampleGrid {
 };
 
 // Sample s, its cell (column, row) = (s mod n, s div n), counted along (no
-// division a sample), and its hash.
+// division a sample). Its hash, mix32(s + hash_s), only where the column
+// hashes are not in a table (sample_point_lanes): computed on every sample,
+// it was twelve instructions a pair of vectors that nothing read.
 struct SampleCounter {
-    std::uint32_t column = 0, row = 0, hash = mix32_lanes(hash_s);
+    std::uint32_t column = 0, row = 0;
     int s = 0;
     PROMYK_LANES_INLINE void next(std::uint32_t n) {
         ++s;
         if (++column == n) column = 0, ++row;
-        hash = mix32_lanes(static_cast<std::uint32_t>(s) + hash_s);
     }
 };
 
@@ -367,7 +389,7 @@ PROMYK_LANES_INLINE auto sample_point_lanes(const SampleGrid& grid, const CellDi
         std::memcpy(&column, grid.columns.hashes + static_cast<std::ptrdiff_t>(c.s) * grid.columns.stride + p.j,
                     sizeof column);
     else
-        column = mix32_lanes(p.j_hash ^ c.hash);
+        column = mix32_lanes(p.j_hash ^ mix32_lanes(static_cast<std::uint32_t>(c.s) + hash_s));
     const auto h = mix32_lanes(grid.i_hash ^ column);
     if constexpr (parts == 1 && std::is_same_v<Real, double>) {
         // A whole grid, decided once a row (a branch taken the same way
@@ -385,7 +407,7 @@ PROMYK_LANES_INLINE auto sample_point_lanes(const SampleGrid& grid, const CellDi
                         static_cast<std::int32_t>((c.column << 16) - static_cast<std::uint32_t>(grid.half_cell));
             const I V = reinterpret_cast<I>(h >> 16) +
                         static_cast<std::int32_t>((c.row << 16) - static_cast<std::uint32_t>(grid.half_cell));
-            const Lane u = __builtin_convertvector(U, Lane), v = __builtin_convertvector(V, Lane);
+            const Lane u = widened<Lane>(U), v = widened<Lane>(V);
             SamplePoint<Lane> E;
             E.x = p.x_base[0] + u * grid.step;
             E.y = grid.y_base - v * grid.step;
@@ -421,8 +443,8 @@ PROMYK_LANES_INLINE auto sample_point_lanes(const SampleGrid& grid, const CellDi
         SamplePoint<Lane> E;
         RealPart x[parts], y[parts];  // the numerators of sample_point's divisions, scaled
         for (int k = 0; k < parts; ++k) {
-            const Points u = by_cell.divide(__builtin_convertvector(part_of<IntsOf<Points>>(h_u, k), Points)) - half;
-            const Points v = by_cell.divide(__builtin_convertvector(part_of<IntsOf<Points>>(h_v, k), Points)) - half;
+            const Points u = by_cell.divide(widened<Points>(part_of<IntsOf<Points>>(h_u, k))) - half;
+            const Points v = by_cell.divide(widened<Points>(part_of<IntsOf<Points>>(h_v, k))) - half;
             // sample_point. -(y0 + 2 v) is (-y0) - 2 v but for a zero's sign,
             // which adding 1 erases (rounding to float is symmetric:
             // -Real(y0 + 2 v) is Real(-(y0 + 2 v)), the same bits).
@@ -675,8 +697,12 @@ PROMYK_LANES_INLINE void put_sampled(const SampledLanes<Lane, Intensity>& p, int
 // non-finite pixels are counted (put_sampled), and I_P and branches must
 // be null.
 template <class Lane, bool ExactCell, bool CountBranches = true, class Shooter, class Out>
-PROMYK_LANES_INLINE RowCounts draw_sampled_row(Shooter& shoot, const SampleGrid& grid, int lo, int hi,
+PROMYK_LANES_INLINE RowCounts draw_sampled_row(Shooter& shoot, const SampleGrid& row_grid, int lo, int hi,
                                                std::uint8_t* out, Out* I_P, std::uint8_t* branches) {
+    // A copy, the loop's own (as ArticleSamples' row): through the
+    // reference GCC loaded and broadcast the grid's numbers again for
+    // every vector of every sample.
+    const SampleGrid grid = row_grid;
     using Real = typename LaneTraits<Lane>::Real;
     using Points = PointsOf<Lane>;
     using Pixels = SampledLanes<Lane, typename Shooter::template Intensity<Lane>>;
