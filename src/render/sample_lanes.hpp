@@ -120,7 +120,9 @@ PROMYK_LANES_INLINE Vector joined(const Part (&p)[parts]) {
 // Signed 32-bit lanes to doubles, __builtin_convertvector's value: GCC 12
 // splits a widening conversion into halves (AVX2's four lanes: two
 // conversions, a shuffle and an insert; AVX-512's eight likewise), where
-// one vcvtdq2pd converts them all.
+// one vcvtdq2pd converts them all. SSE2's two lanes it converted one at a
+// time through general registers (seven instructions where cvtdq2pd and a
+// move are two).
 template <class Points, class Ints>
 PROMYK_LANES_INLINE Points widened(Ints x) {
     static_assert(std::is_same_v<std::remove_cv_t<std::remove_reference_t<decltype(x[0])>>, std::int32_t>);
@@ -130,6 +132,13 @@ PROMYK_LANES_INLINE Points widened(Ints x) {
         // Every lane kept (GCC drops the mask); the unmasked intrinsic
         // warns of an uninitialised variable inside GCC 12's header.
         return reinterpret_cast<Points>(_mm512_maskz_cvtepi32_pd(0xff, reinterpret_cast<__m256i>(x)));
+#endif
+#if defined(__SSE2__)
+    if constexpr (sizeof(Ints) == 8 && sizeof(Points) == 16) {
+        long long bits;
+        std::memcpy(&bits, &x, sizeof bits);
+        return reinterpret_cast<Points>(_mm_cvtepi32_pd(_mm_cvtsi64_si128(bits)));
+    }
 #endif
 #if defined(__AVX__)
     if constexpr (sizeof(Ints) == 16 && sizeof(Points) == 32)
