@@ -147,6 +147,28 @@ PROMYK_LANES_INLINE Points widened(Ints x) {
     return __builtin_convertvector(x, Points);
 }
 
+// Half k (0 or 1) of two vectors' 32-bit lanes side by side (a pair's
+// jitter, draw_sampled_row), to doubles: the half's conversion reads its
+// part of the register (no move to a register of its own first).
+template <class Points, class Pair>
+PROMYK_LANES_INLINE Points widened_half(Pair x, int k) {
+#if defined(__AVX__)
+    if constexpr (sizeof(Pair) == 32 && sizeof(Points) == 32) {
+        const __m256i v = reinterpret_cast<__m256i>(x);
+        return reinterpret_cast<Points>(
+            _mm256_cvtepi32_pd(k == 0 ? _mm256_castsi256_si128(v) : _mm256_extractf128_si256(v, 1)));
+    }
+#endif
+#if defined(__SSE2__)
+    if constexpr (sizeof(Pair) == 16 && sizeof(Points) == 16) {
+        const __m128i v = reinterpret_cast<__m128i>(x);
+        return reinterpret_cast<Points>(_mm_cvtepi32_pd(k == 0 ? v : _mm_unpackhi_epi64(v, v)));
+    }
+#endif
+    using Half = typename SampleInts<LaneTraits<Points>::width>::I;
+    return widened<Points>(part_of<Half>(x, k));
+}
+
 // A sample's branch code a lane: unsigned integers as wide as the kernel's
 // masks (64 bits in double, 32 in float).
 template <class Lane>
@@ -374,6 +396,68 @@ template <class Lane, class WDivisor>
 PROMYK_LANES_INLINE Lane divided_by_w(const SampleGrid& grid, const WDivisor& by_w, Lane a) {
     if (grid.w_exact) return a * by_w.reciprocal;
     return by_w.divide(a);
+}
+
+// A sample's jitter in double lanes, the whole numbers U = 2^16 (s mod n)
+// + h_u - grid.half_cell and V likewise (h_u, h_v: the hash's low and high
+// 16 bits; half_cell is 0 where the grid is not whole), converted
+// (widened). Below 2^31 in size: exact in double.
+template <class Ints>
+struct SampleJitter {
+    Ints U, V;
+};
+template <class Ints, class U>
+PROMYK_LANES_INLINE SampleJitter<Ints> sample_jitter(const SampleGrid& grid, const SampleCounter& c, U h) {
+    const std::uint32_t half_cell = static_cast<std::uint32_t>(grid.half_cell);
+    return {reinterpret_cast<Ints>((h & 0xffffU) + ((c.column << 16) - half_cell)),
+            reinterpret_cast<Ints>((h >> 16) + ((c.row << 16) - half_cell))};
+}
+
+// The point of a sample in double lanes (Lane: doubles) from its jitter U,
+// V converted to doubles, as sample_point computes it.
+template <class Lane, class Intensity, class CellDivisor, class WDivisor>
+PROMYK_LANES_INLINE SamplePoint<Lane> point_of_jitter(const SampleGrid& grid, const CellDivisor& by_cell,
+                                                      const WDivisor& by_w, const SampledLanes<Lane, Intensity>& p,
+                                                      Lane U, Lane V) {
+    SamplePoint<Lane> E;
+    // A whole grid, decided once a row (a branch taken the same way every
+    // sample: one instantiation for w a power of two or not cost 0 to
+    // 0.7 % a sample against two, 2026-12-05).
+    if (grid.whole) {
+        // n and w powers of two: u = U / (2^16 n), |U| <= 2^15 n <= 2^20,
+        // and sample_point's steps are all exact (x0 + 2 u, dividing by w,
+        // subtracting 1: at most 20 + log2 w bits), so x is the exact
+        // (2 j + 1) / w - 1 + U 2^-15 / (n w): a product and a sum, both
+        // exact, the same bits; y likewise. d is u² + v² scaled by
+        // (2^16 n)², exact too (at most 41 bits), ordered the same.
+        E.x = p.x_base[0] + U * grid.step;
+        E.y = grid.y_base - V * grid.step;
+        E.d[0] = U * U + V * V;
+        return E;
+    }
+    // sample_point's steps scaled by 2 / s (SampleGrid::s, 1 or w, a power
+    // of two either way): U is 2^16 (s mod n) + h_u, so by_cell's division
+    // by 2^15 n s (draw_sampled_row) gives 2 q / s for sample_offset_on's q
+    // = (s mod n + h_u 2^-16) / n (the same exact quotient, rounded once),
+    // and subtracting 1 / s gives 2 u / s; x0 is (2 j + 1) / s, so x0 +
+    // 2 u / s, rounded once, is sample_point's x0 + 2 u rounded and divided
+    // by s. A power of two changes no rounding (nothing here comes near
+    // underflow): the same bits, without the products by 2, and by 1 / w
+    // where w is a power of two. d is u² + v² times 4 / s², ordered the
+    // same. -(y0 + 2 v) is (-y0) - 2 v but for a zero's sign, which adding
+    // 1 erases.
+    const double half = grid.one_over_s;  // 1/2, scaled
+    const Lane u = by_cell.divide(U) - half, v = by_cell.divide(V) - half;
+    const Lane x = p.x0[0] + u, y = grid.minus_y0_s - v;
+    E.d[0] = u * u + v * v;
+    if (grid.w_exact) {  // divided by w already
+        E.x = x - 1.0;
+        E.y = y + 1.0;
+    } else {
+        E.x = by_w.divide(x) - 1.0;
+        E.y = by_w.divide(y) + 1.0;
+    }
+    return E;
 }
 
 // Sample c.s's point for the vector's pixels, as sample_point computes it:
@@ -763,6 +847,40 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(Shooter& shoot, const SampleGrid&
         else
             return sample_point_lanes(grid, by_cell, by_w, c, p);
     };
+    // Sample c's points of a pair of vectors, p1's columns following p0's.
+    // Where the column hashes are in the table, double lanes compute both
+    // vectors' hashes and jitters in one register (SSE2's four 32-bit
+    // lanes, AVX2's eight), then each point (point_of_jitter): a hash of
+    // four lanes takes the baseline 24 instructions where two took 21.
+    // Not AVX-512's (sixteen lanes): its full rows gained nothing, and its
+    // rows near the silhouette, whose hits are found ahead (halves), were
+    // slower whenever sample_point_lanes changed (docs/bench.md). The points
+    // are assigned to E0 and E1: returned as a std::pair, GCC compiled
+    // AVX-512's loop, which never takes this path, 25 % slower.
+    constexpr int pair_width = 2 * width <= 16 ? 2 * width : width;  // SampleInts' widest is 16
+    using PairInts = typename SampleInts<pair_width>::U;
+    using PairSigned = typename SampleInts<pair_width>::I;
+    constexpr bool pair_hashes = !halves && parts_of<Lane> == 1 && std::is_same_v<Real, double> &&
+                                 pair_width == 2 * width && sizeof(PairInts) <= 32;
+    const auto pair_points = [&](const SampleCounter& c, const Pixels& p0, const Pixels& p1, auto& E0, auto& E1)
+        __attribute__((always_inline)) {
+        if constexpr (pair_hashes) {
+            if (grid.columns.hashes) {
+                PairInts column;  // as sample_point_lanes reads it, for both vectors
+                std::memcpy(&column,
+                            grid.columns.hashes + static_cast<std::ptrdiff_t>(c.s) * grid.columns.stride + p0.j,
+                            sizeof column);
+                const auto jitter = sample_jitter<PairSigned>(grid, c, mix32_lanes(grid.i_hash ^ column));
+                E0 = point_of_jitter(grid, by_cell, by_w, p0, widened_half<Lane>(jitter.U, 0),
+                                     widened_half<Lane>(jitter.V, 0));
+                E1 = point_of_jitter(grid, by_cell, by_w, p1, widened_half<Lane>(jitter.U, 1),
+                                     widened_half<Lane>(jitter.V, 1));
+                return;
+            }
+        }
+        E0 = points(c, p0);
+        E1 = points(c, p1);
+    };
     // Sample E's of the pixels p, traced and taken.
     const auto sample = [&](const auto& E_ahead, Pixels& p, Mask kept) __attribute__((always_inline)) {
         if constexpr (halves) {
@@ -785,19 +903,22 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(Shooter& shoot, const SampleGrid&
     int j = lo;
     if (j + 2 * width <= hi) {
         Pixels p0 = pixels(j), p1 = pixels(j + width);
-        auto E0 = points(SampleCounter{}, p0), E1 = points(SampleCounter{}, p1);
+        decltype(points(SampleCounter{}, p0)) E0, E1;
+        pair_points(SampleCounter{}, p0, p1, E0, E1);
         for (; j + 2 * width <= hi; j += 2 * width) {
             SampleCounter c;
             for (; c.s + 1 < spp; ) {
                 SampleCounter c_next = c;
                 c_next.next(n);
-                const auto next0 = points(c_next, p0), next1 = points(c_next, p1);
+                decltype(E0) next0, next1;
+                pair_points(c_next, p0, p1, next0, next1);
                 sample(E0, p0, all_kept);
                 sample(E1, p1, all_kept);
                 c = c_next, E0 = next0, E1 = next1;
             }
             const Pixels q0 = pixels(j + 2 * width), q1 = pixels(j + 3 * width);
-            const auto next0 = points(SampleCounter{}, q0), next1 = points(SampleCounter{}, q1);
+            decltype(E0) next0, next1;
+            pair_points(SampleCounter{}, q0, q1, next0, next1);
             sample(E0, p0, all_kept);
             sample(E1, p1, all_kept);
             put(p0, j, width, all_kept);
