@@ -363,6 +363,33 @@ struct SampleCounter {
     }
 };
 
+// The hashes of a pair of vectors' samples (draw_sampled_row's pair_points),
+// all spp of them computed as the pair starts, in a loop of their own. Each
+// sample then reads its hash where it computed mix32 (two multiplies that
+// SSE2 emulates): computed in the sample loop, on the chain from the column
+// table to the point and the early outs, the hash made the baseline's full
+// rows at spp 9 about 11 % slower, with the same instructions but for a
+// load and a store a sample (docs/bench.md). On: 16 KB of stack on the
+// baseline path, 32 KB on AVX2's (max_spp hashes). Off (no pair hashes):
+// empty.
+template <class PairInts, bool on>
+struct PairHashes {
+    PROMYK_LANES_INLINE void fill(const SampleGrid&, int) {}
+};
+template <class PairInts>
+struct PairHashes<PairInts, true> {
+    PairInts h[max_spp];
+    // Columns j .. of the table, read as sample_point_lanes reads them.
+    PROMYK_LANES_INLINE void fill(const SampleGrid& grid, int j) {
+        for (int s = 0; s < grid.spp; ++s) {
+            PairInts column;
+            std::memcpy(&column, grid.columns.hashes + static_cast<std::ptrdiff_t>(s) * grid.columns.stride + j,
+                        sizeof column);
+            h[s] = mix32_lanes(grid.i_hash ^ column);
+        }
+    }
+};
+
 // A sample's point E = (x, y, z_E) in each lane, and d, its offset's squared
 // distance from the pixel's centre (in double, as sample_pixel compares it).
 // InReal: the point was computed in float lanes (sample_point_lanes), its
@@ -848,10 +875,11 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(Shooter& shoot, const SampleGrid&
             return sample_point_lanes(grid, by_cell, by_w, c, p);
     };
     // Sample c's points of a pair of vectors, p1's columns following p0's.
-    // Where the column hashes are in the table, double lanes compute both
+    // Where the column hashes are in the table, double lanes take both
     // vectors' hashes and jitters in one register (SSE2's four 32-bit
-    // lanes, AVX2's eight), then each point (point_of_jitter): a hash of
-    // four lanes takes the baseline 24 instructions where two took 21.
+    // lanes, AVX2's eight; the hashes from PairHashes), then each point
+    // (point_of_jitter): a hash of four lanes takes the baseline 24
+    // instructions where two took 21.
     // Not AVX-512's (sixteen lanes): its full rows gained nothing, and its
     // rows near the silhouette, whose hits are found ahead (halves), were
     // slower whenever sample_point_lanes changed (docs/bench.md). The points
@@ -862,15 +890,16 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(Shooter& shoot, const SampleGrid&
     using PairSigned = typename SampleInts<pair_width>::I;
     constexpr bool pair_hashes = !halves && parts_of<Lane> == 1 && std::is_same_v<Real, double> &&
                                  pair_width == 2 * width && sizeof(PairInts) <= 32;
-    const auto pair_points = [&](const SampleCounter& c, const Pixels& p0, const Pixels& p1, auto& E0, auto& E1)
-        __attribute__((always_inline)) {
+    // Filled as each pair starts, where the table is there, and handed to
+    // pair_points as an argument: a lambda that fills it, or pair_points
+    // capturing it, changed AVX-512's object (its registers), which never
+    // takes this path; written so, AVX-512's is the same as without it.
+    PairHashes<PairInts, pair_hashes> pair_hashes_of;
+    const auto pair_points = [&](const auto& hashes, const SampleCounter& c, const Pixels& p0, const Pixels& p1,
+                                 auto& E0, auto& E1) __attribute__((always_inline)) {
         if constexpr (pair_hashes) {
             if (grid.columns.hashes) {
-                PairInts column;  // as sample_point_lanes reads it, for both vectors
-                std::memcpy(&column,
-                            grid.columns.hashes + static_cast<std::ptrdiff_t>(c.s) * grid.columns.stride + p0.j,
-                            sizeof column);
-                const auto jitter = sample_jitter<PairSigned>(grid, c, mix32_lanes(grid.i_hash ^ column));
+                const auto jitter = sample_jitter<PairSigned>(grid, c, hashes.h[c.s]);
                 E0 = point_of_jitter(grid, by_cell, by_w, p0, widened_half<Lane>(jitter.U, 0),
                                      widened_half<Lane>(jitter.V, 0));
                 E1 = point_of_jitter(grid, by_cell, by_w, p1, widened_half<Lane>(jitter.U, 1),
@@ -904,21 +933,25 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(Shooter& shoot, const SampleGrid&
     if (j + 2 * width <= hi) {
         Pixels p0 = pixels(j), p1 = pixels(j + width);
         decltype(points(SampleCounter{}, p0)) E0, E1;
-        pair_points(SampleCounter{}, p0, p1, E0, E1);
+        if constexpr (pair_hashes)
+            if (grid.columns.hashes) pair_hashes_of.fill(grid, j);
+        pair_points(pair_hashes_of, SampleCounter{}, p0, p1, E0, E1);
         for (; j + 2 * width <= hi; j += 2 * width) {
             SampleCounter c;
             for (; c.s + 1 < spp; ) {
                 SampleCounter c_next = c;
                 c_next.next(n);
                 decltype(E0) next0, next1;
-                pair_points(c_next, p0, p1, next0, next1);
+                pair_points(pair_hashes_of, c_next, p0, p1, next0, next1);
                 sample(E0, p0, all_kept);
                 sample(E1, p1, all_kept);
                 c = c_next, E0 = next0, E1 = next1;
             }
             const Pixels q0 = pixels(j + 2 * width), q1 = pixels(j + 3 * width);
             decltype(E0) next0, next1;
-            pair_points(SampleCounter{}, q0, q1, next0, next1);
+            if constexpr (pair_hashes)
+                if (grid.columns.hashes) pair_hashes_of.fill(grid, j + 2 * width);
+            pair_points(pair_hashes_of, SampleCounter{}, q0, q1, next0, next1);
             sample(E0, p0, all_kept);
             sample(E1, p1, all_kept);
             put(p0, j, width, all_kept);
