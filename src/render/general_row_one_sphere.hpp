@@ -146,7 +146,9 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> one_sphere_shade(const OneSphere
     // P = tE; N = P - S, turned towards the eye seen from inside; K = L - P.
     const Lane P_x = t * x_E, P_y = t * row.y_E, P_z = t * row.z_E;
     Lane N_x = P_x - row.S_x, N_y = P_y - row.S_y, N_z = P_z - row.S_z;
-    N_x = select(inside, -N_x, N_x), N_y = select(inside, -N_y, N_y), N_z = select(inside, -N_z, N_z);
+    if (any(inside)) {  // rare: the eye inside the sphere
+        N_x = negated_where(inside, N_x), N_y = negated_where(inside, N_y), N_z = negated_where(inside, N_z);
+    }
     const Lane K_x = row.L_x - P_x, K_y = row.L_y - P_y, K_z = row.L_z - P_z;
     const Lane KK = (K_x * K_x + K_y * K_y) + K_z * K_z;  // |K|^2
     const Lane D = (N_x * K_x + N_y * K_y) + N_z * K_z;   // N.K

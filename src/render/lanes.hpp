@@ -237,6 +237,20 @@ PROMYK_LANES_INLINE Vector select(MaskOf<Vector> m, Vector a, Vector b) {
     return reinterpret_cast<Vector>((reinterpret_cast<Mask>(a) & m) | (reinterpret_cast<Mask>(b) & ~m));
 }
 
+// x with its sign flipped where m: select(m, -x, x) bit for bit (-x flips
+// the sign bit, a NaN's too), as one xor with m's sign bits where the
+// select took four instructions.
+template <class Real>
+PROMYK_LANES_INLINE Real negated_where(bool m, Real x) {
+    return m ? -x : x;
+}
+template <class Vector, class = std::enable_if_t<(LaneTraits<Vector>::width > 1)>>
+PROMYK_LANES_INLINE Vector negated_where(MaskOf<Vector> m, Vector x) {
+    using Mask = MaskOf<Vector>;
+    const Mask sign = both(m, reinterpret_cast<Mask>(splat<Vector>(-0.0)));
+    return reinterpret_cast<Vector>(reinterpret_cast<Mask>(x) ^ sign);
+}
+
 // The square root lane by lane: with -fno-math-errno (the kernels' own
 // translation unit) GCC makes this one sqrtpd/sqrtps; the result is the
 // correctly rounded root in every lane either way.
