@@ -212,11 +212,12 @@ TEST_CASE("render without branch counting: the same image, the non-finite pixels
     }
 }
 
-// The same for the general tracer's sampled rows (every example scene, and
-// hostile ones whose deltas, shadow tests and intensities overflow, in grey
-// and in colour): without --stats only the non-finite pixels are counted,
-// and the image is the same.
-TEST_CASE("render without branch counting: the general tracer's samples", "[render-stats][isa]") {
+// The same for the general tracer's rows, of one sample a pixel and of
+// several (every example scene, and hostile ones whose deltas, shadow tests
+// and intensities overflow, in grey and in colour; one sphere and one light
+// of every kind, their own rows, hostile too): without --stats only the
+// non-finite pixels are counted, and the image is the same.
+TEST_CASE("render without branch counting: the general tracer's rows and samples", "[render-stats][isa]") {
     struct ImageSink final : RenderSink {
         std::vector<std::uint8_t> bytes;
         std::size_t row_bytes;
@@ -228,11 +229,14 @@ TEST_CASE("render without branch counting: the general tracer's samples", "[rend
     std::vector<general_scenes_support::NamedScene> scenes = general_scenes_support::example_scenes();
     for (general_scenes_support::NamedScene& named : general_scenes_support::hostile_scenes(12))
         scenes.push_back(std::move(named));
-    long long non_finite = 0;
+    const std::size_t one_sphere_from = scenes.size();
+    for (general_scenes_support::NamedScene& named : general_scenes_support::one_sphere_scenes(12))
+        scenes.push_back(std::move(named));
+    long long non_finite = 0, one_sphere_non_finite = 0;
     for (const Isa isa : supported_isas()) {
         PathForced forced(isa);
         for (const general_scenes_support::NamedScene& named : scenes)
-            for (const int spp : {4, 9}) {
+            for (const int spp : {1, 4, 9}) {
                 const int w = named.panes.front();
                 INFO(isa_name(isa) << ", " << named.name << ", spp " << spp << ", w = " << w);
                 const RenderSettings counted{w, 1, RealType::double_, Formula::article, spp, true};
@@ -253,7 +257,10 @@ TEST_CASE("render without branch counting: the general tracer's samples", "[rend
                 CHECK(without_stats.count(Branch::shadowed) == 0);
                 CHECK(without_stats.disagreeing == 0);
                 non_finite += with_stats.count(Branch::non_finite);
+                if (&named - scenes.data() >= static_cast<std::ptrdiff_t>(one_sphere_from))
+                    one_sphere_non_finite += with_stats.count(Branch::non_finite);
             }
     }
-    CHECK(non_finite > 0);  // the hostile scenes have some
+    CHECK(non_finite > 0);             // the hostile scenes have some
+    CHECK(one_sphere_non_finite > 0);  // and the hostile ones of one sphere
 }

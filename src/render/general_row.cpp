@@ -37,20 +37,20 @@ const lanes::GeneralRow<Rgb>& row_of(const World<double, Rgb>& world, int w, int
 }
 
 template <bool Rgb>
-bool draw(const World<double, Rgb>& world, GeneralLaneStages stages, int w, int i, std::uint8_t* out,
-          RowCounts& counts) {
+bool draw(const World<double, Rgb>& world, GeneralLaneStages stages, int w, int i, std::uint8_t* out, RowCounts& counts,
+          bool count_branches) {
     const lanes::GeneralRow<Rgb>& row = row_of(world, w, i);
     if (!has_object(row)) return false;
     const double* x_E = pane_columns(w);
     switch (article_isa()) {
         case Isa::avx512:
-            counts = lanes::avx512::draw_general_row(row, stages, x_E, w, out);
+            counts = lanes::avx512::draw_general_row(row, stages, x_E, w, out, count_branches);
             break;
         case Isa::avx2:
-            counts = lanes::avx2::draw_general_row(row, stages, x_E, w, out);
+            counts = lanes::avx2::draw_general_row(row, stages, x_E, w, out, count_branches);
             break;
         default:
-            counts = lanes::draw_general_row<lanes::Double2>(row, stages, x_E, w, out);
+            counts = lanes::draw_general_row<lanes::Double2>(row, stages, x_E, w, out, count_branches);
     }
     return true;
 }
@@ -116,13 +116,13 @@ bool general_sampled_row_intensities(const World<double, true>& world, GeneralLa
     return draw_sampled(world, stages, w, i, spp, out, counts, I_P, branches);
 }
 
-bool general_row_in_lanes(const World<double, false>& world, GeneralLaneStages stages, int w, int i,
-                          std::uint8_t* out, RowCounts& counts) {
-    return draw(world, stages, w, i, out, counts);
+bool general_row_in_lanes(const World<double, false>& world, GeneralLaneStages stages, int w, int i, std::uint8_t* out,
+                          RowCounts& counts, bool count_branches) {
+    return draw(world, stages, w, i, out, counts, count_branches);
 }
-bool general_row_in_lanes(const World<double, true>& world, GeneralLaneStages stages, int w, int i,
-                          std::uint8_t* out, RowCounts& counts) {
-    return draw(world, stages, w, i, out, counts);
+bool general_row_in_lanes(const World<double, true>& world, GeneralLaneStages stages, int w, int i, std::uint8_t* out,
+                          RowCounts& counts, bool count_branches) {
+    return draw(world, stages, w, i, out, counts, count_branches);
 }
 bool general_row_intensities(const World<double, false>& world, GeneralLaneStages stages, int w, int i,
                              double* I_P, std::uint8_t* branches) {
@@ -152,10 +152,10 @@ bool general_sampled_row_intensities(const World<double, true>&, GeneralLaneStag
     return false;
 }
 
-bool general_row_in_lanes(const World<double, false>&, GeneralLaneStages, int, int, std::uint8_t*, RowCounts&) {
+bool general_row_in_lanes(const World<double, false>&, GeneralLaneStages, int, int, std::uint8_t*, RowCounts&, bool) {
     return false;
 }
-bool general_row_in_lanes(const World<double, true>&, GeneralLaneStages, int, int, std::uint8_t*, RowCounts&) {
+bool general_row_in_lanes(const World<double, true>&, GeneralLaneStages, int, int, std::uint8_t*, RowCounts&, bool) {
     return false;
 }
 bool general_row_intensities(const World<double, false>&, GeneralLaneStages, int, int, double*, std::uint8_t*) {

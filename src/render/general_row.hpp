@@ -25,12 +25,13 @@ struct GeneralLaneStages {
 
 // Row i of a w-pixel pane into out[0 .. w * channels): each byte to_byte
 // of trace_general's intensity, the row's counts (branches, first
-// non-finite column, rays and tests) as GeneralKernel counts them. False,
+// non-finite column, rays and tests) as GeneralKernel counts them;
+// count_branches false: of the branches, only the non-finite pixels. False,
 // with nothing drawn, where this build has no lanes or the world no object.
-bool general_row_in_lanes(const World<double, false>& world, GeneralLaneStages stages, int w, int i,
-                          std::uint8_t* out, RowCounts& counts);
-bool general_row_in_lanes(const World<double, true>& world, GeneralLaneStages stages, int w, int i,
-                          std::uint8_t* out, RowCounts& counts);
+bool general_row_in_lanes(const World<double, false>& world, GeneralLaneStages stages, int w, int i, std::uint8_t* out,
+                          RowCounts& counts, bool count_branches = true);
+bool general_row_in_lanes(const World<double, true>& world, GeneralLaneStages stages, int w, int i, std::uint8_t* out,
+                          RowCounts& counts, bool count_branches = true);
 
 // Row i drawn from spp > 1 samples a pixel (render/general_sample_lanes.hpp):
 // each byte to_byte of sample_pixel over trace_general's mean, the row's

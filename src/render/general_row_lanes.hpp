@@ -142,9 +142,13 @@ __attribute__((noinline, cold)) int first_non_finite(const GeneralRow<Rgb>& row,
     return -1;
 }
 
-template <class Sw, bool Rgb, class Vector>
+// Row `row` of a w-pixel pane into out (x_E[j] = pane_x(j, w)).
+// CountBranches false (render without --stats): of the branches only the
+// non-finite pixels are counted, the rest left 0, as the article's rows do;
+// the rays and tests are counted either way.
+template <class Sw, bool Rgb, class Vector, bool CountBranches = true>
 PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, const double* x_E, int w,
-                                              std::uint8_t* out) {
+                                               std::uint8_t* out) {
     constexpr int width = LaneTraits<Vector>::width;
     using Mask = MaskOf<Vector>;
     Mask miss{}, non_finite{}, lit{}, shadowed{};  // counted lane by lane: a mask is -1 where true
@@ -155,9 +159,11 @@ PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, const
     const auto take = [&](int j, int n, const GeneralLanePixel<Vector, Rgb>& pixel, Mask kept)
                           __attribute__((always_inline)) {
         put_intensities(pixel.I_P, out, j, n);
-        miss -= pixel.miss & kept;
-        lit -= pixel.lit & kept;
-        shadowed -= pixel.shadowed & kept;
+        if constexpr (CountBranches) {
+            miss -= pixel.miss & kept;
+            lit -= pixel.lit & kept;
+            shadowed -= pixel.shadowed & kept;
+        }
         non_finite -= pixel.non_finite & kept;
     };
     const Mask all_kept = lane_not(Mask{});
@@ -196,21 +202,37 @@ PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, const
         shadoweds += static_cast<int>(shadowed[k]);
         non_finites += static_cast<int>(non_finite[k]);
     }
-    counts.branches[static_cast<int>(Branch::miss)] = misses;
-    counts.branches[static_cast<int>(Branch::lit)] = lits;
-    counts.branches[static_cast<int>(Branch::shadowed)] = shadoweds;
     counts.branches[static_cast<int>(Branch::non_finite)] = non_finites;
-    counts.branches[static_cast<int>(Branch::dark)] = w - misses - lits - shadoweds - non_finites;
+    if constexpr (CountBranches) {
+        counts.branches[static_cast<int>(Branch::miss)] = misses;
+        counts.branches[static_cast<int>(Branch::lit)] = lits;
+        counts.branches[static_cast<int>(Branch::shadowed)] = shadoweds;
+        counts.branches[static_cast<int>(Branch::dark)] = w - misses - lits - shadoweds - non_finites;
+    }
     if (non_finites > 0) counts.first_non_finite_j = first_non_finite<Sw, Rgb, Vector>(row, x_E, w);
     count_work<Sw::many>(counts, work, row, w);
     return counts;
 }
 
+// The same with the stages, and whether to count the branches, chosen at
+// run time (once a row). Only the one-sphere rows have an instantiation
+// that does not count: there counting was 7 to 8 % of the row's
+// instructions, much of its gap to the article's kernel (docs/bench.md);
+// a row of several objects counts, then forgets all but its non-finite
+// pixels: a second copy of every row would cost compile time for 0 to 4 %.
 template <class Vector, bool Rgb>
-PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, GeneralLaneStages stages,
-                                              const double* x_E, int w, std::uint8_t* out) {
-    return with_switches(stages, row,
-                         [&](auto sw) { return draw_general_row<decltype(sw), Rgb, Vector>(row, x_E, w, out); });
+PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, GeneralLaneStages stages, const double* x_E,
+                                               int w, std::uint8_t* out, bool count_branches) {
+    return with_switches(stages, row, [&](auto sw) {
+        using Sw = decltype(sw);
+        if constexpr (Sw::one)
+            if (!count_branches) return draw_general_row<Sw, Rgb, Vector, false>(row, x_E, w, out);
+        RowCounts counts = draw_general_row<Sw, Rgb, Vector, true>(row, x_E, w, out);
+        if (!count_branches)
+            for (int b = 0; b < branch_count; ++b)
+                if (b != static_cast<int>(Branch::non_finite)) counts.branches[b] = 0;
+        return counts;
+    });
 }
 
 // The row's intensities and branches, as draw_general_row computes them.

@@ -58,7 +58,7 @@ public:
     // Samples per pixel (render/samples.hpp): 1 is the pixel's centre.
     int spp() const { return spp_; }
     // Whether row() counts every pixel's branch (RowCounts::branches), or
-    // only the non-finite ones (the rest left 0): the article's drawn rows
+    // only the non-finite ones (the rest left 0): the rows drawn in lanes
     // then skip their per-vector counting (its cost: docs/bench.md). On by
     // default; render --stats needs it.
     bool counts_branches() const { return count_branches_; }

@@ -258,7 +258,7 @@ public:
         RowCounts counts;
         if constexpr (in_lanes) {
             const GeneralLaneStages stages{Sw::shadows, Sw::ambient, Sw::many, Sw::phong};
-            if (spp() == 1 ? general_row_in_lanes(world_, stages, w, i, out, counts)
+            if (spp() == 1 ? general_row_in_lanes(world_, stages, w, i, out, counts, counts_branches())
                            : general_sampled_row_in_lanes(world_, stages, w, i, spp(), out, counts, counts_branches()))
                 return counts;
         }
