@@ -171,13 +171,29 @@ PROMYK_LANES_INLINE RowCounts draw_general_row(const GeneralRow<Rgb>& row, const
     int j = 0;
     if constexpr (Sw::one) {
         // One sphere: each vector's hit found while the one before it is
-        // shaded, as the article's rows are drawn.
+        // shaded, as the article's rows are drawn; and as there, a vector
+        // whose every lane misses stores the background's bytes, converted
+        // once a row (without skipping, most of the article's pane).
+        constexpr int channels = Rgb ? 3 : 1;
+        std::uint8_t background[width * channels];
+        put_intensities(pixels_at.one.background, background, 0, width);
+        struct Shaded {
+            GeneralLanePixel<Vector, Rgb> pixel;
+            bool background;
+        };
         j = pipelined_vectors<Vector>(
             x_E, w, [&](Vector x) __attribute__((always_inline)) { return pixels_at.hit(x); },
-            [&](const OneSphereHit<Vector, Rgb>& hit)
-                __attribute__((always_inline)) { return pixels_at.shade(hit, all_kept, work); },
-            [&](int k, const GeneralLanePixel<Vector, Rgb>& pixel)
-                __attribute__((always_inline)) { take(k, width, pixel, all_kept); });
+            [&](const OneSphereHit<Vector, Rgb>& hit) __attribute__((always_inline)) {
+                return Shaded{pixels_at.shade(hit, all_kept, work), hit.background};
+            },
+            [&](int k, const Shaded& shaded) __attribute__((always_inline)) {
+                if (shaded.background) {
+                    std::memcpy(out + k * channels, background, sizeof background);
+                    if constexpr (CountBranches) miss -= all_kept;
+                    return;
+                }
+                take(k, width, shaded.pixel, all_kept);
+            });
     } else {
         // Two vectors a step, computed before either is stored: two
         // independent chains of square roots and divisions in flight at once.
