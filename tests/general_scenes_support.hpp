@@ -10,7 +10,10 @@
 #include <filesystem>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include <fmt/format.h>
 
 #include "hard_cases_support.hpp"
 #include "render/general_tracer.hpp"
@@ -206,6 +209,19 @@ inline std::vector<NamedScene> one_sphere_scenes(int hostile) {
         scene.lights = {Light{{1.5, 1, inside ? 1.0 : 1.2}, 1.25, plain ? white : Colour{0.9, 0.9, 0.9}}};
         if (coloured) scene.background = {0.1, 0.2, 0.3};
         scenes.push_back({"one sphere " + std::to_string(n), scene, small_panes});
+    }
+    // The article's matte white with a light of intensity -0 (which passes
+    // a scene file's I >= 0) or negative, or a sphere of negative radius (a
+    // scene built in code): the diffuse term is then -0 or negative, and
+    // trace_general's 0 + it turns -0 into 0, which the plain rows
+    // (render/general_row_one_sphere.hpp) must not leave out.
+    const std::pair<double, double> signs[] = {{-0.0, 1.1}, {0.0, -1.1}, {1.25, -1.1}, {-0.0, -1.1}, {-1.25, 1.1}};
+    for (const auto& [I, r] : signs) {
+        Scene scene;
+        scene.materials = {Material{}};
+        scene.spheres = {Sphere{{0.2, 0.1, 3.2}, r, 0}};
+        scene.lights = {Light{{1.5, 1, 1.2}, I, white}};
+        scenes.push_back({fmt::format("one sphere, I {}, r {}", I, r), scene, small_panes});
     }
     std::mt19937_64 random(20261203);
     std::uniform_real_distribution<double> exponent(-300, 300), unit(-1, 1), positive(0.1, 1);

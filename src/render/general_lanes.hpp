@@ -30,7 +30,9 @@ struct LaneSwitches {
     static constexpr bool many = Many_;  // several objects: each tested, the nearest hit wins
     // One sphere and one light (render/general_row_one_sphere.hpp), and of
     // those, plain: k_d, m and c exactly 1 (the article's matte white), so
-    // the products by them are left out. Not stages, the scene's shape and
+    // the products by them are left out, and I's sign bit clear and r > 0,
+    // so trace_general's 0 + the light's term is left out too
+    // (plain_surface_and_light). Not stages, the scene's shape and
     // numbers, chosen once a row.
     static constexpr bool one = One_;
     static constexpr bool plain = Plain_;

@@ -3,12 +3,15 @@
 // steps in the same order, each lane rounding as trace_general does, with
 // what such a scene never needs left out (the nearest of several objects,
 // the hit object's numbers chosen lane by lane, the loop over lights, the
-// sphere's own shadow test against itself). Its numbers are in every lane
-// once a row (OneSphereRow), as the article's kernel keeps ArticleRow's.
+// sphere's own shadow test against itself), and two steps whose outcome
+// the others already decide (whether the root is finite; 0 + the light's
+// term in a plain scene). Its numbers are in every lane once a row
+// (OneSphereRow), as the article's kernel keeps ArticleRow's.
 // Tests check every pixel's bits against the traced path
 // (tests/general_lanes_test.cpp).
 #pragma once
 
+#include <cmath>
 #include <limits>
 #include <type_traits>
 
@@ -62,7 +65,10 @@ PROMYK_LANES_INLINE bool one_sphere_and_light(const GeneralRow<Rgb>& row) {
 // True where the one sphere's k_d and m and the one light's c are exactly
 // 1: x 1 is x, bit for bit, for every double (a NaN keeps its payload; no
 // arithmetic makes a signalling one), so one_sphere_lanes leaves out those
-// products (LaneSwitches::plain).
+// products (LaneSwitches::plain). And where the light's I has its sign bit
+// clear and r > 0 (a valid scene's, but -0 passes I >= 0): the diffuse
+// term I D / (r sqrt(|K|^2)), taken where D > 0, is then never -0, nor
+// is any sum of it, so trace_general's 0 + x is x and is left out too.
 template <class Intensity>
 PROMYK_LANES_INLINE bool is_one(const Intensity& x) {
     if constexpr (std::is_same_v<Intensity, double>)
@@ -73,7 +79,8 @@ PROMYK_LANES_INLINE bool is_one(const Intensity& x) {
 template <bool Rgb>
 PROMYK_LANES_INLINE bool plain_surface_and_light(const GeneralRow<Rgb>& row) {
     const auto& surface = row.spheres[0].surface;
-    return surface.k_d == 1.0 && is_one(surface.m) && is_one(row.lights[0].c);
+    return surface.k_d == 1.0 && is_one(surface.m) && is_one(row.lights[0].c) && !std::signbit(row.lights[0].I) &&
+           row.spheres[0].r > 0.0;
 }
 
 // The first half of one_sphere_lanes: where each ray meets the sphere (t),
@@ -119,12 +126,14 @@ PROMYK_LANES_INLINE OneSphereHit<Lane, Rgb> one_sphere_hit(const OneSphereRow<La
         found = either(found, inside);
     }
     // A root that is not finite decides nothing: the pixel is non-finite.
-    const Mask finite = finite_lanes(t);
-    pixel.non_finite = both(found, lane_not(finite));
+    // Not tested here: such a t makes a coordinate of P, then of K, NaN or
+    // infinite, so |K|^2 is, and shading stops the lane as undecided, with
+    // the same NaN and branch. This and plain's 0 + x left out below: a
+    // baseline sample 10 % faster (docs/bench.md).
     pixel.miss = lane_not(found);
-    h.alive = both(found, finite);  // shaded on (no early return: the
-    // lanes that are not are as rare as in the article's kernel, and the
-    // selects below leave their intensities as they are)
+    h.alive = found;  // shaded on (no early return: the lanes that are
+    // not are as rare as in the article's kernel, and the selects below
+    // leave their intensities as they are)
     h.t = t, h.inside = inside;
     return h;
 }
@@ -154,7 +163,6 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> one_sphere_shade(const OneSphere
     const Lane D = (N_x * K_x + N_y * K_y) + N_z * K_z;   // N.K
     // Non-finite |K|^2 or D: the pixel stops here.
     const Mask undecided = both(alive, lane_not((KK * 0.0 + D * 0.0) == 0.0));
-    pixel.non_finite = either(pixel.non_finite, undecided);
     alive = both(alive, lane_not(undecided));
     const Mask faces = both(alive, D > 0.0);
     Mask reaches = faces;
@@ -190,16 +198,20 @@ PROMYK_LANES_INLINE GeneralLanePixel<Lane, Rgb> one_sphere_shade(const OneSphere
         }
     }
     if constexpr (!Sw::plain) term = times(row.c, term);
-    const Intensity I_P = plus(every_channel<Lane, Rgb>(0.0), term);  // 0 + the light's: -0 becomes 0
+    // 0 + the light's: -0 becomes 0. Plain: diffuse is +0, positive (or
+    // infinite) or NaN (I's sign bit clear, r > 0, D > 0:
+    // plain_surface_and_light); a sum is -0 only if both its terms are, so
+    // no sum of diffuse with the ambient or specular term is, and 0 + x is x.
+    Intensity I_P = term;
+    if constexpr (!Sw::plain) I_P = plus(every_channel<Lane, Rgb>(0.0), term);
 
     // An intensity beyond the largest double: non-finite, its value kept.
     const Mask overflow = both(alive, lane_not(below_max_lanes(I_P)));
-    pixel.non_finite = either(pixel.non_finite, overflow);
+    pixel.non_finite = either(undecided, overflow);
     const Mask shaded = both(alive, lane_not(overflow));
     pixel.lit = both(shaded, reaches);
     if constexpr (Sw::shadows) pixel.shadowed = both(shaded, both(faces, lane_not(reaches)));
-    const Mask stopped = both(lane_not(alive), pixel.non_finite);  // NaN
-    pixel.I_P = pick(alive, I_P, pick(stopped, every_channel<Lane, Rgb>(nan), pixel.I_P));
+    pixel.I_P = pick(alive, I_P, pick(undecided, every_channel<Lane, Rgb>(nan), pixel.I_P));  // NaN where undecided
     return pixel;
 }
 
