@@ -322,7 +322,7 @@ struct SampledLanes {
     // The nearest sample yet when the points are in float (nearer_in_real):
     // its float d (infinite before the first sample), u and v.
     Lane nearest_real = splat<Lane>(INFINITY), nearest_u{}, nearest_v{};
-    UintsOf<Lane> j_hash;  // j hash_j
+    UintsOf<Lane> j_hash{};  // j hash_j (on the baseline, only without the column table)
     // The first sample's intensity x is -0 + x, all of x's bits (+0 + x
     // would make a -0 +0), and its d is below infinity.
     Intensity sum = every_channel<Lane, !std::is_same_v<Intensity, Lane>>(-0.0);
@@ -851,14 +851,28 @@ PROMYK_LANES_INLINE RowCounts draw_sampled_row(Shooter& shoot, const SampleGrid&
             p.x0_real = Real(2) * __builtin_convertvector(j_lanes, Lane) + Real(1);
         } else {
             for (int k = 0; k < parts_of<Lane>; ++k) {
-                const Points x0 = 2.0 * __builtin_convertvector(part_of<UintsOf<Points>>(j_lanes, k), Points) + 1.0;
+                // j as signed lanes (j < 2^31): SSE2 and AVX2 have no
+                // unsigned conversion, and GCC converted each lane through
+                // general registers (with j hash_j below, a sample at spp 4
+                // on the baseline 5.31 -> 5.08 ns; docs/bench.md).
+                const Points x0 =
+                    2.0 * widened<Points>(reinterpret_cast<IntsOf<Points>>(part_of<UintsOf<Points>>(j_lanes, k))) + 1.0;
                 p.x0[k] = x0 * grid.one_over_s;  // exact: s a power of two
                 if (grid.whole) p.x_base[k] = p.x0[k] - 1.0;
                 p.nearest[k] = splat<Points>(INFINITY);
             }
         }
         p.j = j;
+        // Read only without the column table (sample_point_lanes). SSE2 has
+        // no 32-bit lane multiply (GCC multiplies each lane in general
+        // registers), so there it is made only where it is read; AVX2's is
+        // one instruction, and leaving it out made AVX2's general sampled
+        // rows slower (2.66 -> 2.88 ns a sample at spp 4; docs/bench.md).
+#if defined(__SSE4_1__)
         p.j_hash = j_lanes * hash_j;
+#else
+        if (!grid.columns.hashes) p.j_hash = j_lanes * hash_j;
+#endif
         return p;
     };
     const std::uint32_t n = static_cast<std::uint32_t>(grid.n);
