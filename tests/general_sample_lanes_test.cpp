@@ -22,6 +22,7 @@
 #include "render/general_row.hpp"
 #include "render/general_tracer.hpp"
 #include "render/isa.hpp"
+#include "render/sample_hashes.hpp"
 #include "render/sampling.hpp"
 #include "render/stages.hpp"
 #include "render/world.hpp"
@@ -234,4 +235,108 @@ TEST_CASE("General sampled rows in lanes: 1024 samples a pixel, every branch's f
     const std::vector<NamedScene> one = one_sphere_scenes(0);
     check_sampled_scene(one[1], {1024}, {2});   // shadows
     check_sampled_scene(one[17], {1024}, {2});  // the eye inside, shadows
+}
+
+// The widest panes whose column hashes still fit the table: there the
+// baseline path finds a pair of vectors' points from the jitter's bits
+// (render/sample_lanes.hpp's magic_pair_points, on whole grids), exact only
+// while n w stays small; the CLI's widest pane (32768) at 4 and 16 samples,
+// and 512 at 1024 (n = 32). Some columns of a few rows, with and without
+// counting (the counted rows also order the samples by their distance from
+// the pixel's centre), against sample_pixel over trace_general.
+TEST_CASE("General sampled rows in lanes: the widest panes with the column table, whole grids, every path",
+          "[sample_lanes][lanes][isa]") {
+    const std::vector<NamedScene> one = one_sphere_scenes(0);
+    struct Pane {
+        int w, spp;
+    };
+    long long checked = 0;
+    for (const Pane pane : {Pane{32768, 4}, Pane{32768, 16}, Pane{512, 1024}}) {
+        REQUIRE(sample_column_hashes(pane.w, pane.spp).hashes != nullptr);
+        for (const NamedScene* named : {&one[8], &one[4]}) {  // the matte white (plain), and coloured
+            const bool rgb = plan_stages(named->scene).colour;
+            const World<double, false> grey = compile_world<double, false>(named->scene);
+            const World<double, true> colour = compile_world<double, true>(named->scene);
+            const Stages stages = plan_stages(named->scene);
+            const GeneralLaneStages lane_stages{stages.shadows, stages.ambient, stages.objects, stages.phong};
+            const int w = pane.w, channels = rgb ? 3 : 1;
+            std::vector<int> columns = {0, 1, 2, 3, 4, 5, 6, 7, w - 8, w - 7, w - 6, w - 5, w - 4, w - 3, w - 2, w - 1};
+            for (int k = 1; k < 40; ++k) columns.push_back(k * (w / 40));
+            for (const int i : {0, w / 2 - 1, w / 2 + 7, w - 1}) {
+                // The traced path's samples of the row's chosen columns.
+                std::vector<SampledPixel<Vec3d>> want_rgb;
+                std::vector<SampledPixel<double>> want_grey;
+                NullRecorder none;
+                WorkCounts work;
+                for (const int j : columns) {
+                    if (rgb)
+                        want_rgb.push_back(sample_pixel<Vec3d>(
+                            w, i, j, pane.spp, colour.z_E,
+                            [&](int, const Vec3d& E) {
+                                return with_stage_switches(stages, [&](auto sw) {
+                                    return trace_general<decltype(sw), SphereFormula<Formula::article>>(colour, E, work,
+                                                                                                        none);
+                                });
+                            },
+                            [](int, const auto&) {}));
+                    else
+                        want_grey.push_back(sample_pixel<double>(
+                            w, i, j, pane.spp, grey.z_E,
+                            [&](int, const Vec3d& E) {
+                                return with_stage_switches(stages, [&](auto sw) {
+                                    return trace_general<decltype(sw), SphereFormula<Formula::article>>(grey, E, work,
+                                                                                                        none);
+                                });
+                            },
+                            [](int, const auto&) {}));
+                }
+                for (const Isa isa : supported_isas()) {
+                    PathForced forced(isa);
+                    INFO(named->name << ", w = " << w << ", spp = " << pane.spp << ", row " << i << ", "
+                                     << isa_name(isa));
+                    std::vector<std::uint8_t> out(static_cast<std::size_t>(w * channels)), uncounted(out.size()),
+                        branches(static_cast<std::size_t>(w));
+                    std::vector<double> I_grey(static_cast<std::size_t>(w));
+                    std::vector<Vec3d> I_rgb(static_cast<std::size_t>(w));
+                    RowCounts drawn, drawn_uncounted;
+                    if (rgb) {
+                        REQUIRE(general_sampled_row_intensities(colour, lane_stages, w, i, pane.spp, out.data(), drawn,
+                                                                I_rgb.data(), branches.data()));
+                        REQUIRE(general_sampled_row_in_lanes(colour, lane_stages, w, i, pane.spp, uncounted.data(),
+                                                             drawn_uncounted, false));
+                    } else {
+                        REQUIRE(general_sampled_row_intensities(grey, lane_stages, w, i, pane.spp, out.data(), drawn,
+                                                                I_grey.data(), branches.data()));
+                        REQUIRE(general_sampled_row_in_lanes(grey, lane_stages, w, i, pane.spp, uncounted.data(),
+                                                             drawn_uncounted, false));
+                    }
+                    int bits = 0, branch = 0, bytes = 0;
+                    for (std::size_t k = 0; k < columns.size(); ++k) {
+                        const int j = columns[k];
+                        const Branch want_branch = rgb ? want_rgb[k].branch : want_grey[k].branch;
+                        double channel[3];
+                        if (rgb) {
+                            bits += !same_bits(I_rgb[j], want_rgb[k].I_P);
+                            channel[0] = want_rgb[k].I_P.x, channel[1] = want_rgb[k].I_P.y,
+                            channel[2] = want_rgb[k].I_P.z;
+                        } else {
+                            bits += !same_bits(I_grey[j], want_grey[k].I_P);
+                            channel[0] = want_grey[k].I_P;
+                        }
+                        branch += branches[j] != static_cast<std::uint8_t>(want_branch);
+                        for (int c = 0; c < channels; ++c) {
+                            const std::size_t at = static_cast<std::size_t>(channels * j + c);
+                            bytes += out[at] != to_byte(channel[c]);
+                            bytes += uncounted[at] != to_byte(channel[c]);
+                        }
+                        ++checked;
+                    }
+                    CHECK(bits == 0);
+                    CHECK(branch == 0);
+                    CHECK(bytes == 0);
+                }
+            }
+        }
+    }
+    CHECK(checked > 1000);
 }

@@ -6,12 +6,15 @@
 #include <csignal>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "child_process.hpp"
 #include "general_scenes_support.hpp"
 #include "geometry/formula.hpp"
+#include "image/quantize.hpp"
 #include "isa_forced.hpp"
+#include "render/general_kernel.hpp"
 #include "render/isa.hpp"
 #include "render/renderer.hpp"
 #include "render/trace_pixel.hpp"
@@ -263,4 +266,65 @@ TEST_CASE("render without branch counting: the general tracer's rows and samples
     }
     CHECK(non_finite > 0);             // the hostile scenes have some
     CHECK(one_sphere_non_finite > 0);  // and the hostile ones of one sphere
+}
+
+// The general tracer's sampled rows without --stats store one row-wide
+// conversion for a vector of pixels whose samples all drew the background
+// (render/sample_lanes.hpp's BackgroundSum), found by comparing sums. Any
+// background: the same image and the same non-finite pixels as the counted
+// rows (which convert each pixel), its zeros, sums that round, one that
+// overflows, and infinite and NaN ones (a hand-made scene's), in grey and
+// in colour, one object or several, panes of a power of two (whole grids)
+// and not, on every instruction-set path this processor has. A corner
+// pixel, all of whose samples miss, is the mean sample_pixel gives it.
+TEST_CASE("render without branch counting: the general tracer's samples that all miss, any background",
+          "[render-stats][isa][sample_lanes]") {
+    const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+    std::vector<Colour> backgrounds;
+    for (const double b : {0.5, 0.0, -0.0, 1.0, 0.1, 1.0 / 3, 4.9e-324, 0.999999, -0.25, 7.0, 1e308, inf, nan})
+        backgrounds.push_back({b, b, b});
+    backgrounds.push_back({0.5, 0.0, 1.0});
+    backgrounds.push_back({-0.0, 0.1, 1e308});
+    Scene one = article_scene();
+    Scene busy = busy_scene(true);
+    long long non_finite = 0, corners = 0;
+    for (const Isa isa : supported_isas()) {
+        PathForced forced(isa);
+        for (const Colour& background : backgrounds)
+            for (Scene* scene : {&one, &busy})
+                for (const int spp : {4, 9, 16})
+                    for (const int w : {32, 19}) {
+                        scene->background = background;
+                        const std::unique_ptr<Kernel> kernel =
+                            make_general_kernel(*scene, RealType::double_, Formula::article, spp);
+                        const int channels = image_channels(*scene);
+                        INFO(isa_name(isa)
+                             << ", " << (scene == &one ? "one sphere" : "busy") << ", background " << background.x
+                             << " " << background.y << " " << background.z << ", spp " << spp << ", w = " << w);
+                        const RenderSettings settings{w, 1, RealType::double_, Formula::article, spp, true};
+                        BytesSink with(w * channels), without(w * channels);  // a row's bytes
+                        RenderStats with_stats, without_stats;
+                        kernel->set_branch_counting(true);
+                        render(*kernel, *scene, settings, PixelSelection{}, with, &with_stats);
+                        kernel->set_branch_counting(false);
+                        render(*kernel, *scene, settings, PixelSelection{}, without, &without_stats);
+                        REQUIRE(with.bytes.size() == static_cast<std::size_t>(w) * w * channels);
+                        CHECK(with.bytes == without.bytes);
+                        CHECK(without_stats.count(Branch::non_finite) == with_stats.count(Branch::non_finite));
+                        CHECK(without_stats.first_non_finite_i == with_stats.first_non_finite_i);
+                        CHECK(without_stats.first_non_finite_j == with_stats.first_non_finite_j);
+                        non_finite += with_stats.count(Branch::non_finite);
+                        if (scene != &one) continue;
+                        // The top left pixel: every sample misses the sphere.
+                        const double channel[3] = {background.x, background.y, background.z};
+                        for (int c = 0; c < channels; ++c) {
+                            double sum = -0.0;
+                            for (int s = 0; s < spp; ++s) sum += channel[c];
+                            CHECK(without.bytes[static_cast<std::size_t>(c)] == to_byte(sum / spp));
+                        }
+                        ++corners;
+                    }
+    }
+    CHECK(non_finite > 0);  // the infinite, NaN and overflowing backgrounds
+    CHECK(corners > 0);
 }

@@ -59,6 +59,11 @@ struct GeneralShooter : GeneralSamples<Sw, Rgb, Lane> {
         const Mask dark = lane_not(either(either(pixel.miss, pixel.non_finite), either(pixel.lit, pixel.shadowed)));
         return {pixel.I_P, branch_code<CodeOf<Lane>>(pixel.miss, dark, pixel.non_finite, pixel.shadowed)};
     }
+    // The intensity of a sample that misses (BackgroundSum).
+    template <class L>
+    PROMYK_LANES_INLINE LaneIntensity<L, Rgb> background() const {
+        return splat_of<L>(this->row.background);
+    }
     // The row's rays and tests (count_work): one eye's ray a sample.
     PROMYK_LANES_INLINE void count(RowCounts& counts, int pixels, int spp) const {
         count_work<Sw::many>(counts, this->work, this->row, static_cast<long long>(pixels) * spp);

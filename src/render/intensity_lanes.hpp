@@ -101,6 +101,15 @@ template <class Lane>
 PROMYK_LANES_INLINE MaskOf<Lane> finite_channels(const Vec3<Lane>& v) {
     return both(both(finite_channels(v.x), finite_channels(v.y)), finite_channels(v.z));
 }
+// Where every channel of a equals b's (as numbers: +0 equals -0).
+template <class Lane>
+PROMYK_LANES_INLINE MaskOf<Lane> equal_channels(Lane a, Lane b) {
+    return a == b;
+}
+template <class Lane>
+PROMYK_LANES_INLINE MaskOf<Lane> equal_channels(const Vec3<Lane>& a, const Vec3<Lane>& b) {
+    return both(both(a.x == b.x, a.y == b.y), a.z == b.z);
+}
 
 }  // namespace PROMYK_LANES_ISA
 }  // namespace promyk::lanes
