@@ -12,6 +12,7 @@
 #include <cstring>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "general_scenes_support.hpp"
@@ -268,27 +269,23 @@ TEST_CASE("General sampled rows in lanes: the widest panes with the column table
                 std::vector<SampledPixel<double>> want_grey;
                 NullRecorder none;
                 WorkCounts work;
+                const auto traced = [&](const auto& world, int j) {  // grey or colour
+                    using Intensity = typename std::decay_t<decltype(world)>::Intensity;
+                    return sample_pixel<Intensity>(
+                        w, i, j, pane.spp, world.z_E,
+                        [&](int, const Vec3d& E) {
+                            return with_stage_switches(stages, [&](auto sw) {
+                                return trace_general<decltype(sw), SphereFormula<Formula::article>>(world, E, work,
+                                                                                                    none);
+                            });
+                        },
+                        [](int, const auto&) {});
+                };
                 for (const int j : columns) {
                     if (rgb)
-                        want_rgb.push_back(sample_pixel<Vec3d>(
-                            w, i, j, pane.spp, colour.z_E,
-                            [&](int, const Vec3d& E) {
-                                return with_stage_switches(stages, [&](auto sw) {
-                                    return trace_general<decltype(sw), SphereFormula<Formula::article>>(colour, E, work,
-                                                                                                        none);
-                                });
-                            },
-                            [](int, const auto&) {}));
+                        want_rgb.push_back(traced(colour, j));
                     else
-                        want_grey.push_back(sample_pixel<double>(
-                            w, i, j, pane.spp, grey.z_E,
-                            [&](int, const Vec3d& E) {
-                                return with_stage_switches(stages, [&](auto sw) {
-                                    return trace_general<decltype(sw), SphereFormula<Formula::article>>(grey, E, work,
-                                                                                                        none);
-                                });
-                            },
-                            [](int, const auto&) {}));
+                        want_grey.push_back(traced(grey, j));
                 }
                 for (const Isa isa : supported_isas()) {
                     PathForced forced(isa);
